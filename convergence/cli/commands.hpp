@@ -1,0 +1,29 @@
+// The zdg command line: one program, subcommands registered by add_*_commands(). Only the
+// files of convergence/cli/ include CLI11 and nlohmann-json (precompiled once for them).
+//
+// Conventions every subcommand follows (DESIGN.md, "Command line"):
+// - `--json` prints machine-readable output on stdout; integers that may exceed 64 bits are
+//   decimal strings;
+// - bad input throws zdg::Error (or a CLI11 parse error): main() prints one line
+//   "zdg: <what was wrong>" on stderr and exits with status 2;
+// - a subcommand that finishes but whose checks fail (a theory check, for instance) sets
+//   Context::exit_code to 1.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace zdg::cli {
+
+struct Context {
+  int exit_code = 0;
+};
+
+void add_arith_commands(CLI::App& app, Context& ctx);
+
+/// Prints j on stdout (two-space indent), followed by a newline.
+void print_json(const nlohmann::json& j);
+
+} // namespace zdg::cli

@@ -1,0 +1,38 @@
+// zdg: the command line of the zdg kernel. See convergence/cli/commands.hpp.
+#include "arith/error.hpp"
+#include "convergence/cli/commands.hpp"
+
+#include <exception>
+#include <iostream>
+
+namespace zdg::cli {
+void print_json(const nlohmann::json& j) {
+  std::cout << j.dump(2) << '\n';
+}
+} // namespace zdg::cli
+
+int main(int argc, char** argv) {
+  CLI::App app{"zdg: exact-arithmetic research kernel for digital geometry", "zdg"};
+  app.require_subcommand(1);
+  zdg::cli::Context ctx;
+  zdg::cli::add_arith_commands(app, ctx);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "zdg: " << e.what() << '\n';
+    return 2;
+  } catch (const zdg::Error& e) {
+    std::cerr << "zdg: " << e.what() << '\n';
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "zdg: out of memory\n";
+    return 2;
+  }
+  return ctx.exit_code;
+}

@@ -1,0 +1,161 @@
+// Checked arithmetic of the integer tower against BigInt, floor/ceil division, modulo,
+// gcd and Bezout, on every tower type.
+#include "arith/integer.hpp"
+
+#include "tests/support/tower.hpp"
+
+#include <cstdint>
+#include <limits>
+
+namespace {
+
+using namespace zdg;
+using test::check_property;
+
+constexpr std::int64_t kMin = std::numeric_limits<std::int64_t>::min();
+constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+
+bool fits_int64(const BigInt& v) {
+  return v >= BigInt(kMin) && v <= BigInt(kMax);
+}
+
+// Theorem: Int64 arithmetic is exact or throws OverflowError, and it throws exactly when the
+// true (BigInt) result leaves [-2^63, 2^63).
+TEST(CheckedInt64, OperationsAgreeWithBigIntAndReportOverflowExactly) {
+  check_property([] {
+    std::int64_t a = *test::edgy_int64(), b = *test::edgy_int64();
+    BigInt A(a), B(b);
+    auto agree = [](auto op_checked, const BigInt& truth) {
+      if (fits_int64(truth)) {
+        RC_ASSERT(to_bigint(op_checked()) == truth);
+      } else {
+        RC_ASSERT_THROWS_AS(op_checked(), OverflowError);
+      }
+    };
+    agree([&] { return Int64(a) + Int64(b); }, A + B);
+    agree([&] { return Int64(a) - Int64(b); }, A - B);
+    agree([&] { return Int64(a) * Int64(b); }, A * B);
+    agree([&] { return -Int64(a); }, BigInt(-A));
+    agree([&] { return abs(Int64(a)); }, BigInt(A < 0 ? BigInt(-A) : A));
+    if (b != 0) agree([&] { return Int64(a) / Int64(b); }, BigInt(A / B));
+  });
+}
+
+TEST(CheckedInt128, MultiplicationAgreesWithBigIntAndReportsOverflow) {
+  check_property([] {
+    std::int64_t a = *test::edgy_int64(), b = *test::edgy_int64(), c = *test::edgy_int64();
+    // a * b always fits 127 bits; (a * b) * c may not.
+    Int128 ab = Int128(a) * Int128(b);
+    RC_ASSERT(to_bigint(ab) == BigInt(a) * BigInt(b));
+    BigInt truth = BigInt(a) * BigInt(b) * BigInt(c);
+    BigInt lim = BigInt(1) << 127;
+    if (truth >= -lim && truth < lim) {
+      RC_ASSERT(to_bigint(ab * Int128(c)) == truth);
+    } else {
+      RC_ASSERT_THROWS_AS(ab * Int128(c), OverflowError);
+    }
+  });
+}
+
+TEST(CheckedInt64, EdgeCasesAtTheLimits) {
+  EXPECT_THROW(Int64::max() + 1, OverflowError);
+  EXPECT_THROW(Int64::min() - 1, OverflowError);
+  EXPECT_THROW(-Int64::min(), OverflowError);
+  EXPECT_THROW(Int64::min() / -1, OverflowError);
+  EXPECT_EQ(Int64::min() % -1, 0);
+  EXPECT_THROW(Int64(1) / 0, InvalidArgument);
+  EXPECT_THROW(Int64(std::uint64_t{1} << 63), OverflowError);
+  EXPECT_THROW(Int64(static_cast<int128_t>(kMax) + 1), OverflowError);
+  EXPECT_EQ(Int64(kMax) - Int64(kMax), 0);
+  EXPECT_THROW(int_cast<Int64>(BigInt(kMax) + 1), OverflowError);
+  EXPECT_EQ(int_cast<Int64>(BigInt(kMin)), Int64::min());
+  EXPECT_EQ(to_string(Int128::min()), "-170141183460469231731687303715884105728");
+  EXPECT_EQ(to_bigint(Int128::min()), -(BigInt(1) << 127));
+  EXPECT_EQ(int_cast<Int128>(-(BigInt(1) << 127)), Int128::min());
+  EXPECT_THROW(int_cast<Int128>(BigInt(1) << 127), OverflowError);
+}
+
+TEST(CheckedInt64, ParsesEveryInt64AndRejectsGarbage) {
+  EXPECT_EQ(parse_integer<Int64>("-9223372036854775808"), Int64::min());
+  EXPECT_EQ(parse_integer<Int64>("+9223372036854775807"), Int64::max());
+  EXPECT_THROW(parse_integer<Int64>("9223372036854775808"), OverflowError);
+  EXPECT_THROW(parse_integer<Int64>("12a"), InvalidArgument);
+  EXPECT_THROW(parse_integer<Int64>(""), InvalidArgument);
+  EXPECT_THROW(parse_integer<Int64>("-"), InvalidArgument);
+  EXPECT_EQ(parse_integer<BigInt>("-123456789012345678901234567890").str(),
+            "-123456789012345678901234567890");
+}
+
+template <class I>
+class TowerDivision : public ::testing::Test {};
+TYPED_TEST_SUITE(TowerDivision, test::TowerTypes, test::TowerNames);
+
+// Theorem (division with remainder): for b != 0, q = floor(a/b) is the unique integer with
+// q b <= a < (q+1) b (b > 0; reversed for b < 0); ceil(a/b) = -floor(-a/b); the Euclidean
+// modulo lies in [0, |b|) and a - mod(a, b) is a multiple of b.
+TYPED_TEST(TowerDivision, FloorCeilAndModuloIdentities) {
+  using I = TypeParam;
+  check_property([] {
+    std::int64_t a64 = *test::edgy_int64(), b64 = *test::edgy_int64();
+    RC_PRE(b64 != 0);
+    // Skip the one quotient that leaves int64 (min / -1) on the int64 type.
+    if constexpr (std::same_as<I, Int64>) RC_PRE(!(a64 == kMin && b64 == -1));
+    I a = a64, b = b64;
+    I q = floor_div(a, b);
+    BigInt A(a64), B(b64), Q = to_bigint(q);
+    if (B > 0) {
+      RC_ASSERT(Q * B <= A && A < (Q + 1) * B);
+    } else {
+      RC_ASSERT(Q * B >= A && A > (Q + 1) * B);
+    }
+    RC_ASSERT(to_bigint(ceil_div(a, b)) ==
+              BigInt(-to_bigint(floor_div(int_cast<BigInt>(a64) * -1, B))));
+    I m = mod(a, b);
+    RC_ASSERT(m >= 0);
+    RC_ASSERT(to_bigint(m) < (B < 0 ? BigInt(-B) : B));
+    RC_ASSERT((A - to_bigint(m)) % B == 0);
+    I fm = floor_mod(a, b);
+    RC_ASSERT(to_bigint(fm) == A - Q * B);
+  });
+}
+
+// Theorem (Bezout): g = gcd(a, b) divides a and b, g >= 0, and a x + b y = g; the
+// coefficients are bounded by max(1, |b|/g) and max(1, |a|/g).
+TYPED_TEST(TowerDivision, BezoutIdentity) {
+  using I = TypeParam;
+  check_property([] {
+    std::int64_t a64 = *test::edgy_int64(), b64 = *test::edgy_int64();
+    if constexpr (std::same_as<I, Int64>) RC_PRE(a64 != kMin && b64 != kMin);
+    auto [g, x, y] = ext_gcd(I(a64), I(b64));
+    BigInt A(a64), B(b64), G = to_bigint(g);
+    RC_ASSERT(G >= 0);
+    RC_ASSERT(A * to_bigint(x) + B * to_bigint(y) == G);
+    if (G != 0) {
+      RC_ASSERT(A % G == 0 && B % G == 0);
+      BigInt absA = A < 0 ? BigInt(-A) : A, absB = B < 0 ? BigInt(-B) : B;
+      BigInt X = to_bigint(x), Y = to_bigint(y);
+      RC_ASSERT((X < 0 ? BigInt(-X) : X) <= std::max(BigInt(1), BigInt(absB / G)));
+      RC_ASSERT((Y < 0 ? BigInt(-Y) : Y) <= std::max(BigInt(1), BigInt(absA / G)));
+    }
+    RC_ASSERT(g == gcd(I(a64), I(b64)));
+  });
+}
+
+TYPED_TEST(TowerDivision, WorkedExamples) {
+  using I = TypeParam;
+  EXPECT_EQ(floor_div(I(-7), I(2)), -4);
+  EXPECT_EQ(ceil_div(I(-7), I(2)), -3);
+  EXPECT_EQ(floor_div(I(7), I(-2)), -4);
+  EXPECT_EQ(mod(I(-7), I(3)), 2);
+  EXPECT_EQ(mod(I(-7), I(-3)), 2);
+  EXPECT_EQ(floor_mod(I(-7), I(-3)), -1);
+  EXPECT_EQ(gcd(I(0), I(0)), 0);
+  EXPECT_EQ(gcd(I(-12), I(18)), 6);
+  auto r = ext_gcd(I(240), I(46)); // Bezout: 240 (-9) + 46 (47) = 2
+  EXPECT_EQ(r.g, 2);
+  EXPECT_EQ(r.x, -9);
+  EXPECT_EQ(r.y, 47);
+  EXPECT_THROW(floor_div(I(1), I(0)), InvalidArgument);
+}
+
+} // namespace
