@@ -14,7 +14,7 @@ std::vector<I> continued_fraction(I p, I q) {
   // Euclid with floor division: p = a q + r, 0 <= r < q.
   while (q != 0) {
     I a = floor_div(p, q);
-    I r = p - a * q;
+    I r = floor_mod(p, q); // not p - a q: that product can leave the type while r fits
     terms.push_back(std::move(a));
     p = std::move(q);
     q = std::move(r);

@@ -329,7 +329,8 @@ template <TowerInt I>
 I mod(const I& a, const I& b) {
   detail::check_divisor(a, b);
   I r = a % b;
-  if (r < 0) r += (b < 0 ? I(-b) : b);
+  // r - b rather than r + |b|: |b| does not fit when b is the minimum of a machine type.
+  if (r < 0) r = b < 0 ? I(r - b) : I(r + b);
   return r;
 }
 

@@ -8,7 +8,7 @@ Rational<I> parse_rational(std::string_view text) {
   auto bad = [&]() { return InvalidArgument("not a rational number: '" + whole + "'"); };
   if (auto slash = text.find('/'); slash != std::string_view::npos) {
     std::string_view ps = text.substr(0, slash), qs = text.substr(slash + 1);
-    if (ps.empty() || qs.empty() || qs.front() == '+' || qs.front() == '-') throw bad();
+    if (ps.empty() || qs.empty()) throw bad();
     I p, q;
     try {
       p = parse_integer<I>(ps);

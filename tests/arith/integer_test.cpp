@@ -159,3 +159,10 @@ TYPED_TEST(TowerDivision, WorkedExamples) {
 }
 
 } // namespace
+
+namespace {
+// Shrunk counterexample: mod(a, b) added |b|, which does not fit for b = -2^63.
+TEST(TowerDivisionRegression, ModuloByInt64Minimum) {
+  EXPECT_EQ(zdg::mod(zdg::Int64(-50), zdg::Int64::min()), zdg::Int64(9223372036854775758));
+}
+} // namespace

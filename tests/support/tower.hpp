@@ -56,6 +56,10 @@ inline rc::Gen<std::int64_t> edgy_int64() {
 
 /// Values in [lo, hi] (int64), uniformly.
 inline rc::Gen<std::int64_t> int64_in(std::int64_t lo, std::int64_t hi) {
+  if (hi == std::numeric_limits<std::int64_t>::max()) {
+    // inRange's end is exclusive: hi + 1 would overflow.
+    return rc::gen::oneOf(rc::gen::inRange<std::int64_t>(lo, hi), rc::gen::just(hi));
+  }
   return rc::gen::inRange<std::int64_t>(lo, hi + 1);
 }
 

@@ -1,0 +1,58 @@
+#include "arith/rational.hpp"
+
+#include "tests/support/tower.hpp"
+
+namespace {
+
+using namespace zdg;
+using test::check_property;
+
+template <class I>
+class RationalTest : public ::testing::Test {};
+TYPED_TEST_SUITE(RationalTest, test::TowerTypes, test::TowerNames);
+
+// Invariant: every rational is reduced with a positive denominator, and the field operations
+// agree with cross-multiplication in BigInt.
+TYPED_TEST(RationalTest, ReducedAndFieldOperationsExact) {
+  using I = TypeParam;
+  check_property([] {
+    auto small = test::int64_in(-1'000'000, 1'000'000);
+    std::int64_t a = *small, b = *small, c = *small, d = *small;
+    RC_PRE(b != 0 && d != 0);
+    Rational<I> x{I(a), I(b)}, y{I(c), I(d)};
+    for (const auto& r : {x, y, x + y, x - y, x * y}) {
+      RC_ASSERT(r.den() > 0);
+      RC_ASSERT(gcd(r.num(), r.den()) == 1);
+    }
+    auto same = [](const Rational<I>& r, const BigInt& num, const BigInt& den) {
+      return to_bigint(r.num()) * den == num * to_bigint(r.den());
+    };
+    BigInt A(a), B(b), C(c), D(d);
+    RC_ASSERT(same(x + y, A * D + C * B, B * D));
+    RC_ASSERT(same(x - y, A * D - C * B, B * D));
+    RC_ASSERT(same(x * y, A * C, B * D));
+    if (c != 0) RC_ASSERT(same(x / y, A * D, B * C));
+    const int s = B * D > 0 ? 1 : -1;
+    const bool less = x < y;
+    RC_ASSERT(less == (A * D * s < C * B * s));
+    RC_ASSERT(to_bigint(x.floor()) == floor_div(A, B));
+  });
+}
+
+TYPED_TEST(RationalTest, ParsingWorkedExamples) {
+  using I = TypeParam;
+  EXPECT_EQ(parse_rational<I>("7"), Rational<I>(7));
+  EXPECT_EQ(parse_rational<I>("-3/4"), Rational<I>(I(-3), I(4)));
+  EXPECT_EQ(parse_rational<I>("6/-8").str(), "-3/4");
+  EXPECT_EQ(parse_rational<I>("1000.5"), Rational<I>(I(2001), I(2)));
+  EXPECT_EQ(parse_rational<I>("-.25"), Rational<I>(I(-1), I(4)));
+  EXPECT_EQ(parse_rational<I>("3."), Rational<I>(3));
+  EXPECT_THROW(parse_rational<I>("5/0"), InvalidArgument);
+  EXPECT_THROW(parse_rational<I>("x/3"), InvalidArgument);
+  EXPECT_THROW(parse_rational<I>("1.2.3"), InvalidArgument);
+  EXPECT_THROW(parse_rational<I>("."), InvalidArgument);
+  EXPECT_THROW(parse_rational<I>(""), InvalidArgument);
+  EXPECT_THROW(Rational<I>(I(1), I(0)), InvalidArgument);
+}
+
+} // namespace

@@ -1,0 +1,89 @@
+// zdg cf / christoffel / floor-sum: JSON formats, exactness on huge input, exit codes.
+#include "tests/support/cli.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+using zdg::test::run_zdg;
+using json = nlohmann::json;
+
+// [[a, b], [c, d], ...] (a plain braced list would read as an object).
+json pairs(std::initializer_list<std::pair<const char*, const char*>> ps) {
+  json out = json::array();
+  for (auto [a, b] : ps) out.push_back(json::array({a, b}));
+  return out;
+}
+
+TEST(CliCf, JsonFormatAndConvergents) {
+  auto r = run_zdg("cf 415/93 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = json::parse(r.out);
+  EXPECT_EQ(j["p"], "415");
+  EXPECT_EQ(j["q"], "93");
+  EXPECT_EQ(j["terms"], json::array({"4", "2", "6", "7"}));
+  EXPECT_EQ(j["convergents"], pairs({{"4", "1"}, {"9", "2"}, {"58", "13"}, {"415", "93"}}));
+}
+
+TEST(CliCf, HugeInputIsExact) {
+  // F(200)/F(199): 199 terms 1 then 2 (Fibonacci numbers of ~42 digits).
+  auto r = run_zdg("cf 280571172992510140037611932413038677189525/"
+                   "173402521172797813159685037284371942044301 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = json::parse(r.out);
+  EXPECT_EQ(j["integer_type"], "bigint");
+  EXPECT_EQ(j["terms"].back(), "2");
+  EXPECT_EQ(j["convergents"].back()[0], "280571172992510140037611932413038677189525");
+}
+
+TEST(CliChristoffel, WordFactorizationParents) {
+  auto r = run_zdg("christoffel 8/14 --json"); // reduced first: 4/7
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = json::parse(r.out);
+  EXPECT_EQ(j["p"], "4");
+  EXPECT_EQ(j["q"], "7");
+  EXPECT_EQ(j["word"], "00100100101");
+  EXPECT_EQ(j["standard_factorization"], json::array({"001", "00100101"}));
+  EXPECT_EQ(j["parents"], pairs({{"1", "2"}, {"3", "5"}}));
+  auto up = json::parse(run_zdg("christoffel 4/7 --upper --json").out);
+  EXPECT_EQ(up["word"], "10100100100");
+  EXPECT_EQ(std::string(up["standard_factorization"][0]) +
+                std::string(up["standard_factorization"][1]),
+            "10100100100");
+  auto huge = run_zdg("christoffel 1000000000000000000000001/1000000000000000000000000 --no-word "
+                      "--json");
+  ASSERT_EQ(huge.status, 0) << huge.err;
+  auto h = json::parse(huge.out);
+  EXPECT_FALSE(h.contains("word"));
+  EXPECT_EQ(h["parents"][0], json::array({"1", "1"}));
+}
+
+TEST(CliFloorSum, ValueAndEscalation) {
+  auto j = json::parse(run_zdg("floor-sum 31415 92653 58979 32384 --json").out);
+  EXPECT_EQ(j["value"], "314095480");
+  auto big = json::parse(run_zdg("floor-sum 1000000000000 7 123456789123 -5 --json").out);
+  EXPECT_EQ(big["integer_type"], "int128");
+}
+
+TEST(CliErrors, BadInputExitsTwoWithOneLineNamingTheValue) {
+  for (const char* args :
+       {"cf 5/0", "cf x/3", "christoffel -- -1/2", "christoffel 1/-2", "floor-sum 1 0 2 3",
+        "floor-sum -1 2 3 4", "floor-sum 1 2 3", "cf", "no-such-command"}) {
+    auto r = run_zdg(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("zdg: ", 0), 0u) << r.err;
+  }
+  EXPECT_NE(run_zdg("cf x/3").err.find("'x'"), std::string::npos);
+  EXPECT_NE(run_zdg("cf 5/0").err.find("5/0"), std::string::npos);
+}
+
+TEST(CliHelp, EverySubcommandHasHelp) {
+  for (const char* sub : {"cf", "christoffel", "floor-sum"}) {
+    auto r = run_zdg(std::string(sub) + " --help");
+    EXPECT_EQ(r.status, 0) << sub;
+    EXPECT_NE(r.out.find("--json"), std::string::npos) << sub;
+  }
+}
+
+} // namespace
