@@ -2,8 +2,11 @@
 #include "arith/error.hpp"
 #include "convergence/cli/commands.hpp"
 
+#include <fmt/core.h>
+
 #include <exception>
 #include <iostream>
+#include <string>
 
 namespace zdg::cli {
 void print_json(const nlohmann::json& j) {
@@ -25,13 +28,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "zdg: " << e.what() << '\n';
+    fmt::print(stderr, "zdg: {}\n", one_line(e.what()));
     return 2;
   } catch (const zdg::Error& e) {
-    std::cerr << "zdg: " << e.what() << '\n';
+    fmt::print(stderr, "zdg: {}\n", one_line(e.what()));
     return 2;
   } catch (const std::bad_alloc&) {
-    std::cerr << "zdg: out of memory\n";
+    fmt::print(stderr, "zdg: out of memory\n");
     return 2;
   }
   return ctx.exit_code;
