@@ -14,6 +14,17 @@ void print_json(const nlohmann::json& j) {
 }
 } // namespace zdg::cli
 
+namespace {
+// Errors are reported on exactly one line.
+std::string one_line(std::string s) {
+  for (char& c : s) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+} // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"zdg: exact-arithmetic research kernel for digital geometry", "zdg"};
   app.require_subcommand(1);
