@@ -163,4 +163,17 @@ TEST(IntegralInvariants3D, RadiusAndArguments) {
   EXPECT_THROW(zdg::ii_principal_curvatures(none, box, lone, 1.0, 0.5), zdg::InvalidArgument);
 }
 
+// An error raised by the predicate (exact digitization overflowing, say) in a worker thread
+// reaches the caller.
+TEST(IntegralInvariants3D, PredicateErrorsPropagate) {
+  const auto b = ball({0, 0, 0}, 25);
+  const VoxelBox box{{-8, -8, -8}, {8, 8, 8}};
+  const auto surfels = zdg::boundary_surfels(b, box);
+  const zdg::VoxelPredicate bad = [&](const Voxel& z) {
+    if (z.x == 7) throw zdg::OverflowError("predicate overflow at x = 7");
+    return b(z);
+  };
+  EXPECT_THROW(zdg::ii_mean_curvature(bad, box, surfels, 0.1, 0.4, 3), zdg::OverflowError);
+}
+
 } // namespace
