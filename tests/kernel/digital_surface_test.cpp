@@ -82,6 +82,26 @@ TEST(DigitalSurface, BallSurfaceIsClosedWithEulerCharacteristicTwo) {
   }
 }
 
+// Digitized balls of random radius and centre: closed, Euler characteristic 2, and tracked
+// entirely from the seed found by walking from the centre.
+TEST(DigitalSurface, RandomBallsAreSpheres) {
+  zdg::test::check_property([] {
+    const auto r2 = *rc::gen::inRange<std::int64_t>(0, 50);
+    const Voxel c{*rc::gen::inRange<std::int64_t>(-30, 30),
+                  *rc::gen::inRange<std::int64_t>(-30, 30),
+                  *rc::gen::inRange<std::int64_t>(-30, 30)};
+    const VoxelBox box{{c.x - 8, c.y - 8, c.z - 8}, {c.x + 8, c.y + 8, c.z + 8}};
+    const auto inside = ball(c, r2);
+    const auto s = zdg::boundary_surfels(inside, box);
+    check_closed(inside, box, s, SurfelAdjacency::interior);
+    RC_ASSERT(!::testing::Test::HasFailure());
+    RC_ASSERT(zdg::euler_characteristic(zdg::primal_surface(s)) == 2);
+    auto t = zdg::track_surface(inside, box, zdg::find_boundary_surfel(inside, box, c));
+    std::sort(t.begin(), t.end());
+    RC_ASSERT(t == s);
+  });
+}
+
 TEST(DigitalSurface, PrimalSurfaceOfBallIsConsistentlyOriented) {
   // Each directed edge of a closed oriented quad mesh appears once, and so does its reverse.
   const auto s = zdg::boundary_surfels(ball({0, 0, 0}, 30), {{-7, -7, -7}, {7, 7, 7}});
