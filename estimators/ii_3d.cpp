@@ -410,6 +410,11 @@ IIPrincipalCurvatures ii_principal_curvatures_from_moments(const SurfelBallMomen
                                                            const Surfel& s, double h, double R) {
   // Moments about the surfel centre s, in exact integers: for a kernel centred at c,
   // 2 (p - s) = 2 q + delta with q = p - c and delta = 2 (c - s) = -n (inner), +n (outer).
+  for (const BallMoments* b : {&m.inner, &m.outer})
+    if (b->m0 > 1 && b->m2[0] + b->m2[1] + b->m2[2] == 0)
+      throw InvalidArgument("integral invariants: the moments of surfel (" + std::to_string(s.k.x) +
+                            ", " + std::to_string(s.k.y) + ", " + std::to_string(s.k.z) +
+                            ") lack the second order (computed with second_order = false)");
   const Point3<int> nrm = trivial_normal(s);
   const int n[3] = {nrm.x, nrm.y, nrm.z};
   static constexpr int cross[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};

@@ -98,14 +98,16 @@ struct IIPrincipalCurvatures {
   double gaussian() const { return k1 * k2; }
 };
 
-/// II principal curvatures at every surfel. (d1, d2, normal) is a direct orthonormal frame.
+/// II principal curvatures at every surfel. (d1, d2, normal) is a direct orthonormal frame
+/// (the sign of d1 is that of the eigenvector: a direction, not an orientation).
 std::vector<IIPrincipalCurvatures> ii_principal_curvatures(const VoxelPredicate& inside,
                                                            const VoxelBox& box,
                                                            std::span<const Surfel> surfels,
                                                            double h, double R, int threads = 1);
 
 /// The formulas alone, from the moments of one surfel (for drivers that keep the moments):
-/// H from the averaged count, and the principal curvatures from the averaged moments.
+/// H from the averaged count, and the principal curvatures from the averaged moments (which
+/// must have been computed with second_order = true: InvalidArgument otherwise).
 double ii_mean_curvature_from_moments(const SurfelBallMoments& m, double h, double R);
 IIPrincipalCurvatures ii_principal_curvatures_from_moments(const SurfelBallMoments& m,
                                                            const Surfel& s, double h, double R);

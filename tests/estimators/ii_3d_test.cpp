@@ -161,6 +161,10 @@ TEST(IntegralInvariants3D, RadiusAndArguments) {
   const std::vector<Surfel> lone{zdg::surfel_between({0, 0, 0}, 0, 1)};
   const zdg::VoxelPredicate none = [](const Voxel&) { return false; };
   EXPECT_THROW(zdg::ii_principal_curvatures(none, box, lone, 1.0, 0.5), zdg::InvalidArgument);
+  // Counts alone cannot give principal curvatures.
+  const auto counts = zdg::ii_surfel_moments(in, box, lone, 4, 1, false);
+  EXPECT_THROW(zdg::ii_principal_curvatures_from_moments(counts.moments[0], lone[0], 1.0, 2.0),
+               zdg::InvalidArgument);
 }
 
 // An error raised by the predicate (exact digitization overflowing, say) in a worker thread
