@@ -59,6 +59,7 @@ void BM_IIMeanCurvature(benchmark::State& state) {
   state.counters["centres"] = double(m.stats.voxels);
   state.counters["full"] = double(m.stats.full_counts);
   state.counters["moves"] = double(m.stats.unit_moves);
+  state.counters["evals"] = double(m.stats.predicate_evaluations);
   state.counters["linf_err"] = max_err;
 }
 

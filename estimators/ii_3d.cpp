@@ -19,7 +19,8 @@ namespace zdg {
 namespace {
 
 constexpr std::int64_t kMaxRadius = 256;
-constexpr std::size_t kMaxBlockBytes = std::size_t{1} << 28;
+constexpr std::size_t kMaxBlockBytes = std::size_t{1} << 27;  // per chunk
+constexpr std::size_t kMaxSharedBytes = std::size_t{1} << 29; // shared by the threads
 
 std::int64_t isqrt(std::int64_t n) {
   auto r = std::int64_t(std::sqrt(double(n)));
@@ -158,16 +159,21 @@ std::int64_t l1(const Voxel& a, const Voxel& b) {
 }
 
 struct ChunkStats {
-  std::size_t full_counts = 0, unit_moves = 0;
+  std::size_t full_counts = 0, unit_moves = 0, evaluations = 0;
 };
 
-/// Moments at the voxels walk[0..), in order, by one full count then unit moves.
-template <bool Second>
-ChunkStats run_chunk(const VoxelPredicate& inside, const VoxelBox& box,
-                     const std::vector<Voxel>& voxels, std::span<const std::uint32_t> walk,
-                     const std::vector<Row>& rows, std::int64_t r, std::int64_t max_jump,
-                     std::vector<BallMoments>& out) {
-  ChunkStats stats;
+/// The cache of predicate values over a box of voxels: 0 unknown, 1 outside, 2 inside.
+/// Accessed through relaxed std::atomic_ref when shared by the threads (two threads may
+/// evaluate the same voxel; both store the same value).
+struct Cache {
+  Voxel lo;
+  std::int64_t stride[3] = {1, 0, 0};
+  std::size_t size = 0;
+};
+
+/// The bounding box of the voxels of walk grown by r + 1.
+Cache cache_frame(const std::vector<Voxel>& voxels, std::span<const std::uint32_t> walk,
+                  std::int64_t r) {
   Voxel lo = voxels[walk[0]], hi = lo;
   for (const auto i : walk) {
     const Voxel& p = voxels[i];
@@ -175,10 +181,42 @@ ChunkStats run_chunk(const VoxelPredicate& inside, const VoxelBox& box,
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
   const std::int64_t g = r + 1;
-  lo = {lo.x - g, lo.y - g, lo.z - g};
-  hi = {hi.x + g, hi.y + g, hi.z + g};
-  const std::int64_t stride[3] = {1, hi.x - lo.x + 1, (hi.x - lo.x + 1) * (hi.y - lo.y + 1)};
-  std::vector<std::uint8_t> block(std::size_t(stride[2] * (hi.z - lo.z + 1)), 0);
+  Cache c;
+  c.lo = {lo.x - g, lo.y - g, lo.z - g};
+  const double n = double(hi.x - lo.x + 2 * g + 1) * double(hi.y - lo.y + 2 * g + 1) *
+                   double(hi.z - lo.z + 2 * g + 1);
+  if (n > 1e18) {
+    c.size = std::size_t(-1);
+    return c;
+  }
+  c.stride[1] = hi.x - lo.x + 2 * g + 1;
+  c.stride[2] = c.stride[1] * (hi.y - lo.y + 2 * g + 1);
+  c.size = std::size_t(n);
+  return c;
+}
+
+/// Moments at the voxels walk[0..), in order, by one full count then unit moves. The
+/// predicate cache is `shared` (covering every ball of the walk) or, if null, a block of
+/// the chunk's own.
+template <bool Second>
+ChunkStats run_chunk(const VoxelPredicate& inside, const VoxelBox& box,
+                     const std::vector<Voxel>& voxels, std::span<const std::uint32_t> walk,
+                     const std::vector<Row>& rows, std::int64_t r, std::int64_t max_jump,
+                     const Cache* shared, std::uint8_t* shared_data,
+                     std::vector<BallMoments>& out) {
+  ChunkStats stats;
+  std::vector<std::uint8_t> own;
+  Cache frame;
+  std::uint8_t* block = shared_data;
+  if (shared) {
+    frame = *shared;
+  } else {
+    frame = cache_frame(voxels, walk, r);
+    own.assign(frame.size, 0);
+    block = own.data();
+  }
+  const Voxel lo = frame.lo;
+  const std::int64_t* stride = frame.stride;
   auto lin_of = [&](const Voxel& p) {
     return (p.x - lo.x) + (p.y - lo.y) * stride[1] + (p.z - lo.z) * stride[2];
   };
@@ -206,12 +244,15 @@ ChunkStats run_chunk(const VoxelPredicate& inside, const VoxelBox& box,
     }
   auto probe = [&](const Voxel& c, std::int64_t centre_lin, std::int64_t off_lin,
                    const int* o) -> bool {
-    std::uint8_t& st = block[std::size_t(centre_lin + off_lin)];
-    if (st == 0) {
+    std::atomic_ref<std::uint8_t> st(block[std::size_t(centre_lin + off_lin)]);
+    std::uint8_t v = st.load(std::memory_order_relaxed);
+    if (v == 0) {
+      ++stats.evaluations;
       const Voxel p{c.x + o[0], c.y + o[1], c.z + o[2]};
-      st = box.contains(p) && inside(p) ? 2 : 1;
+      v = box.contains(p) && inside(p) ? 2 : 1;
+      st.store(v, std::memory_order_relaxed);
     }
-    return st == 2;
+    return v == 2;
   };
   Accumulator acc;
   auto full_count = [&](const Voxel& c) {
@@ -265,19 +306,6 @@ ChunkStats run_chunk(const VoxelPredicate& inside, const VoxelBox& box,
   return stats;
 }
 
-std::size_t block_bytes(const std::vector<Voxel>& voxels, std::span<const std::uint32_t> walk,
-                        std::int64_t r) {
-  Voxel lo = voxels[walk[0]], hi = lo;
-  for (const auto i : walk) {
-    const Voxel& p = voxels[i];
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  const double n = double(hi.x - lo.x + 2 * r + 3) * double(hi.y - lo.y + 2 * r + 3) *
-                   double(hi.z - lo.z + 2 * r + 3);
-  return n > 1e18 ? std::size_t(-1) : std::size_t(n);
-}
-
 void check_grid(double h, double R) {
   if (!(h > 0) || !std::isfinite(h))
     throw InvalidArgument("integral invariants: grid step h = " + std::to_string(h) +
@@ -317,6 +345,14 @@ BallMoments direct_ball_moments(const VoxelPredicate& inside, const VoxelBox& bo
 IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
                                   std::span<const Surfel> surfels, std::int64_t r2, int threads,
                                   bool second_order) {
+  return detail::ii_surfel_moments(inside, box, surfels, r2, threads, second_order,
+                                   kMaxSharedBytes);
+}
+
+IISurfelMoments detail::ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
+                                          std::span<const Surfel> surfels, std::int64_t r2,
+                                          int threads, bool second_order,
+                                          std::size_t shared_cache_bytes) {
   check_voxel_box(box);
   check_radius2(r2);
   threads = threads_or_default(threads);
@@ -361,7 +397,8 @@ IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& 
   while (!pending.empty()) {
     const auto [b, e] = pending.back();
     pending.pop_back();
-    if (e - b > 1 && block_bytes(voxels, std::span(walk).subspan(b, e - b), r) > kMaxBlockBytes) {
+    if (e - b > 1 &&
+        cache_frame(voxels, std::span(walk).subspan(b, e - b), r).size > kMaxBlockBytes) {
       pending.push_back({b, (b + e) / 2});
       pending.push_back({(b + e) / 2, e});
     } else {
@@ -370,8 +407,15 @@ IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& 
   }
   std::sort(chunks.begin(), chunks.end());
 
+  // One cache shared by all chunks when it is small enough (each voxel evaluated about
+  // once), else one per chunk.
+  const Cache whole = cache_frame(voxels, walk, r);
+  std::vector<std::uint8_t> whole_data;
+  if (whole.size <= shared_cache_bytes) whole_data.assign(whole.size, 0);
+  const Cache* shared = whole_data.empty() ? nullptr : &whole;
+
   std::vector<BallMoments> at_voxel(voxels.size());
-  std::atomic<std::size_t> next{0}, full_counts{0}, unit_moves{0};
+  std::atomic<std::size_t> next{0}, full_counts{0}, unit_moves{0}, evaluations{0};
   std::atomic<bool> failed{false};
   std::exception_ptr error;
   auto work = [&] {
@@ -379,11 +423,14 @@ IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& 
       for (std::size_t c = next++; c < chunks.size() && !failed; c = next++) {
         const auto span =
             std::span(walk).subspan(chunks[c].first, chunks[c].second - chunks[c].first);
-        const ChunkStats st =
-            second_order ? run_chunk<true>(inside, box, voxels, span, rows, r, max_jump, at_voxel)
-                         : run_chunk<false>(inside, box, voxels, span, rows, r, max_jump, at_voxel);
+        const ChunkStats st = second_order
+                                  ? run_chunk<true>(inside, box, voxels, span, rows, r, max_jump,
+                                                    shared, whole_data.data(), at_voxel)
+                                  : run_chunk<false>(inside, box, voxels, span, rows, r, max_jump,
+                                                     shared, whole_data.data(), at_voxel);
         full_counts += st.full_counts;
         unit_moves += st.unit_moves;
+        evaluations += st.evaluations;
       }
     } catch (...) {
       if (!failed.exchange(true)) error = std::current_exception();
@@ -397,7 +444,8 @@ IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& 
 
   result.moments.reserve(surfels.size());
   for (const auto& ids : of_surfel) result.moments.push_back({at_voxel[ids[0]], at_voxel[ids[1]]});
-  result.stats = {voxels.size(), full_counts.load(), unit_moves.load(), chunks.size()};
+  result.stats = {voxels.size(), full_counts.load(), unit_moves.load(),
+                  chunks.size(), evaluations.load(), shared != nullptr};
   return result;
 }
 

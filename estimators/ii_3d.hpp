@@ -21,8 +21,10 @@
 // removes one voxel per row of the ball along a and adds one (the symmetric difference,
 // 2 pi r^2 voxels instead of 4/3 pi r^3), and shifts the moments to the new centre exactly.
 // A jump longer than (ball volume) / (2 #rows) unit moves is replaced by a full count. The
-// predicate is evaluated lazily, at most once per voxel and chunk, cached in a byte block
-// over the chunk's bounding box grown by r. Cost: about 2 pi r^2 predicate look-ups per voxel
+// predicate is evaluated lazily and cached in a byte block over the bounding box of the
+// centres grown by r, shared by the threads (about one evaluation per voxel of the union of
+// the balls) when it takes at most 512 MiB, else one block per chunk (at most 128 MiB each,
+// chunks being halved until they fit). Cost: about 2 pi r^2 predicate look-ups per voxel
 // of the walk, r = R/h.
 //
 // Integer width: counts and moments are exact int64, relative to the ball centre; with
@@ -60,12 +62,22 @@ struct IIStats {
   std::size_t full_counts = 0; ///< balls counted from scratch (one per chunk and long jump)
   std::size_t unit_moves = 0;  ///< incremental moves by one voxel
   std::size_t chunks = 0;
+  std::size_t predicate_evaluations = 0; ///< about once per voxel (shared cache)
+  bool shared_cache = false;             ///< one cache for all threads, else one per chunk
 };
 
 struct IISurfelMoments {
   std::vector<SurfelBallMoments> moments; ///< one per surfel, in the given order
   IIStats stats;
 };
+
+namespace detail {
+/// ii_surfel_moments with the size limit of the shared predicate cache (bytes) exposed, so
+/// that tests reach the per-chunk caches too.
+IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
+                                  std::span<const Surfel> surfels, std::int64_t r2, int threads,
+                                  bool second_order, std::size_t shared_cache_bytes);
+} // namespace detail
 
 /// floor((R/h)^2): the squared radius of the digital ball in voxel units. Throws
 /// InvalidArgument unless R > 0, h > 0 and R/h <= 256.

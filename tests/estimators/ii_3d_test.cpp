@@ -39,7 +39,10 @@ TEST(IntegralInvariants3D, IncrementalMomentsEqualDirectMoments) {
     const zdg::VoxelPredicate in = [&](const Voxel& z) { return b1(z) || b2(z); };
     const VoxelBox box{{-8, -3, -4}, {10, 7, 4}};
     const auto surfels = zdg::boundary_surfels(in, box);
-    const auto m = zdg::ii_surfel_moments(in, box, surfels, r2, threads, second);
+    const bool shared = *rc::gen::arbitrary<bool>();
+    const auto m = zdg::detail::ii_surfel_moments(in, box, surfels, r2, threads, second,
+                                                  shared ? std::size_t{1} << 29 : 0);
+    RC_ASSERT(m.stats.shared_cache == shared);
     RC_ASSERT(m.moments.size() == surfels.size());
     for (std::size_t i = 0; i < surfels.size(); ++i) {
       const auto di = zdg::direct_ball_moments(in, box, zdg::inner_voxel(surfels[i]), r2);
