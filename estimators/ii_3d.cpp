@@ -358,6 +358,9 @@ IISurfelMoments detail::ii_surfel_moments(const VoxelPredicate& inside, const Vo
   threads = threads_or_default(threads);
   IISurfelMoments result;
   if (surfels.empty()) return result;
+  if (surfels.size() >= (std::size_t{1} << 31))
+    throw InvalidArgument("integral invariants: " + std::to_string(surfels.size()) +
+                          " surfels exceed 2^31");
   const std::int64_t max_coord = kMaxVoxelCoordinate - kMaxRadius - 8;
   std::vector<Voxel> voxels;
   std::unordered_map<Voxel, std::uint32_t, KPointHash> index;

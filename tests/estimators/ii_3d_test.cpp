@@ -78,7 +78,7 @@ struct BallCase {
 // and principal curvatures are close to 1, k1 <= k2, the normal is radial, and the
 // principal directions are tangent.
 TEST(IntegralInvariants3D, UnitBallCurvatures) {
-  const BallCase c = sanitized() ? BallCase{16, 0.8} : BallCase{24, 0.8};
+  const BallCase c = sanitized() ? BallCase{16, 0.8} : BallCase{20, 0.8};
   const double h = 1.0 / double(c.n);
   const auto in = ball({0, 0, 0}, c.n * c.n);
   const VoxelBox box{{-c.n - 2, -c.n - 2, -c.n - 2}, {c.n + 2, c.n + 2, c.n + 2}};
