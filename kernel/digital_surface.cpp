@@ -141,6 +141,35 @@ std::vector<Surfel> track_surface(const VoxelPredicate& inside, const VoxelBox& 
   return order;
 }
 
+std::vector<Surfel> line_boundary_surfels(const VoxelPredicate& inside, const VoxelBox& box,
+                                          std::int64_t y, std::int64_t z) {
+  check_voxel_box(box);
+  std::vector<Surfel> out;
+  if (y < box.lo.y || y > box.hi.y || z < box.lo.z || z > box.hi.z) return out;
+  bool prev = false;
+  for (auto x = box.lo.x; x <= box.hi.x + 1; ++x) {
+    const bool cur = x <= box.hi.x && inside({x, y, z});
+    if (prev && !cur) out.push_back(surfel_between({x - 1, y, z}, 0, +1));
+    if (!prev && cur) out.push_back(surfel_between({x, y, z}, 0, -1));
+    prev = cur;
+  }
+  return out;
+}
+
+std::vector<Surfel> track_surfaces(const VoxelPredicate& inside, const VoxelBox& box,
+                                   std::span<const Surfel> seeds, SurfelAdjacency adjacency) {
+  std::vector<Surfel> out;
+  std::unordered_set<Surfel, SurfelHash> seen;
+  for (const Surfel& seed : seeds) {
+    if (seen.count(seed)) continue;
+    for (const Surfel& s : track_surface(inside, box, seed, adjacency)) {
+      seen.insert(s);
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
 QuadSurface primal_surface(std::span<const Surfel> surfels) {
   QuadSurface q;
   std::unordered_map<KPoint, std::uint32_t, KPointHash> index;

@@ -84,6 +84,18 @@ std::vector<Surfel> track_surface(const VoxelPredicate& inside, const VoxelBox& 
                                   const Surfel& seed,
                                   SurfelAdjacency adjacency = SurfelAdjacency::interior);
 
+/// The boundary surfels orthogonal to x on the line { (x, y, z) : box.lo.x <= x <= box.hi.x }:
+/// seeds on every connected surface that the line crosses, in O(nx) evaluations.
+std::vector<Surfel> line_boundary_surfels(const VoxelPredicate& inside, const VoxelBox& box,
+                                          std::int64_t y, std::int64_t z);
+
+/// The union of the connected surfaces through the given seeds, each surfel once (surfaces
+/// in the order of their first seed, breadth-first within each). A driver finds every
+/// component of a shape without scanning the box by seeding from a few lines.
+std::vector<Surfel> track_surfaces(const VoxelPredicate& inside, const VoxelBox& box,
+                                   std::span<const Surfel> seeds,
+                                   SurfelAdjacency adjacency = SurfelAdjacency::interior);
+
 /// The primal polygonal surface: vertices are the pointels (Khalimsky points), one quad per
 /// surfel, counterclockwise seen from outside (surfel_pointels).
 struct QuadSurface {

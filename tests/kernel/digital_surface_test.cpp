@@ -157,6 +157,23 @@ TEST(DigitalSurface, TrackingStaysOnOneComponent) {
   EXPECT_EQ(zdg::euler_characteristic(zdg::primal_surface(t)), 2);
 }
 
+// Seeds from one line reach every component the line crosses: two balls and a torus (whose
+// line meets the same surface four times) are recovered without a scan, each surfel once.
+TEST(DigitalSurface, SeedsFromALineTrackEveryComponent) {
+  const auto b1 = ball({-3, 0, 0}, 4), b2 = ball({3, 0, 0}, 4), t = torus(10, 3);
+  const zdg::VoxelPredicate three = [&](const Voxel& z) { return b1(z) || b2(z) || t(z); };
+  const VoxelBox box{{-15, -15, -5}, {15, 15, 5}};
+  const auto seeds = zdg::line_boundary_surfels(three, box, 0, 0);
+  EXPECT_EQ(seeds.size(), 8u);
+  auto all = zdg::track_surfaces(three, box, seeds);
+  const auto n = all.size();
+  std::sort(all.begin(), all.end());
+  EXPECT_EQ(std::unique(all.begin(), all.end()) - all.begin(), std::ptrdiff_t(n));
+  EXPECT_EQ(all, zdg::boundary_surfels(three, box));
+  EXPECT_EQ(zdg::euler_characteristic(zdg::primal_surface(all)), 2 + 2 + 0);
+  EXPECT_TRUE(zdg::line_boundary_surfels(three, box, 99, 0).empty());
+}
+
 TEST(DigitalSurface, BoxClipsTheSet) {
   // The whole box inside: the surface is the box boundary, 2 (ab + bc + ca) surfels.
   const VoxelBox box{{-1, 0, 5}, {2, 2, 5}};
