@@ -174,6 +174,25 @@ TEST(DigitalSurface, SeedsFromALineTrackEveryComponent) {
   EXPECT_TRUE(zdg::line_boundary_surfels(three, box, 99, 0).empty());
 }
 
+// Two voxels sharing only an edge: interior adjacency joins them into one surface of 12
+// surfels, exterior adjacency keeps two cubes of 6.
+TEST(DigitalSurface, EdgeConnectedVoxelsInteriorVersusExterior) {
+  const zdg::VoxelPredicate two = [](const Voxel& z) {
+    return z.z == 0 && ((z.x == 0 && z.y == 0) || (z.x == 1 && z.y == 1));
+  };
+  const VoxelBox box{{-2, -2, -2}, {3, 3, 2}};
+  const auto seed = zdg::surfel_between({0, 0, 0}, 2, +1);
+  EXPECT_EQ(zdg::track_surface(two, box, seed, SurfelAdjacency::interior).size(), 12u);
+  EXPECT_EQ(zdg::track_surface(two, box, seed, SurfelAdjacency::exterior).size(), 6u);
+  // Through the linel of the shared edge, the follower of the +x face of (0,0,0) turns to
+  // the -y face of (1,1,0) (interior) or to the +y face of (0,0,0) (exterior).
+  const auto s = zdg::surfel_between({0, 0, 0}, 0, +1);
+  EXPECT_EQ(zdg::adjacent_surfel(two, box, s, 1, +1, SurfelAdjacency::interior),
+            zdg::surfel_between({1, 1, 0}, 1, -1));
+  EXPECT_EQ(zdg::adjacent_surfel(two, box, s, 1, +1, SurfelAdjacency::exterior),
+            zdg::surfel_between({0, 0, 0}, 1, +1));
+}
+
 TEST(DigitalSurface, BoxClipsTheSet) {
   // The whole box inside: the surface is the box boundary, 2 (ab + bc + ca) surfels.
   const VoxelBox box{{-1, 0, 5}, {2, 2, 5}};
