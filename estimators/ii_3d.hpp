@@ -3,8 +3,8 @@
 // digital geometry", CVIU 2014; Pottmann et al. 2007 for the expansions). With X_h the
 // digitization at step h and B the digital ball of radius R/h (offsets o in Z^3 with
 // |o|^2 <= floor((R/h)^2)):
-//   volume   V = h^3 #(B(x) ∩ X_h)                      H  = 8/(3R) - 4V/(pi R^4)
-//   moments  m_pqs = h^{3+p+q+s} sum x^p y^q z^s over B(x) ∩ X_h, J = covariance matrix
+//   volume   V = h^3 #(B(x) intersected with X_h)       H  = 8/(3R) - 4V/(pi R^4)
+//   moments  m_pqs = h^{3+p+q+s} sum x^p y^q z^s over B(x) and X_h, J = covariance matrix
 //            [m_200 m_110 m_101; ...] - m_1 m_1^T / m_000, eigenvalues l1 >= l2 >= l3 with
 //            eigenvectors v1, v2, v3:
 //            k1 = 6/(pi R^6) (l2 - 3 l1) + 8/(5R),  k2 = 6/(pi R^6) (l1 - 3 l2) + 8/(5R),
