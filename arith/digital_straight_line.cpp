@@ -106,7 +106,8 @@ LatticePoint<I> DigitalStraightLine<I>::next(const Point& p) const {
 }
 
 template <TowerInt I>
-std::vector<LatticePoint<I>> DigitalStraightLine<I>::points(const Point& start, std::size_t count) const {
+std::vector<LatticePoint<I>> DigitalStraightLine<I>::points(const Point& start,
+                                                            std::size_t count) const {
   std::vector<Point> out;
   if (count == 0) return out;
   if (!contains(start)) next(start); // throws with the message

@@ -26,8 +26,8 @@ Connectivity connectivity_of(std::span<const LatticePoint<T>> path) {
     BigInt dx = big(path[k].x) - big(path[k - 1].x), dy = big(path[k].y) - big(path[k - 1].y);
     BigInt ax = abs(dx), ay = abs(dy);
     if (ax > 1 || ay > 1 || (ax == 0 && ay == 0)) {
-      throw InvalidArgument("path: point " + std::to_string(k) + " (" + big(path[k].x).str() + ", " +
-                            big(path[k].y).str() + ") is not 8-adjacent to point " +
+      throw InvalidArgument("path: point " + std::to_string(k) + " (" + big(path[k].x).str() +
+                            ", " + big(path[k].y).str() + ") is not 8-adjacent to point " +
                             std::to_string(k - 1) + " (" + big(path[k - 1].x).str() + ", " +
                             big(path[k - 1].y).str() + ")");
     }

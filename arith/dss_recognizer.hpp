@@ -111,9 +111,14 @@ public:
     if (n_ == 1) return -(origin_.y + F_.y);
     return lo_ + a_ * origin_.x - b_ * origin_.y;
   }
+  /// The local origin (the first point the recognizer was built or reset with) and mu relative
+  /// to it: mu = mu_local() + a ox - b oy, to be evaluated in a wide enough type.
+  const Point& origin() const { return origin_; }
+  I mu_local() const { return n_ == 1 ? I(-F_.y) : lo_; }
   /// The same, exact in BigInt (never overflows).
   DssCharacteristics characteristics() const {
-    if (n_ == 1) return {BigInt(0), BigInt(1), BigInt(-(to_bigint(origin_.y) + to_bigint(F_.y))), BigInt(1)};
+    if (n_ == 1)
+      return {BigInt(0), BigInt(1), BigInt(-(to_bigint(origin_.y) + to_bigint(F_.y))), BigInt(1)};
     BigInt A = to_bigint(a_), B = to_bigint(b_);
     return {A, B, BigInt(to_bigint(lo_) + A * to_bigint(origin_.x) - B * to_bigint(origin_.y)),
             to_bigint(I(hi_ - lo_ + 1))};
@@ -123,11 +128,11 @@ public:
 
 private:
   Connectivity conn_;
-  Point origin_;                     // absolute coordinates of the local origin
+  Point origin_;                                // absolute coordinates of the local origin
   Point F_{}, L_{}, Uf_{}, Ul_{}, Lf_{}, Ll_{}; // local coordinates
-  I a_{0}, b_{0}, lo_{0}, hi_{0};    // lo = mu, hi = mu + omega - 1 (local)
-  Step s1_{}, s2_{}, shift_{};       // s1 = 0: one point; s2 = 0: one step so far
-  I rF_{0}, rL_{0}, rs1_{0}, rs2_{0}; // remainders of F, L, s1, s2
+  I a_{0}, b_{0}, lo_{0}, hi_{0};               // lo = mu, hi = mu + omega - 1 (local)
+  Step s1_{}, s2_{}, shift_{};                  // s1 = 0: one point; s2 = 0: one step so far
+  I rF_{0}, rL_{0}, rs1_{0}, rs2_{0};           // remainders of F, L, s1, s2
   std::size_t n_ = 1;
 
   static int small(const I& v) {
@@ -206,7 +211,8 @@ private:
     } else {
       rs1_ = rem(s1_);
       rs2_ = rem(s2_);
-      shift_ = rs1_ > rs2_ ? Step{s1_.x - s2_.x, s1_.y - s2_.y} : Step{s2_.x - s1_.x, s2_.y - s1_.y};
+      shift_ =
+          rs1_ > rs2_ ? Step{s1_.x - s2_.x, s1_.y - s2_.y} : Step{s2_.x - s1_.x, s2_.y - s1_.y};
     }
     rF_ = rem(F_);
     rL_ = rem(L_);

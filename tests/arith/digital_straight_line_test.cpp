@@ -25,8 +25,9 @@ DigitalStraightLine<I> random_line() {
   long a = *rc::gen::inRange(-30, 31), b = *rc::gen::inRange(-30, 31);
   RC_PRE(std::gcd(a, b) == 1);
   DslKind kind = *rc::gen::element(DslKind::naive, DslKind::standard);
-  std::int64_t mu = *rc::gen::oneOf(rc::gen::inRange<std::int64_t>(-100, 101),
-                                    test::int64_in(-(std::int64_t{1} << 40), std::int64_t{1} << 40));
+  std::int64_t mu =
+      *rc::gen::oneOf(rc::gen::inRange<std::int64_t>(-100, 101),
+                      test::int64_in(-(std::int64_t{1} << 40), std::int64_t{1} << 40));
   return DigitalStraightLine<I>(I(a), I(b), I(mu), kind);
 }
 

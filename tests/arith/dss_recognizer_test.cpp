@@ -192,14 +192,16 @@ TYPED_TEST(DssRecognizerTest, ExtendThenRetractRestoresTheState) {
     DssRecognizer<I> rec(to<I>(p.pts[1]), p.c);
     for (std::size_t k = 2; k + 1 < p.pts.size(); ++k) RC_ASSERT(rec.extend_front(to<I>(p.pts[k])));
     auto ch = rec.characteristics();
-    auto leaning = std::vector{rec.first_upper(), rec.last_upper(), rec.first_lower(), rec.last_lower()};
+    auto leaning =
+        std::vector{rec.first_upper(), rec.last_upper(), rec.first_lower(), rec.last_lower()};
     RC_ASSERT(rec.extend_front(to<I>(p.pts.back())));
     RC_ASSERT(rec.retract_front());
     RC_ASSERT(rec.characteristics() == ch);
     RC_ASSERT(rec.extend_back(to<I>(p.pts[0])));
     RC_ASSERT(rec.retract_back());
     RC_ASSERT(rec.characteristics() == ch);
-    auto after = std::vector{rec.first_upper(), rec.last_upper(), rec.first_lower(), rec.last_lower()};
+    auto after =
+        std::vector{rec.first_upper(), rec.last_upper(), rec.first_lower(), rec.last_lower()};
     RC_ASSERT(after == leaning);
   });
 }
@@ -274,9 +276,11 @@ TEST(DssRecognizer, WorkedExampleSlopeThreeSevenths) {
 TEST(DssRecognizer, StandardStaircase) {
   // Two periods of the lower Christoffel path of 2/5: the standard line 0 <= 2x - 5y < 7.
   std::vector<LatticePoint<std::int64_t>> pts{{0, 0}};
-  for (char ch : lower_christoffel_word(Int64(2), Int64(5)) + lower_christoffel_word(Int64(2), Int64(5))) {
+  for (char ch :
+       lower_christoffel_word(Int64(2), Int64(5)) + lower_christoffel_word(Int64(2), Int64(5))) {
     auto p = pts.back();
-    pts.push_back(ch == '0' ? LatticePoint<std::int64_t>{p.x + 1, p.y} : LatticePoint<std::int64_t>{p.x, p.y + 1});
+    pts.push_back(ch == '0' ? LatticePoint<std::int64_t>{p.x + 1, p.y}
+                            : LatticePoint<std::int64_t>{p.x, p.y + 1});
   }
   EXPECT_EQ(path_connectivity(pts), Connectivity::four);
   auto r = recognize_dss(pts, Connectivity::four);
