@@ -10,22 +10,27 @@
 // canonical answer is (a, b, mu) = (0, 1, -y). With two or more points, a = b = 0 never occurs,
 // gcd(a, b) = 1, and (b, a) is the direction of the segment.
 //
-// Algorithm (Debled-Rennesson and Reveilles 1995, in the octant-free form of DGtal's
-// ArithmeticalDSS): the recognizer keeps (a, b, mu), the two steps the path uses, and the first
-// and last upper (Uf, Ul) and lower (Lf, Ll) leaning points. Adding a point M at the front:
-// r(M) in [mu, mu + omega) keeps the line; r(M) = mu - 1 (weakly exterior above) gives
-// (b, a) = M - Uf; r(M) = mu + omega (below) gives (b, a) = M - Lf; anything else, or a third
-// step, means the path is no longer a DSS (extend_* returns false and changes nothing).
-// Removing the first point F: if F = Uf and Lf = Ll, the new direction is Lf - (Uf + shift),
-// else Uf moves on by (b, a) (and symmetrically for F = Lf); the back end works on the
-// reversed segment. Each operation is O(1) (two integer divisions at most for a retraction).
+// Algorithm (Debled-Rennesson and Reveilles 1995, in the octant-free formulation with steps and
+// shift vector used by DGtal's ArithmeticalDSS, Roussillon 2013): the recognizer keeps (a, b, mu),
+// the two steps the path uses, and the first and last upper (Uf, Ul) and lower (Lf, Ll) leaning
+// points. Adding a point M at the front: r(M) in [mu, mu + omega) keeps the line; r(M) = mu - 1
+// (weakly exterior above) gives (b, a) = M - Uf; r(M) = mu + omega (below) gives (b, a) = M - Lf;
+// anything else, or a third step, means the path is no longer a DSS (extend_* returns false and
+// changes nothing). Removing the first point F: if F = Uf and Lf = Ll, the new direction is Lf -
+// (Uf + shift), else Uf moves on by (b, a) (and symmetrically for F = Lf); the back end works on
+// the reversed segment. Each operation is O(1) (two integer divisions at most for a retraction).
 //
 // Width: the recognizer stores coordinates relative to its first point, so its arithmetic only
 // involves |a|, |b| <= n and local coordinates <= n: Int64 serves any path shorter than about
 // 2^31 points whatever the coordinates (near 2^62 included) as long as the local differences
 // fit. Only mu in absolute coordinates needs a x0 - b y0: mu() computes it in I (it may throw
 // OverflowError), characteristics() in BigInt. recognize_dss() escalates Int64 -> Int128 ->
-// BigInt when checked arithmetic overflows (re-feeding the points).
+// BigInt when checked arithmetic overflows (re-feeding the points). After an OverflowError a
+// recognizer's state is unspecified: discard it and re-run on a wider type.
+//
+// Sources: Debled-Rennesson and Reveilles, A linear algorithm for segmentation of digital
+// curves, IJPRAI 9(4), 1995 (extension, minimality by leaning points); Lachaud, Vialard and de
+// Vieilleville, Image Vis. Comput. 25(10), 2007 (retraction, tangential cover).
 //
 // Extension with a point that is not adjacent to the end (including the same point) throws
 // InvalidArgument: a DSS test only answers for paths.

@@ -3,6 +3,7 @@
 // 10^5, and DSL subsegment queries with values near 2^62.
 //
 //   build/bin/dss_bench --benchmark_filter=. --benchmark_min_time=1s
+#include "arith/dsl_subsegment.hpp"
 #include "arith/dss_recognizer.hpp"
 #include "kernel/maximal_segments.hpp"
 #include "tests/support/contours.hpp"
@@ -17,7 +18,8 @@ namespace {
 
 using namespace zdg;
 
-std::vector<LatticePoint<std::int64_t>> dss_points(std::size_t n, std::int64_t x0, std::int64_t y0) {
+std::vector<LatticePoint<std::int64_t>> dss_points(std::size_t n, std::int64_t x0,
+                                                   std::int64_t y0) {
   // A naive line of slope 4142136/10000001 (period longer than the segment), shifted far away.
   DigitalStraightLine<Int64> line(4142136, 10000001, 0);
   auto pts = line.points(line.upper_leaning_point(), n);
@@ -65,7 +67,47 @@ void BM_TangentialCoverDisc(benchmark::State& state) {
   state.counters["segments"] = static_cast<double>(segments);
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(c.size()));
 }
-BENCHMARK(BM_TangentialCoverDisc)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TangentialCoverDisc)
+    ->Arg(1000)
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond);
+
+// Subsegment queries on a line with a, b, mu near 2^62, window of 2^k points starting near
+// -2^62; the top-down and bottom-up searches, through the escalating front-end.
+void BM_SubsegmentNear2To62(benchmark::State& state) {
+  const BigInt b = (BigInt(1) << 62) - 57, a = (BigInt(1) << 61) + 987654321;
+  const BigInt mu = -(BigInt(1) << 61) + 12345;
+  std::mt19937_64 rng(42);
+  std::vector<BigInt> starts;
+  for (int i = 0; i < 64; ++i) starts.push_back(-(BigInt(1) << 62) + BigInt(rng() >> 2));
+  const BigInt len = BigInt(1) << state.range(0);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const BigInt& x0 = starts[i++ % starts.size()];
+    auto r = dsl_subsegment_exact(a, b, mu, x0, x0 + len);
+    benchmark::DoNotOptimize(r);
+  }
+}
+BENCHMARK(BM_SubsegmentNear2To62)->Arg(4)->Arg(20)->Arg(40)->Arg(61)->Unit(benchmark::kMicrosecond);
+
+void BM_SubsegmentInt128BottomUp(benchmark::State& state) {
+  const Int128 b = (Int128(1) * (std::int64_t{1} << 62)) - 57;
+  const Int128 a = Int128(std::int64_t{1} << 61) + 987654321, mu = 12345;
+  const Int128 len = Int128(std::int64_t{1}) * (std::int64_t{1} << state.range(0));
+  std::int64_t x0 = -(std::int64_t{1} << 62) + 99991;
+  for (auto _ : state) {
+    auto r = subsegment_bottom_up(a, b, mu, Int128(x0), Int128(x0) + len);
+    benchmark::DoNotOptimize(r);
+    x0 += 7919;
+  }
+}
+BENCHMARK(BM_SubsegmentInt128BottomUp)
+    ->Arg(4)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(61)
+    ->Unit(benchmark::kMicrosecond);
 
 } // namespace
 
