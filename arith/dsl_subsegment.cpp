@@ -21,7 +21,12 @@ struct Local {
   std::optional<I> fit(const I& p, const I& q) const {
     // below(m): some X has g(X) < m; monotone in m. g(0) = 0, so min g is in (-q, 0] when the
     // thickness max g - min g is < q.
-    I lo = I(1) - q, hi = 0; // find the largest m in [lo, hi] with !below(m)
+    // min g <= min(g(0), g(n-1)) and, when feasible, min g > max(g(0), g(n-1)) - q, with
+    // g(0) = 0: search the largest m in [lo, hi] with !below(m).
+    I last = n - 1;
+    I g_last = p * last - q * floor_div(I(a * last + c), b);
+    I lo = (g_last > 0 ? g_last : I(0)) - (q - 1), hi = g_last < 0 ? g_last : I(0);
+    if (lo > hi) return std::nullopt;
     if (below(p, q, lo)) return std::nullopt;
     while (lo < hi) {
       I mid = hi - (hi - lo) / 2;
