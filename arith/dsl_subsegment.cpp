@@ -16,16 +16,34 @@ namespace {
 template <TowerInt I>
 struct Local {
   I a, b, c, n, x0, k0;
+  std::vector<I> samples; // X = 0, n - 1 and the first / last leaning points of the line in S
+
+  void set_samples() {
+    samples = {I(0), I(n - 1)};
+    if (a == 0) return;
+    I inv = mod(ext_gcd(a, b).x, b);
+    for (const I& r : {I(0), I(b - 1)}) { // upper (R = 0) and lower (R = b - 1) leaning points
+      I first = mod(I(mod(I(r - c), b) * inv), b);
+      if (first >= n) continue;
+      samples.push_back(first);
+      samples.push_back(first + (n - 1 - first) / b * b);
+    }
+  }
 
   // min over S of g(X) = p X - q Y(X) when S fits a naive line of slope p/q, else nullopt.
   std::optional<I> fit(const I& p, const I& q) const {
     // below(m): some X has g(X) < m; monotone in m. g(0) = 0, so min g is in (-q, 0] when the
     // thickness max g - min g is < q.
-    // min g <= min(g(0), g(n-1)) and, when feasible, min g > max(g(0), g(n-1)) - q, with
-    // g(0) = 0: search the largest m in [lo, hi] with !below(m).
-    I last = n - 1;
-    I g_last = p * last - q * floor_div(I(a * last + c), b);
-    I lo = (g_last > 0 ? g_last : I(0)) - (q - 1), hi = g_last < 0 ? g_last : I(0);
+    // Necessary condition from a few points (the ends of S and the leaning points of the line,
+    // where g is often extreme): max - min < q. Then min g lies in [max - q + 1, min]; search
+    // the largest m there with !below(m).
+    I gmin = 0, gmax = 0;
+    for (const I& x : samples) {
+      I g = p * x - q * floor_div(I(a * x + c), b);
+      if (g < gmin) gmin = g;
+      if (g > gmax) gmax = g;
+    }
+    I lo = gmax - (q - 1), hi = gmin;
     if (lo > hi) return std::nullopt;
     if (below(p, q, lo)) return std::nullopt;
     while (lo < hi) {
@@ -103,7 +121,7 @@ Prepared<I> prepare(I a, I b, I mu, const I& x0, const I& x1) {
   Prepared<I> pr;
   I c = a * x0 - mu;
   I k0 = floor_div(c, b);
-  pr.loc = Local<I>{a, b, I(c - k0 * b), I(x1 - x0 + 1), x0, k0};
+  pr.loc = Local<I>{a, b, I(c - k0 * b), I(x1 - x0 + 1), x0, k0, {}};
   if (x1 == x0) {
     pr.done = DslSubsegment<I>{0, 1, I(-k0)};
   } else if (pr.loc.n > 2 * b) {
@@ -111,6 +129,8 @@ Prepared<I> prepare(I a, I b, I mu, const I& x0, const I& x1) {
     pr.done = DslSubsegment<I>{a, b, mu};
   } else if (a == 0) {
     pr.done = DslSubsegment<I>{0, 1, mu};
+  } else {
+    pr.loc.set_samples();
   }
   return pr;
 }
