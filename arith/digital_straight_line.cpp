@@ -3,6 +3,7 @@
 #include "arith/error.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 #include <string>
 
@@ -143,6 +144,10 @@ LatticePoint<I> DigitalStraightLine<I>::point_with_remainder(const I& r) const {
 
 template <TowerInt I>
 std::string DigitalStraightLine<I>::period_word() const {
+  if (omega_ > I(std::int64_t{1} << 30)) {
+    throw InvalidArgument("period_word: the period of " + dsl_name(a_, b_, mu_) + " has " +
+                          to_string(omega_) + " letters, more than 2^30");
+  }
   const std::size_t n = static_cast<std::size_t>(to_double(omega_));
   std::string w;
   w.reserve(n);

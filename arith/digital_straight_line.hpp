@@ -114,7 +114,8 @@ public:
   Point point_with_remainder(const I& r) const;
 
   /// One period read from the upper leaning point: s0 -> '0', s1 -> '1'; it equals
-  /// lower_christoffel_word(r(s0), -r(s1)) (see the header comment).
+  /// lower_christoffel_word(r(s0), -r(s1)) (see the header comment). Periods longer than 2^30
+  /// letters: InvalidArgument.
   std::string period_word() const;
 
   friend bool operator==(const DigitalStraightLine&, const DigitalStraightLine&) = default;
