@@ -45,7 +45,13 @@ struct Local {
     }
     I lo = gmax - (q - 1), hi = gmin;
     if (lo > hi) return std::nullopt;
-    if (below(p, q, lo)) return std::nullopt;
+    // Often the minimum is at a sample: then !below(gmin) proves min g = gmin at once.
+    if (!below(p, q, hi)) {
+      if (above(p, q, hi)) return std::nullopt;
+      return hi;
+    }
+    --hi; // below(gmin) holds, so min g < gmin
+    if (lo > hi || below(p, q, lo)) return std::nullopt;
     while (lo < hi) {
       I mid = hi - (hi - lo) / 2;
       if (below(p, q, mid)) {
