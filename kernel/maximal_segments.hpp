@@ -7,8 +7,8 @@
 // can be added. The tangential cover is the sequence of all maximal segments, ordered by their
 // first point (both ends then increase strictly); on a closed curve the list starts with the
 // maximal segment through p_0 found by extending from p_0 backwards first (it may wrap) and
-// goes once around. The greedy segmentation cuts the curve into
-// longest DSS from p_0 on, consecutive segments sharing their end point.
+// goes once around. The greedy segmentation cuts the curve into longest DSS from p_0 on,
+// consecutive segments sharing their end point.
 //
 // Connectivity: when every step is an axis step (4-connected curves, e.g. contours of
 // pointels) the segments are standard DSS (omega = |a| + |b|); otherwise naive DSS
@@ -25,6 +25,12 @@
 //                reached (upper and lower leaning points). mu is 128-bit: a x0 exceeds int64 for
 //                coordinates near 2^62.
 // A one-point curve gives one segment (a, b, mu, omega) = (0, 1, -y, 1).
+//
+//   std::vector<zdg::Point2<std::int64_t>> contour = ...;  // closed 4-connected pointels
+//   for (const auto& s : zdg::maximal_segments(contour, true)) {
+//     double angle = std::atan2(double(s.a), double(s.b));  // tangent direction of s
+//     // points contour[(s.begin + k) % contour.size()], k = 0 .. s.length - 1
+//   }
 //
 // Complexity: O(n) for both (each point enters and leaves the recognizer at most once per
 // turn; Feschet and Tougne 1999, Lachaud, Vialard and de Vieilleville 2007). Width: the
