@@ -104,6 +104,32 @@ TEST(MaximalSegments, ClosedDiscContoursAgreeWithBruteForce) {
   });
 }
 
+// Closed 8-connected curves: disc contours with every other staircase corner cut (the points
+// whose neighbours are diagonal), so that both axis and diagonal steps occur.
+TEST(MaximalSegments, Closed8ConnectedCurvesAgreeWithBruteForce) {
+  test::check_property([] {
+    std::int64_t r2 = *rc::gen::inRange<std::int64_t>(2, 200);
+    Curve c4 = test::disc_contour(0, 0, r2), c;
+    const std::size_t n4 = c4.size();
+    bool dropped = true; // never drop p_0
+    for (std::size_t k = 0; k < n4; ++k) {
+      const auto &p = c4[(k + n4 - 1) % n4], &q = c4[(k + 1) % n4];
+      bool diagonal = std::abs(q.x - p.x) == 1 && std::abs(q.y - p.y) == 1;
+      if (!dropped && diagonal && k + 1 < n4) {
+        dropped = true;
+        continue;
+      }
+      dropped = false;
+      c.push_back(c4[k]);
+    }
+    c = rotate(c, static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, c.size())));
+    auto got = maximal_segments(c, true, Connectivity::eight);
+    auto want = brute_force_cover(c, true, Connectivity::eight);
+    sort_by_begin(got);
+    RC_ASSERT(got == want);
+  });
+}
+
 // Convexity: on the counter-clockwise contour of a convex digital set the directions of the
 // maximal segments turn monotonically (Doerksen-Lachaud-de Vieilleville; a curve is convex iff
 // its maximal segments' slopes are monotone), every point is covered, and begins and ends
