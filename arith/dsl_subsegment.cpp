@@ -1,0 +1,279 @@
+#include "arith/dsl_subsegment.hpp"
+
+#include "arith/floor_sum.hpp"
+#include "arith/stern_brocot.hpp"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace zdg {
+
+namespace {
+
+// The subsegment in local coordinates: X = x - x0, Y = y - k0, points (X, floor((a X + c)/b))
+// for 0 <= X < n, with 0 <= c < b (so the first point is (0, 0)).
+template <TowerInt I>
+struct Local {
+  I a, b, c, n, x0, k0;
+  std::vector<I> samples; // X = 0, n - 1 and the first / last leaning points of the line in S
+
+  void set_samples() {
+    samples = {I(0), I(n - 1)};
+    if (a == 0) return;
+    I inv = mod(ext_gcd(a, b).x, b);
+    for (const I& r : {I(0), I(b - 1)}) { // upper (R = 0) and lower (R = b - 1) leaning points
+      I first = mod(I(mod(I(r - c), b) * inv), b);
+      if (first >= n) continue;
+      samples.push_back(first);
+      samples.push_back(first + (n - 1 - first) / b * b);
+    }
+  }
+
+  // min over S of g(X) = p X - q Y(X) when S fits a naive line of slope p/q, else nullopt.
+  std::optional<I> fit(const I& p, const I& q) const {
+    // below(m): some X has g(X) < m; monotone in m. g(0) = 0, so min g is in (-q, 0] when the
+    // thickness max g - min g is < q.
+    // Necessary condition from a few points (the ends of S and the leaning points of the line,
+    // where g is often extreme): max - min < q. Then min g lies in [max - q + 1, min]; search
+    // the largest m there with !below(m).
+    I gmin = 0, gmax = 0;
+    for (const I& x : samples) {
+      I g = p * x - q * floor_div(I(a * x + c), b);
+      if (g < gmin) gmin = g;
+      if (g > gmax) gmax = g;
+    }
+    I lo = gmax - (q - 1), hi = gmin;
+    if (lo > hi) return std::nullopt;
+    // Often the minimum is at a sample: then !below(gmin) proves min g = gmin at once.
+    if (!below(p, q, hi)) {
+      if (above(p, q, hi)) return std::nullopt;
+      return hi;
+    }
+    --hi; // below(gmin) holds, so min g < gmin
+    if (lo > hi || below(p, q, lo)) return std::nullopt;
+    while (lo < hi) {
+      I mid = hi - (hi - lo) / 2;
+      if (below(p, q, mid)) {
+        hi = mid - 1;
+      } else {
+        lo = mid;
+      }
+    }
+    if (above(p, q, lo)) return std::nullopt;
+    return lo;
+  }
+
+  // Sum over X in [s, e] of floor((p X - m)/q) - floor((a X + c)/b).
+  I diff_sum(const I& p, const I& q, const I& m, const I& s, const I& e) const {
+    I cnt = e - s + 1;
+    return floor_sum(cnt, q, p, I(p * s - m)) - floor_sum(cnt, b, a, I(a * s + c));
+  }
+  // The X range where Delta X <= K (side = -1) or Delta X >= K (side = +1), within [0, n).
+  std::pair<I, I> side_range(const I& p, const I& q, const I& m, int side) const {
+    I delta = p * b - q * a, k = b * m + q * c;
+    I s = 0, e = n - 1;
+    if (delta == 0) {
+      bool all = side < 0 ? k >= 0 : k <= 0;
+      return all ? std::pair<I, I>{s, e} : std::pair<I, I>{I(1), I(0)};
+    }
+    bool upper_bound = (side < 0) == (delta > 0); // the side is X <= t, else X >= t
+    if (upper_bound) {
+      I t = floor_div(k, delta);
+      if (t < e) e = t;
+    } else {
+      I t = ceil_div(k, delta);
+      if (t > s) s = t;
+    }
+    return {s, e};
+  }
+  bool below(const I& p, const I& q, const I& m) const {
+    auto [s, e] = side_range(p, q, m, -1);
+    return s <= e && diff_sum(p, q, m, s, e) < 0;
+  }
+  bool above(const I& p, const I& q, const I& m) const {
+    auto [s, e] = side_range(p, q, m, +1);
+    return s <= e && diff_sum(p, q, m, s, e) > 0;
+  }
+
+  DslSubsegment<I> answer(const I& p, const I& q, const I& m) const {
+    // p x - q y = p X - q Y + p x0 - q k0
+    return {p, q, I(m + p * x0 - q * k0)};
+  }
+};
+
+template <TowerInt I>
+struct Prepared {
+  Local<I> loc;
+  std::optional<DslSubsegment<I>> done; // answered without search
+};
+
+template <TowerInt I>
+Prepared<I> prepare(I a, I b, I mu, const I& x0, const I& x1) {
+  if (b <= 0) throw InvalidArgument("DSL subsegment: b = " + to_string(b) + " must be > 0");
+  if (a < 0 || a >= b) {
+    throw InvalidArgument("DSL subsegment: a = " + to_string(a) +
+                          " must satisfy 0 <= a < b = " + to_string(b));
+  }
+  if (x1 < x0) {
+    throw InvalidArgument("DSL subsegment: x1 = " + to_string(x1) + " < x0 = " + to_string(x0));
+  }
+  I g = gcd(a, b);
+  if (g != 1) { // mu <= g t < mu + b  <=>  ceil(mu/g) <= t < ceil(mu/g) + b/g
+    a /= g;
+    b /= g;
+    mu = ceil_div(mu, g);
+  }
+  Prepared<I> pr;
+  I c = a * x0 - mu;
+  I k0 = floor_div(c, b);
+  pr.loc = Local<I>{a, b, I(c - k0 * b), I(x1 - x0 + 1), x0, k0, {}};
+  if (x1 == x0) {
+    pr.done = DslSubsegment<I>{0, 1, I(-k0)};
+  } else if (pr.loc.n > 2 * b) {
+    // Two full periods: the line itself; mu is the line's.
+    pr.done = DslSubsegment<I>{a, b, mu};
+  } else if (a == 0) {
+    pr.done = DslSubsegment<I>{0, 1, mu};
+  } else {
+    pr.loc.set_samples();
+  }
+  return pr;
+}
+
+template <TowerInt I>
+struct PathRun {
+  char dir;
+  I k;
+  Fraction<I> base, bound; // N_j = base + j * bound for j = 0..k
+  Fraction<I> node(const I& j) const { return {base.p + j * bound.p, base.q + j * bound.q}; }
+};
+
+// The runs of the Stern-Brocot path of a/b from 1/1 (0 < a < b).
+template <TowerInt I>
+std::vector<PathRun<I>> path_runs(const I& a, const I& b) {
+  std::vector<PathRun<I>> out;
+  Fraction<I> lb{0, 1}, rb{1, 0}, n{1, 1};
+  for (const auto& [dir, k] : stern_brocot_path_runs(a, b)) {
+    PathRun<I> r{dir, k, n, dir == 'L' ? lb : rb};
+    Fraction<I> end = r.node(k), before = r.node(k - 1);
+    if (dir == 'L') {
+      rb = before;
+    } else {
+      lb = before;
+    }
+    n = end;
+    out.push_back(r);
+  }
+  return out;
+}
+
+} // namespace
+
+template <TowerInt I>
+DslSubsegment<I> subsegment_top_down(const I& a, const I& b, const I& mu, const I& x0,
+                                     const I& x1) {
+  auto pr = prepare(a, b, mu, x0, x1);
+  if (pr.done) return *pr.done;
+  const auto& L = pr.loc;
+  if (auto m = L.fit(I(0), I(1))) return L.answer(I(0), I(1), *m);
+  if (auto m = L.fit(I(1), I(1))) return L.answer(I(1), I(1), *m);
+  // Nodes N_0 .. N_{k-1} of a run lie on one side of a/b and approach it (N_k starts the
+  // next run, on the other side): feasibility is monotone on them.
+  for (const auto& run : path_runs(L.a, L.b)) {
+    I lo = 0, hi = run.k - 1;
+    auto f = run.node(hi);
+    if (!L.fit(f.p, f.q)) continue;
+    while (lo < hi) {
+      I mid = lo + (hi - lo) / 2;
+      auto g = run.node(mid);
+      if (L.fit(g.p, g.q)) {
+        hi = mid;
+      } else {
+        lo = mid + 1;
+      }
+    }
+    auto best = run.node(lo);
+    return L.answer(best.p, best.q, *L.fit(best.p, best.q));
+  }
+  if (auto m = L.fit(L.a, L.b)) return L.answer(L.a, L.b, *m);
+  throw Error("DSL subsegment: no feasible slope on the path (internal error)");
+}
+
+template <TowerInt I>
+DslSubsegment<I> subsegment_bottom_up(const I& a, const I& b, const I& mu, const I& x0,
+                                      const I& x1) {
+  auto pr = prepare(a, b, mu, x0, x1);
+  if (pr.done) return *pr.done;
+  const auto& L = pr.loc;
+  auto runs = path_runs(L.a, L.b);
+  auto root_answer = [&]() {
+    if (auto m = L.fit(I(0), I(1))) return L.answer(I(0), I(1), *m);
+    return L.answer(I(1), I(1), *L.fit(I(1), I(1)));
+  };
+  // Position (r, j): node j of run r; (r, 0) is the last node of run r - 1, (0, 0) is 1/1.
+  std::size_t r = runs.size();
+  I j = 0;
+  if (r == 0) return root_answer(); // a/b = 1/1 cannot happen (a < b); kept for safety
+  --r;
+  j = runs[r].k;
+  while (true) {
+    if (j == 0) {
+      if (r == 0) return root_answer();
+      --r;
+      j = runs[r].k;
+      continue;
+    }
+    const auto& run = runs[r];
+    // The other parent of every node N_j (j >= 1) of this run is its bound.
+    const auto& bound = run.bound;
+    if (bound.q != 0 && L.fit(bound.p, bound.q)) {
+      if (r == 0) return L.answer(bound.p, bound.q, *L.fit(bound.p, bound.q)); // 0/1
+      // The bound is node k - 1 of the previous run (runs alternate directions).
+      --r;
+      j = runs[r].k - 1;
+      continue;
+    }
+    // Climb the run: N_0 .. N_{k-1} approach a/b from one side, so feasibility is monotone on
+    // them; with the current node N_j (feasible) the predicate stays monotone on [1, j].
+    auto n0 = run.node(I(0));
+    if (L.fit(n0.p, n0.q)) {
+      j = 0;
+      continue;
+    }
+    I lo = 1, hi = j; // node hi is feasible
+    while (lo < hi) {
+      I mid = lo + (hi - lo) / 2;
+      auto g = run.node(mid);
+      if (L.fit(g.p, g.q)) {
+        hi = mid;
+      } else {
+        lo = mid + 1;
+      }
+    }
+    auto best = run.node(lo);
+    return L.answer(best.p, best.q, *L.fit(best.p, best.q));
+  }
+}
+
+Escalated<DslSubsegment<BigInt>> dsl_subsegment_exact(const BigInt& a, const BigInt& b,
+                                                      const BigInt& mu, const BigInt& x0,
+                                                      const BigInt& x1) {
+  return escalate([&]<class I>(std::type_identity<I>) {
+    auto r = subsegment_top_down(int_cast<I>(a), int_cast<I>(b), int_cast<I>(mu), int_cast<I>(x0),
+                                 int_cast<I>(x1));
+    return DslSubsegment<BigInt>{to_bigint(r.a), to_bigint(r.b), to_bigint(r.mu)};
+  });
+}
+
+#define ZDG_INSTANTIATE(I)                                                                         \
+  template DslSubsegment<I> subsegment_top_down<I>(const I&, const I&, const I&, const I&,         \
+                                                   const I&);                                      \
+  template DslSubsegment<I> subsegment_bottom_up<I>(const I&, const I&, const I&, const I&,        \
+                                                    const I&);
+ZDG_INSTANTIATE(Int64)
+ZDG_INSTANTIATE(Int128)
+ZDG_INSTANTIATE(BigInt)
+#undef ZDG_INSTANTIATE
+
+} // namespace zdg
