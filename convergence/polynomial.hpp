@@ -38,7 +38,7 @@ class Polynomial {
 public:
   Polynomial() = default;
   /// Parses EXPR in the variables x, y (and z when nvars == 3); throws InvalidArgument
-  /// naming the position ("poly: unexpected 'q' at position 4 of 'x^2+q'").
+  /// naming the position ("poly: unexpected 'q' at position 5 of 'x^2+q'").
   static Polynomial parse(std::string_view text, int nvars);
 
   int nvars() const { return nvars_; }

@@ -32,6 +32,14 @@ public:
              std::numeric_limits<double>::epsilon();
   }
   const Polynomial& polynomial() const { return f_; }
+  bool is_quadratic() const { return quadratic_; }
+  /// Coefficients of x^2, xy, y^2, x, y, 1 (degree <= 2).
+  const double (&coefficients() const)[6] { return q_; }
+  /// Filter bound of the quadratic for |x| <= mx, |y| <= my (including rounding of x, y).
+  double bound(double mx, double my) const {
+    return gamma_ *
+           (((aq_[0] * mx + aq_[1] * my + aq_[3]) * mx + (aq_[2] * my + aq_[4]) * my) + aq_[5]);
+  }
 
   // Sign of F(x, y) with x = H zx - Tx exactly; xd, yd the doubles, mx, my magnitude bounds.
   // Returns -1, 0 or 1; `exact` gives the rational point when needed.
@@ -64,11 +72,47 @@ class PolyDigitization final : public GaussDigitization2 {
 public:
   PolyDigitization(const std::vector<PolyPredicate>* preds, double h, P2 t, Box2 box)
       : GaussDigitization2(box), preds_(preds), h_(h), t_(t), hx_(exact_rational(h)),
-        tx_(exact_rational(t.x)), ty_(exact_rational(t.y)) {}
+        tx_(exact_rational(t.x)), ty_(exact_rational(t.y)) {
+    if (preds_->size() == 1 && preds_->front().is_quadratic()) {
+      auto mag = [&](std::int64_t a, std::int64_t b, double off) {
+        return 2.0 * (std::max(std::abs(h * static_cast<double>(a)),
+                               std::abs(h * static_cast<double>(b))) +
+                      std::abs(off));
+      };
+      box_bound_ =
+          preds_->front().bound(mag(box.lo.x, box.hi.x, t.x), mag(box.lo.y, box.hi.y, t.y));
+    }
+  }
 
+  // Hot loop of the integral invariants. One quadratic (ball, ellipse): a branch-free pass
+  // compares F with a bound valid for the whole box (gamma times the magnitude sum at the
+  // box corners); the few pixels it does not certify go through test().
   std::int64_t count(std::span<const Pixel> zs) const override {
-    std::int64_t n = 0;
-    for (const auto& z : zs) n += (box().contains(z) && test(z)) ? 1 : 0;
+    if (preds_->size() != 1 || !preds_->front().is_quadratic()) {
+      std::int64_t n = 0;
+      for (const auto& z : zs) n += (box().contains(z) && test(z)) ? 1 : 0;
+      return n;
+    }
+    const auto& q = preds_->front().coefficients();
+    const Box2& b = box();
+    std::int64_t n = 0, unsure = 0;
+    for (const auto& z : zs) {
+      const double x = h_ * static_cast<double>(z.x) - t_.x,
+                   y = h_ * static_cast<double>(z.y) - t_.y;
+      const double v = ((q[0] * x + q[1] * y + q[3]) * x + (q[2] * y + q[4]) * y) + q[5];
+      const bool in_box = (b.lo.x <= z.x) & (z.x <= b.hi.x) & (b.lo.y <= z.y) & (z.y <= b.hi.y);
+      n += static_cast<std::int64_t>(in_box & (v < -box_bound_));
+      unsure += static_cast<std::int64_t>(in_box & (std::abs(v) <= box_bound_));
+    }
+    if (unsure > 0) {
+      for (const auto& z : zs) {
+        if (!box().contains(z)) continue;
+        const double x = h_ * static_cast<double>(z.x) - t_.x,
+                     y = h_ * static_cast<double>(z.y) - t_.y;
+        const double v = ((q[0] * x + q[1] * y + q[3]) * x + (q[2] * y + q[4]) * y) + q[5];
+        if (std::abs(v) <= box_bound_ && test(z)) ++n;
+      }
+    }
     return n;
   }
 
@@ -77,6 +121,7 @@ protected:
 
 private:
   const std::vector<PolyPredicate>* preds_;
+  double box_bound_ = 0;
   double h_;
   P2 t_;
   BigRational hx_, tx_, ty_;
@@ -244,6 +289,27 @@ public:
 
 class Flower final : public StarShape {
 public:
+  // cos(K theta + PHI) from (x + i y)^K / rho^K (K a non-negative integer): no atan2.
+  std::unique_ptr<GaussDigitization2> digitize(double h, P2 t, Box2 box) const override {
+    if (k_ < 0 || k_ > 64) return StarShape::digitize(h, t, box);
+    const int k = static_cast<int>(k_);
+    const double cp = std::cos(phi_), sp = std::sin(phi_), rmin = r_min(), rmax = r_max();
+    auto f = [=, this](double x, double y) {
+      double rr = x * x + y * y;
+      if (rr < rmin * rmin * (1 - 1e-12)) return true;
+      if (rr > rmax * rmax * (1 + 1e-12)) return false;
+      double re = 1, im = 0;
+      for (int i = 0; i < k; ++i) {
+        double nre = re * x - im * y;
+        im = re * y + im * x;
+        re = nre;
+      }
+      double rho = std::sqrt(rr), rk = std::pow(rho, k);
+      return rho <= r0_ + a_ * (cp * re - sp * im) / rk;
+    };
+    return std::make_unique<DoubleDigitization<decltype(f)>>(f, h, t, box);
+  }
+
   Flower(std::string spec, double r0, double a, double k, double phi)
       : spec_(std::move(spec)), r0_(r0), a_(a), k_(k), phi_(phi) {}
   std::string spec() const override { return spec_; }
