@@ -304,8 +304,10 @@ public:
         im = re * y + im * x;
         re = nre;
       }
-      double rho = std::sqrt(rr), rk = std::pow(rho, k);
-      return rho <= r0_ + a_ * (cp * re - sp * im) / rk;
+      // rho <= r0 + a cos(K theta + PHI), multiplied by rho^K > 0.
+      double rho = std::sqrt(rr), rk = 1;
+      for (int i = 0; i < k; ++i) rk *= rho;
+      return rho * rk <= r0_ * rk + a_ * (cp * re - sp * im);
     };
     return std::make_unique<DoubleDigitization<decltype(f)>>(f, h, t, box);
   }

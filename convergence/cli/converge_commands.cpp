@@ -348,14 +348,16 @@ void run_converge(ConvergeOptions o, Context& ctx) {
   if (o.json) {
     print_json({{"runs", runs_json(result)}, {"fits", fits_json(result)}});
   } else {
-    std::cout << std::left << std::setw(22) << "shape" << std::setw(15) << "estimator"
+    int width = 6;
+    for (const auto& f : result.fits) width = std::max(width, static_cast<int>(f.shape.size()) + 2);
+    std::cout << std::left << std::setw(width) << "shape" << std::setw(15) << "estimator"
               << std::setw(6) << "norm" << std::setw(18) << "slope" << std::setw(10) << "expected"
               << "verdict\n";
     for (const auto& f : result.fits) {
       std::ostringstream slope, expected;
       slope << std::fixed << std::setprecision(3) << f.fit.slope << " +- " << f.fit.stderr_slope;
       if (f.expected) expected << std::fixed << std::setprecision(3) << *f.expected;
-      std::cout << std::left << std::setw(22) << f.shape << std::setw(15) << f.estimator
+      std::cout << std::left << std::setw(width) << f.shape << std::setw(15) << f.estimator
                 << std::setw(6) << f.norm << std::setw(18) << slope.str() << std::setw(10)
                 << (f.expected ? expected.str() : "-")
                 << (f.pass ? (*f.pass ? "PASS" : "FAIL") : "-") << '\n';
