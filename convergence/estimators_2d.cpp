@@ -6,6 +6,7 @@
 #include "estimators/binomial_convolver.hpp"
 #include "estimators/gauss_area.hpp"
 #include "estimators/ii_curvature.hpp"
+#include "estimators/mlp_length.hpp"
 #include "estimators/moments.hpp"
 #include "kernel/digital_contour.hpp"
 
@@ -103,6 +104,17 @@ ErrorStats run_ii_curvature(const RunInput& in) {
   return acc.stats();
 }
 
+ErrorStats run_mlp_length(const RunInput& in) {
+  Digitized2 d = digitize(in);
+  auto perimeter = d.shape->perimeter();
+  if (!perimeter) throw InvalidArgument("the perimeter of '" + in.shape.spec() + "' is not known");
+  double len = 0;
+  for (const auto& c : d.contours) len += mlp_length(c, in.h);
+  ErrorAccumulator acc;
+  acc.add(len - *perimeter);
+  return acc.stats();
+}
+
 template <bool Tangent>
 ErrorStats run_binomial(const RunInput& in) {
   Digitized2 d = digitize(in);
@@ -135,6 +147,8 @@ void register_2d_estimators(std::vector<Estimator>& out) {
   out.push_back({"moments", 2,
                  "moments m00, m10, m01, m20, m11, m02 of the digitization (6 errors per run)",
                  "none", "moment", false, false, 0, 0, run_moments});
+  out.push_back({"mlp-length", 2, "perimeter by the minimum length polygon of the contour", "none",
+                 "length", false, false, 0, 0, run_mlp_length});
   out.push_back({"ii-curvature", 2,
                  "integral-invariant curvature 3pi/(2R) - 3A/R^3 at every linel (inner/outer "
                  "pixel average)",

@@ -26,6 +26,12 @@ std::optional<TheoryRate> theory_rate(const std::string& estimator, const Shape&
     }
     return std::nullopt;
   }
+  if (estimator == "mlp-length") {
+    if (smooth_convex || polygon) {
+      return TheoryRate{1.0, "O(h) for convex shapes", "Klette-Rosenfeld 2004; DGA 2012 survey"};
+    }
+    return std::nullopt;
+  }
   if (estimator == "ii-curvature") {
     if (smooth && std::abs(alpha - 1.0 / 3.0) < 1e-12) {
       return TheoryRate{1.0 / 3.0,

@@ -79,12 +79,13 @@ TEST(Experiment, IICurvatureSlopeOnTheEllipseSmoke) {
 TEST(Experiment, MomentsAndTangentSlopesSmoke) {
   zdg::ExperimentConfig c;
   c.shapes = {"ellipse:20,7"};
-  c.estimators = {"moments", "bc-tangent"};
+  c.estimators = {"moments", "bc-tangent", "mlp-length"};
   c.hs = zdg::parse_grid_steps("0.4:0.05:4");
   c.translations = 2;
   c.seed = 3;
   auto r = zdg::run_experiment(c);
-  EXPECT_EQ(r.runs.size(), 16u);
+  EXPECT_EQ(r.runs.size(), 24u);
+  EXPECT_GT(linf_fit(r, "mlp-length").fit.slope, 0.9);
   EXPECT_GT(linf_fit(r, "moments").fit.slope, 0.9);
   EXPECT_GT(linf_fit(r, "bc-tangent").fit.slope, 2.0 / 3 - 0.2);
 }
