@@ -10,8 +10,10 @@
 #include "estimators/moments.hpp"
 #include "kernel/digital_contour.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 
 namespace zdg {
 
@@ -36,8 +38,13 @@ Box2 pixel_box(const std::vector<std::pair<double, double>>& box, double h) {
   auto lo = [&](double v) { return static_cast<std::int64_t>(std::floor(v / h)) - 1; };
   auto hi = [&](double v) { return static_cast<std::int64_t>(std::ceil(v / h)) + 1; };
   double span = std::max(box[0].second - box[0].first, box[1].second - box[1].first) / h;
-  if (!(span < 4e9)) {
-    throw InvalidArgument("grid step h = " + std::to_string(h) + " is too small for the box");
+  const double far = std::max({std::abs(box[0].first), std::abs(box[0].second),
+                               std::abs(box[1].first), std::abs(box[1].second)}) /
+                     h;
+  if (!(span < 4e9) || !(far < 1e15)) {
+    std::ostringstream msg;
+    msg << "grid step h = " << h << " is too small for the box";
+    throw InvalidArgument(msg.str());
   }
   return Box2{{lo(box[0].first), lo(box[1].first)}, {hi(box[0].second), hi(box[1].second)}};
 }

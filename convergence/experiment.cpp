@@ -30,12 +30,27 @@ std::vector<std::string> split(const std::string& s, char sep) {
   }
 }
 
+// A rational (7, -3/4, 0.125) or a decimal in scientific notation (1.7e-4).
 double number(const std::string& text, const std::string& what) {
   try {
     return parse_rational<BigInt>(text).to_double();
   } catch (const InvalidArgument&) {
+  }
+  std::size_t used = 0;
+  double v = 0;
+  bool ok = text.find_first_of("eE") != std::string::npos &&
+            text.find_first_not_of("0123456789.eE+-") == std::string::npos;
+  if (ok) {
+    try {
+      v = std::stod(text, &used);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+  }
+  if (!ok || used != text.size() || !std::isfinite(v) || (v != 0 && std::abs(v) < 1e-300)) {
     throw InvalidArgument(what + ": '" + text + "' is not a number");
   }
+  return v;
 }
 
 long integer(const std::string& text, const std::string& what) {
@@ -182,6 +197,11 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
         auto t0 = std::chrono::steady_clock::now();
         r.errors = est.run(in);
         r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (!std::isfinite(r.errors.linf) || !std::isfinite(r.errors.l2)) {
+          throw Error("estimator '" + est.name + "' produced a non-finite error on '" + r.shape +
+                      "' at h = " + std::to_string(job.h) + " (translation " +
+                      std::to_string(job.translation) + ")");
+        }
         records[i] = std::move(r);
         std::size_t n = done.fetch_add(1) + 1;
         if (progress) {

@@ -119,7 +119,9 @@ void load_toml(ConvergeOptions& o, const std::string& file) {
     auto text = [&] { return toml_text(node, key, file); };
     auto int_value = [&]() -> long long {
       auto v = node.value<std::int64_t>();
-      if (!v) throw IoError(file + ": key '" + key + "' must be an integer");
+      if (!v || *v < 0 || *v > 1000000000) {
+        throw IoError(file + ": key '" + key + "' must be an integer in 0..1e9");
+      }
       return *v;
     };
     if (key == "shape" || key == "shapes") {
@@ -371,9 +373,20 @@ void run_converge(ConvergeOptions o, Context& ctx) {
   if (!result.all_pass) ctx.exit_code = 1;
 }
 
+CLI::Validator non_negative_integer() {
+  return CLI::Validator(
+      [](std::string& text) {
+        bool ok = !text.empty() && text.size() <= 18 &&
+                  text.find_first_not_of("0123456789") == std::string::npos;
+        return ok ? std::string() : "'" + text + "' is not a non-negative integer";
+      },
+      "INT>=0");
+}
+
 void add_run_options(CLI::App* cmd, ConvergeOptions& o) {
   cmd->add_option("-o,--output", o.output, "Output directory (results.csv, summary.json, plot)");
-  cmd->add_option("--threads", o.threads, "Worker threads (runs in parallel)");
+  cmd->add_option("--threads", o.threads, "Worker threads (runs in parallel)")
+      ->check(CLI::Range(1, 1024));
   cmd->add_flag("--json", o.json, "Print runs and fits as JSON on stdout");
   cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
   cmd->add_flag("--force", o.force, "Replace results already in the output directory");
@@ -395,11 +408,14 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     cmd->add_option("--k", o->k, "Parameter k (R = k h^alpha, mask factor), rational");
     cmd->add_option("--alpha", o->alpha, "Exponent alpha of R = k h^alpha, rational");
     cmd->add_option("--translations", o->translations,
-                    "Random sub-pixel translations per h (0: untranslated)");
-    cmd->add_option("--seed", o->seed, "Seed of the translations");
+                    "Random sub-pixel translations per h (0: untranslated)")
+        ->check(non_negative_integer());
+    cmd->add_option("--seed", o->seed, "Seed of the translations")->check(non_negative_integer());
     cmd->add_option("--box", o->box, "Digitization domain [LO,HI]^d as LO:HI");
-    cmd->add_option("--fit-levels", o->fit_levels, "Fit on the L finest levels (0: all)");
-    cmd->add_option("--tolerance", o->tolerance, "Slope tolerance of the theory check (0.1)");
+    cmd->add_option("--fit-levels", o->fit_levels, "Fit on the L finest levels (0: all)")
+        ->check(non_negative_integer());
+    cmd->add_option("--tolerance", o->tolerance, "Slope tolerance of the theory check (0.1)")
+        ->check(CLI::Range(0.0, 10.0));
     cmd->add_option("--title", o->title, "Plot title");
     cmd->add_flag("--list", o->list, "List shapes and estimators with their parameters");
     add_run_options(cmd, *o);
