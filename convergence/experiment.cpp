@@ -191,7 +191,7 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
             box[a].second += r.offset[a] + 2 * job.h;
           }
         } else {
-          box.assign(static_cast<std::size_t>(d), {-20.0, 20.0});
+          box.assign(static_cast<std::size_t>(d), shape.default_domain());
         }
         RunInput in{shape, job.h, r.offset, box, r.k, r.alpha};
         auto t0 = std::chrono::steady_clock::now();

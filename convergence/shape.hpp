@@ -43,6 +43,9 @@ public:
   virtual std::optional<std::vector<std::pair<double, double>>> bounding_box() const {
     return std::nullopt;
   }
+  /// Digitization domain when --box is not given and the shape has no bounding box:
+  /// [-20,20]^d by default (3D implicit shapes override it with [-10,10]^3).
+  virtual std::pair<double, double> default_domain() const { return {-20.0, 20.0}; }
 };
 
 /// A point of the true boundary with its unit tangent and curvature.
