@@ -273,12 +273,52 @@ public:
   bool contains(P2 p) const override {
     return std::hypot(p.x, p.y) <= radius(std::atan2(p.y, p.x)).r;
   }
+  /// Upper bound of |r'| (for the sector filter).
+  virtual double max_dr() const = 0;
+  /// The membership test in double: |p| <= r(theta).
+  virtual bool star_test(double x, double y, double rr) const {
+    return std::sqrt(rr) <= radius(std::atan2(y, x)).r;
+  }
+
+  // Sector filter: the pseudo-angle q in [0, 4) (monotone in theta, no atan2) selects one of
+  // kSectors sectors with precomputed bounds lo <= r <= hi (dense samples widened by
+  // max|r'| times the sample spacing); |p| <= lo or |p| > hi decides at once, the rest goes
+  // through star_test.
   std::unique_ptr<GaussDigitization2> digitize(double h, P2 t, Box2 box) const override {
-    auto f = [this](double x, double y) {
-      double rr = x * x + y * y, rmin = r_min(), rmax = r_max();
-      if (rr < rmin * rmin * (1 - 1e-12)) return true;
-      if (rr > rmax * rmax * (1 + 1e-12)) return false;
-      return std::sqrt(rr) <= radius(std::atan2(y, x)).r;
+    constexpr int kSectors = 4096, kSamples = 16;
+    auto table = std::make_shared<std::vector<std::array<double, 2>>>(kSectors);
+    auto theta_of = [](double q) {
+      double quadrant = std::floor(q), f = q - quadrant;
+      double th = quadrant * kPi / 2 + std::atan2(f, 1 - f);
+      return th >= kPi ? th - 2 * kPi : th;
+    };
+    for (int k = 0; k < kSectors; ++k) {
+      double q0 = 4.0 * k / kSectors, q1 = 4.0 * (k + 1) / kSectors;
+      double th0 = theta_of(q0), th1 = theta_of(q1 - 1e-15);
+      if (th1 < th0) th1 += 2 * kPi;
+      double lo = std::numeric_limits<double>::infinity(), hi = 0;
+      for (int i = 0; i <= kSamples; ++i) {
+        double r = radius(th0 + (th1 - th0) * i / kSamples).r;
+        lo = std::min(lo, r);
+        hi = std::max(hi, r);
+      }
+      // Between samples r moves by at most max|r'| times the spacing (plus 1e-6 rad of
+      // slack for the rounding of q near sector ends).
+      double margin = max_dr() * ((th1 - th0) / kSamples + 1e-6) + 1e-9 * r_max();
+      lo = std::max(0.0, lo - margin);
+      hi += margin;
+      (*table)[static_cast<std::size_t>(k)] = {lo * lo, hi * hi};
+    }
+    auto f = [this, table](double x, double y) {
+      double rr = x * x + y * y;
+      double ax = std::abs(x), ay = std::abs(y), s = ax + ay;
+      if (s == 0) return true;
+      double q = x >= 0 ? (y >= 0 ? y / s : 3 + x / s) : (y >= 0 ? 1 - x / s : 2 - y / s);
+      auto k = std::min(kSectors - 1, static_cast<int>(q * (kSectors / 4.0)));
+      const auto& b = (*table)[static_cast<std::size_t>(k)];
+      if (rr < b[0]) return true;
+      if (rr > b[1]) return false;
+      return star_test(x, y, rr);
     };
     return std::make_unique<DoubleDigitization<decltype(f)>>(f, h, t, box);
   }
@@ -290,30 +330,25 @@ public:
 class Flower final : public StarShape {
 public:
   // cos(K theta + PHI) from (x + i y)^K / rho^K (K a non-negative integer): no atan2.
-  std::unique_ptr<GaussDigitization2> digitize(double h, P2 t, Box2 box) const override {
-    if (k_ < 0 || k_ > 64) return StarShape::digitize(h, t, box);
+  bool star_test(double x, double y, double rr) const override {
+    if (k_ < 0 || k_ > 64) return StarShape::star_test(x, y, rr);
     const int k = static_cast<int>(k_);
-    const double cp = std::cos(phi_), sp = std::sin(phi_), rmin = r_min(), rmax = r_max();
-    auto f = [=, this](double x, double y) {
-      double rr = x * x + y * y;
-      if (rr < rmin * rmin * (1 - 1e-12)) return true;
-      if (rr > rmax * rmax * (1 + 1e-12)) return false;
-      double re = 1, im = 0;
-      for (int i = 0; i < k; ++i) {
-        double nre = re * x - im * y;
-        im = re * y + im * x;
-        re = nre;
-      }
-      // rho <= r0 + a cos(K theta + PHI), multiplied by rho^K > 0.
-      double rho = std::sqrt(rr), rk = 1;
-      for (int i = 0; i < k; ++i) rk *= rho;
-      return rho * rk <= r0_ * rk + a_ * (cp * re - sp * im);
-    };
-    return std::make_unique<DoubleDigitization<decltype(f)>>(f, h, t, box);
+    double re = 1, im = 0;
+    for (int i = 0; i < k; ++i) {
+      double nre = re * x - im * y;
+      im = re * y + im * x;
+      re = nre;
+    }
+    // rho <= r0 + a cos(K theta + PHI), multiplied by rho^K > 0.
+    double rho = std::sqrt(rr), rk = 1;
+    for (int i = 0; i < k; ++i) rk *= rho;
+    return rho * rk <= r0_ * rk + a_ * (cp_ * re - sp_ * im);
   }
+  double max_dr() const override { return std::abs(a_ * k_); }
 
   Flower(std::string spec, double r0, double a, double k, double phi)
-      : spec_(std::move(spec)), r0_(r0), a_(a), k_(k), phi_(phi) {}
+      : spec_(std::move(spec)), r0_(r0), a_(a), k_(k), phi_(phi), cp_(std::cos(phi)),
+        sp_(std::sin(phi)) {}
   std::string spec() const override { return spec_; }
   Radius radius(double s) const override {
     double u = k_ * s + phi_;
@@ -327,7 +362,7 @@ public:
 
 private:
   std::string spec_;
-  double r0_, a_, k_, phi_;
+  double r0_, a_, k_, phi_, cp_, sp_;
 };
 
 class AccFlower final : public StarShape {
@@ -346,6 +381,7 @@ public:
   double r_min() const override { return r1_ - std::abs(r2_); }
   double r_max() const override { return r1_ + std::abs(r2_); }
   int quadrature_samples() const override { return 1 << 20; }
+  double max_dr() const override { return std::abs(r2_ * p_) * 3 * kPi * kPi; }
 
 private:
   std::string spec_;

@@ -110,6 +110,26 @@ TEST(Shapes2d, DigitizationDecidesBoundaryPointsExactly) {
   EXPECT_EQ(db->count(pts), 3);
 }
 
+TEST(Shapes2d, StarSectorFilterAgreesWithThePolarTest) {
+  // The digitization of the flowers (sector bounds, then the polar test) answers as the
+  // plain test |p| <= r(atan2(p)) away from ties.
+  for (const char* spec : {"flower:20,7,6", "flower:5,2,3,1/2", "accflower:20,5,5"}) {
+    auto s = shape2(spec);
+    const double h = 0.0137;
+    auto d = s->digitize(h, {0.001, -0.002}, zdg::Box2{{-3000, -3000}, {3000, 3000}});
+    std::uint64_t state = 12345;
+    int disagreements = 0;
+    for (int i = 0; i < 200000; ++i) {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      auto x = static_cast<std::int64_t>((state >> 33) % 4001) - 2000;
+      auto y = static_cast<std::int64_t>((state >> 13) % 4001) - 2000;
+      Point2<double> p{h * static_cast<double>(x) - 0.001, h * static_cast<double>(y) + 0.002};
+      disagreements += d->contains({x, y}) != s->contains(p) ? 1 : 0;
+    }
+    EXPECT_EQ(disagreements, 0) << spec;
+  }
+}
+
 TEST(Shapes2d, ParseErrorsNameTheProblem) {
   auto message = [](const char* spec) {
     try {
