@@ -4,8 +4,11 @@
 #include "arith/error.hpp"
 #include "convergence/estimator.hpp"
 #include "estimators/binomial_convolver.hpp"
+#include "estimators/dss_length.hpp"
 #include "estimators/gauss_area.hpp"
 #include "estimators/ii_curvature.hpp"
+#include "estimators/lambda_mst.hpp"
+#include "estimators/mdss_curvature.hpp"
 #include "estimators/mlp_length.hpp"
 #include "estimators/moments.hpp"
 #include "kernel/digital_contour.hpp"
@@ -144,6 +147,51 @@ ErrorStats run_binomial(const RunInput& in) {
   return acc.stats();
 }
 
+// Global length estimators of the contours: the sum over all contours against the perimeter.
+template <class LengthOfContour>
+ErrorStats run_length(const RunInput& in, LengthOfContour length_of) {
+  Digitized2 d = digitize(in);
+  auto perimeter = d.shape->perimeter();
+  if (!perimeter) throw InvalidArgument("the perimeter of '" + in.shape.spec() + "' is not known");
+  double len = 0;
+  for (const auto& c : d.contours) len += length_of(c.pointels(), in.h);
+  ErrorAccumulator acc;
+  acc.add(len - *perimeter);
+  return acc.stats();
+}
+
+ErrorStats run_dss_length(const RunInput& in) {
+  return run_length(
+      in, [](const std::vector<Pixel>& pts, double h) { return dss_length(pts, true, h); });
+}
+
+ErrorStats run_lmst_length(const RunInput& in) {
+  return run_length(
+      in, [](const std::vector<Pixel>& pts, double h) { return lambda_mst_length(pts, h); });
+}
+
+// Per-pointel estimators built on the maximal segments of each contour.
+template <bool Tangent>
+ErrorStats run_maximal_segment_estimator(const RunInput& in) {
+  Digitized2 d = digitize(in);
+  ErrorAccumulator acc;
+  for (const auto& c : d.contours) {
+    auto pts = c.pointels();
+    if constexpr (Tangent) {
+      auto t = lambda_mst_tangents(pts, true);
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        acc.add(tangent_angle(t[i], truth(d, d.embed.pointel(pts[i])).tangent));
+      }
+    } else {
+      auto kappa = mdss_curvature(pts, in.h);
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        acc.add(kappa[i] - truth(d, d.embed.pointel(pts[i])).curvature);
+      }
+    }
+  }
+  return acc.stats();
+}
+
 } // namespace
 
 namespace detail {
@@ -156,6 +204,19 @@ void register_2d_estimators(std::vector<Estimator>& out) {
                  "none", "moment", false, false, 0, 0, run_moments});
   out.push_back({"mlp-length", 2, "perimeter by the minimum length polygon of the contour", "none",
                  "length", false, false, 0, 0, run_mlp_length});
+  out.push_back({"dss-length", 2,
+                 "perimeter by the polygon through the ends of the greedy DSS segmentation", "none",
+                 "length", false, false, 0, 0, run_dss_length});
+  out.push_back({"lmst-length", 2, "perimeter from the lambda-MST tangents of every linel",
+                 "none (parameter-free)", "length", false, false, 0, 0, run_lmst_length});
+  out.push_back({"lmst-tangent", 2,
+                 "lambda-MST tangent at every pointel (weighted pencil of maximal segments)",
+                 "none (parameter-free)", "angle (rad)", false, false, 0, 0,
+                 run_maximal_segment_estimator<true>});
+  out.push_back({"mdss-curvature", 2,
+                 "curvature of the circle through the ends of the half-tangents (maximal DSS); "
+                 "not convergent: a negative control",
+                 "none", "curvature", false, false, 0, 0, run_maximal_segment_estimator<false>});
   out.push_back({"ii-curvature", 2,
                  "integral-invariant curvature 3pi/(2R) - 3A/R^3 at every linel (inner/outer "
                  "pixel average)",

@@ -40,6 +40,17 @@ std::optional<TheoryRate> theory_rate(const std::string& estimator, const Shape&
     }
     return std::nullopt;
   }
+  if (estimator == "dss-length" && polygon) {
+    return TheoryRate{1.0, "O(h) on convex polygons", "DGA 2012 survey"};
+  }
+  if (estimator == "lmst-length" && smooth_convex) {
+    return TheoryRate{1.0 / 3.0, "O(h^{1/3}) for C^3 piecewise strictly convex curves",
+                      "Lachaud, Vialard, de Vieilleville 2007"};
+  }
+  if (estimator == "lmst-tangent" && smooth_convex) {
+    return TheoryRate{1.0 / 3.0, "O(h^{1/3}) for C^3 convex curves, parameter-free",
+                      "Lachaud, Vialard, de Vieilleville 2007"};
+  }
   if (estimator == "bc-tangent" && smooth) {
     return TheoryRate{2.0 / 3.0, "O(h^{2/3}) with mask ~ h^{-4/3}, C^3 curves",
                       "Esbelin, Malgouyres, Cartade 2011"};

@@ -90,6 +90,30 @@ TEST(Experiment, MomentsAndTangentSlopesSmoke) {
   EXPECT_GT(linf_fit(r, "bc-tangent").fit.slope, 2.0 / 3 - 0.2);
 }
 
+// The estimators built on maximal segments: DSS length converges at O(h) on a convex
+// polygon, the lambda-MST tangent at least at its proven h^{1/3} on the ellipse.
+TEST(Experiment, MaximalSegmentEstimatorsSmoke) {
+  zdg::ExperimentConfig c;
+  c.shapes = {"polygon:-9,-7,10,-8,6,9,-5,6"};
+  c.estimators = {"dss-length"};
+  c.hs = {0.2, 0.1, 0.05, 0.025};
+  c.translations = 2;
+  c.seed = 7;
+  c.threads = 2;
+  auto r = zdg::run_experiment(c);
+  EXPECT_GT(linf_fit(r, "dss-length").fit.slope, 0.8);
+  ASSERT_TRUE(linf_fit(r, "dss-length").pass.has_value());
+  EXPECT_TRUE(*linf_fit(r, "dss-length").pass);
+  c.shapes = {"ellipse:20,7"};
+  c.estimators = {"lmst-tangent", "mdss-curvature"};
+  c.hs = {0.4, 0.2, 0.1, 0.05};
+  auto t = zdg::run_experiment(c);
+  EXPECT_GT(linf_fit(t, "lmst-tangent").fit.slope, 1.0 / 3.0 - 0.1);
+  EXPECT_TRUE(linf_fit(t, "lmst-tangent").pass.value_or(false));
+  // The negative control gets no verdict: theory proves no rate.
+  EXPECT_FALSE(linf_fit(t, "mdss-curvature").pass.has_value());
+}
+
 TEST(Experiment, RejectsMismatchedInput) {
   zdg::ExperimentConfig c;
   c.shapes = {"ellipse:20,7"};
