@@ -50,9 +50,9 @@ zdg::TransformOptions options(const benchmark::State& st) {
 }
 
 void report(benchmark::State& st, std::int64_t voxels) {
-  st.counters["ns_per_voxel"] = benchmark::Counter(
-      static_cast<double>(voxels) * 1e-9,
-      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  st.counters["ns_per_voxel"] = benchmark::Counter(static_cast<double>(voxels) * 1e-9,
+                                                   benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
 }
 
 void Dt2d(benchmark::State& st) {
@@ -91,10 +91,23 @@ void Rma3d(benchmark::State& st) {
   report(st, img.size());
 }
 
-BENCHMARK(Dt2d)->Args({4096, 2, 1})->Args({4096, 2, 2})->Args({4096, 1, 2})->Args({4096, 0, 2})
-    ->Args({4096, 3, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(Dt3d)->Args({256, 2, 1})->Args({256, 2, 2})->Args({256, 3, 2})->Args({256, 1, 2})
-    ->Args({256, 0, 2})->Args({512, 2, 2})->Args({512, 3, 2})->Unit(benchmark::kMillisecond)
+BENCHMARK(Dt2d)
+    ->Args({4096, 2, 1})
+    ->Args({4096, 2, 2})
+    ->Args({4096, 1, 2})
+    ->Args({4096, 0, 2})
+    ->Args({4096, 3, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(Dt3d)
+    ->Args({256, 2, 1})
+    ->Args({256, 2, 2})
+    ->Args({256, 3, 2})
+    ->Args({256, 1, 2})
+    ->Args({256, 0, 2})
+    ->Args({512, 2, 2})
+    ->Args({512, 3, 2})
+    ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(Voronoi3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Rdt3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();

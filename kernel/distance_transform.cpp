@@ -54,8 +54,8 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
   require_background(shape, opt);
   if constexpr (!std::is_same_v<T, BigInt>) {
     if (bounds.value_max > type_max<T>()) {
-      throw OverflowError("distance transform: values up to " + bounds.value_max.str() +
-                          " (" + opt.metric.name() + ") do not fit the output type (max " +
+      throw OverflowError("distance transform: values up to " + bounds.value_max.str() + " (" +
+                          opt.metric.name() + ") do not fit the output type (max " +
                           type_max<T>().str() + ")");
     }
   }

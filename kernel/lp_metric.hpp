@@ -66,9 +66,7 @@ struct TransformOptions {
   /// run every width.
   unsigned min_engine_bits = 0;
 
-  bool periodic(int k) const {
-    return !torus.empty() && torus[static_cast<std::size_t>(k)];
-  }
+  bool periodic(int k) const { return !torus.empty() && torus[static_cast<std::size_t>(k)]; }
 };
 
 } // namespace zdg

@@ -22,10 +22,10 @@ struct DTypeInfo {
 };
 
 constexpr DTypeInfo kTypes[] = {
-    {DType::Bool, "|b1", "bool", 1},      {DType::U8, "|u1", "uint8", 1},
-    {DType::U16, "<u2", "uint16", 2},  {DType::U32, "<u4", "uint32", 4},
-    {DType::U64, "<u8", "uint64", 8},  {DType::I8, "|i1", "int8", 1},
-    {DType::I16, "<i2", "int16", 2},    {DType::I32, "<i4", "int32", 4},
+    {DType::Bool, "|b1", "bool", 1},  {DType::U8, "|u1", "uint8", 1},
+    {DType::U16, "<u2", "uint16", 2}, {DType::U32, "<u4", "uint32", 4},
+    {DType::U64, "<u8", "uint64", 8}, {DType::I8, "|i1", "int8", 1},
+    {DType::I16, "<i2", "int16", 2},  {DType::I32, "<i4", "int32", 4},
     {DType::I64, "<i8", "int64", 8},
 };
 
@@ -77,8 +77,10 @@ std::int64_t NpyArray::get(std::int64_t i) const {
   const unsigned char* p = bytes.data() + static_cast<std::size_t>(i) * dtype_size(dtype);
   switch (dtype) {
   case DType::Bool:
-  case DType::U8: return p[0];
-  case DType::I8: return static_cast<std::int8_t>(p[0]);
+  case DType::U8:
+    return p[0];
+  case DType::I8:
+    return static_cast<std::int8_t>(p[0]);
   case DType::U16: {
     std::uint16_t v;
     std::memcpy(&v, p, 2);
@@ -127,11 +129,13 @@ NpyArray read_npy(const std::string& path) {
   auto major = static_cast<unsigned char>(data[6]);
   std::size_t hlen = 0, hstart = 0;
   if (major == 1) {
-    hlen = static_cast<unsigned char>(data[8]) | (static_cast<std::size_t>(static_cast<unsigned char>(data[9])) << 8);
+    hlen = static_cast<unsigned char>(data[8]) |
+           (static_cast<std::size_t>(static_cast<unsigned char>(data[9])) << 8);
     hstart = 10;
   } else if (major == 2 || major == 3) {
     if (data.size() < 12) fail(path, "truncated npy header");
-    for (int k = 3; k >= 0; --k) hlen = (hlen << 8) | static_cast<unsigned char>(data[8 + static_cast<std::size_t>(k)]);
+    for (int k = 3; k >= 0; --k)
+      hlen = (hlen << 8) | static_cast<unsigned char>(data[8 + static_cast<std::size_t>(k)]);
     hstart = 12;
   } else {
     fail(path, "unsupported npy format version " + std::to_string(major));
@@ -147,8 +151,7 @@ NpyArray read_npy(const std::string& path) {
     std::string want = t.descr;
     // byte-sized types may be written with '|', '<' or '='; wider ones with '<' or '='.
     bool match = d == want || (d.size() == 3 && (d[0] == '<' || d[0] == '=' || d[0] == '|') &&
-                               d.substr(1) == want.substr(1) &&
-                               (t.size == 1 || d[0] != '|'));
+                               d.substr(1) == want.substr(1) && (t.size == 1 || d[0] != '|'));
     if (match) {
       a.dtype = t.t;
       found = true;
@@ -159,8 +162,7 @@ NpyArray read_npy(const std::string& path) {
     if (!d.empty() && d[0] == '>') {
       fail(path, "big-endian dtype '" + d + "' is not supported (use little-endian)");
     }
-    fail(path, "dtype '" + d +
-                   "' is not supported (bool, uint8/16/32/64, int8/16/32/64 only)");
+    fail(path, "dtype '" + d + "' is not supported (bool, uint8/16/32/64, int8/16/32/64 only)");
   }
   std::string fo = dict_value(path, header, "fortran_order");
   if (fo.find("True") != std::string::npos) {
@@ -204,7 +206,8 @@ void write_file_atomically(const std::string& path, const std::string& bytes) {
   namespace fs = std::filesystem;
   fs::path target(path);
   fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  fs::path tmp = dir / (".zdg_tmp_" + std::to_string(::getpid()) + "_" + target.filename().string());
+  fs::path tmp =
+      dir / (".zdg_tmp_" + std::to_string(::getpid()) + "_" + target.filename().string());
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
     if (!out) throw IoError(path + ": cannot open " + tmp.string() + " for writing");
@@ -228,7 +231,8 @@ void write_file_atomically(const std::string& path, const std::string& bytes) {
 void write_npy(const std::string& path, const NpyArray& a) {
   std::ostringstream h;
   h << "{'descr': '" << info(a.dtype).descr << "', 'fortran_order': False, 'shape': (";
-  for (std::size_t k = 0; k < a.shape.size(); ++k) h << a.shape[k] << (a.shape.size() == 1 ? "," : (k + 1 < a.shape.size() ? ", " : ""));
+  for (std::size_t k = 0; k < a.shape.size(); ++k)
+    h << a.shape[k] << (a.shape.size() == 1 ? "," : (k + 1 < a.shape.size() ? ", " : ""));
   h << "), }";
   std::string header = h.str();
   std::size_t total = 10 + header.size() + 1;
@@ -254,15 +258,32 @@ NpyArray make_npy(DType t, std::vector<std::int64_t> shape, const std::vector<st
     std::int64_t x = v[i];
     bool ok = true;
     switch (t) {
-    case DType::Bool: ok = x == 0 || x == 1; break;
-    case DType::U8: ok = x >= 0 && x <= 255; break;
-    case DType::I8: ok = x >= -128 && x <= 127; break;
-    case DType::U16: ok = x >= 0 && x <= 65535; break;
-    case DType::I16: ok = x >= -32768 && x <= 32767; break;
-    case DType::U32: ok = x >= 0 && x <= 4294967295LL; break;
-    case DType::I32: ok = x >= INT32_MIN && x <= INT32_MAX; break;
-    case DType::U64: ok = x >= 0; break;
-    case DType::I64: break;
+    case DType::Bool:
+      ok = x == 0 || x == 1;
+      break;
+    case DType::U8:
+      ok = x >= 0 && x <= 255;
+      break;
+    case DType::I8:
+      ok = x >= -128 && x <= 127;
+      break;
+    case DType::U16:
+      ok = x >= 0 && x <= 65535;
+      break;
+    case DType::I16:
+      ok = x >= -32768 && x <= 32767;
+      break;
+    case DType::U32:
+      ok = x >= 0 && x <= 4294967295LL;
+      break;
+    case DType::I32:
+      ok = x >= INT32_MIN && x <= INT32_MAX;
+      break;
+    case DType::U64:
+      ok = x >= 0;
+      break;
+    case DType::I64:
+      break;
     }
     if (!ok) throw InvalidArgument("value " + std::to_string(x) + " does not fit " + dtype_name(t));
     std::memcpy(a.bytes.data() + i * sz, &x, sz); // little-endian host

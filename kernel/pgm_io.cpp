@@ -62,7 +62,8 @@ Image<std::uint16_t> read_pgm(const std::string& path) {
   c.pos = 2;
   std::int64_t w = c.number("width"), h = c.number("height"), maxval = c.number("maxval");
   if (w < 1 || h < 1) c.fail("empty image " + std::to_string(w) + "x" + std::to_string(h));
-  if (maxval < 1 || maxval > 65535) c.fail("maxval " + std::to_string(maxval) + " not in [1, 65535]");
+  if (maxval < 1 || maxval > 65535)
+    c.fail("maxval " + std::to_string(maxval) + " not in [1, 65535]");
   Image<std::uint16_t> img(Domain({h, w}));
   if (binary) {
     if (c.pos >= data.size()) c.fail("truncated file: no pixel data");
@@ -75,16 +76,18 @@ Image<std::uint16_t> read_pgm(const std::string& path) {
     }
     for (std::int64_t i = 0; i < w * h; ++i) {
       std::size_t p = c.pos + static_cast<std::size_t>(i) * bpp;
-      std::uint16_t v = bpp == 1 ? static_cast<unsigned char>(data[p])
-                                 : static_cast<std::uint16_t>((static_cast<unsigned char>(data[p]) << 8) |
-                                                              static_cast<unsigned char>(data[p + 1]));
+      std::uint16_t v =
+          bpp == 1 ? static_cast<unsigned char>(data[p])
+                   : static_cast<std::uint16_t>((static_cast<unsigned char>(data[p]) << 8) |
+                                                static_cast<unsigned char>(data[p + 1]));
       if (v > maxval) c.fail("pixel value " + std::to_string(v) + " above maxval");
       img[i] = v;
     }
   } else {
     for (std::int64_t i = 0; i < w * h; ++i) {
       std::int64_t v = c.number("pixel value");
-      if (v > maxval) c.fail("pixel value " + std::to_string(v) + " above maxval " + std::to_string(maxval));
+      if (v > maxval)
+        c.fail("pixel value " + std::to_string(v) + " above maxval " + std::to_string(maxval));
       img[i] = static_cast<std::uint16_t>(v);
     }
   }
@@ -98,7 +101,8 @@ void write_pgm(const std::string& path, const Image<std::uint64_t>& image) {
   std::uint64_t mx = 0;
   for (auto v : image.values()) mx = std::max(mx, v);
   if (mx > 65535) {
-    throw InvalidArgument("value " + std::to_string(mx) + " does not fit a PGM (max 65535); use .npy");
+    throw InvalidArgument("value " + std::to_string(mx) +
+                          " does not fit a PGM (max 65535); use .npy");
   }
   const unsigned maxval = mx < 256 ? 255 : 65535;
   std::string out = "P5\n" + std::to_string(image.domain().extent(1)) + " " +

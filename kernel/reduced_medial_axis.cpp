@@ -32,7 +32,8 @@ std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
       if (v > BigInt(std::numeric_limits<std::int64_t>::max())) {
         throw OverflowError("reduced medial axis: ball value " + v.str() + " exceeds int64");
       }
-      balls.push_back({dom.point(static_cast<std::int64_t>(i)), v.template convert_to<std::int64_t>()});
+      balls.push_back(
+          {dom.point(static_cast<std::int64_t>(i)), v.template convert_to<std::int64_t>()});
     }
   });
   return balls;

@@ -158,12 +158,14 @@ void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, 
       const std::int64_t base = o * n * st + j0;
       for (std::int64_t x = 0; x < n; ++x) {
         const V* row = fp + base + x * st;
-        for (std::int64_t b = 0; b < bw; ++b) sc.buf[static_cast<std::size_t>(b * len + qlo + x)] = row[b];
+        for (std::int64_t b = 0; b < bw; ++b)
+          sc.buf[static_cast<std::size_t>(b * len + qlo + x)] = row[b];
       }
       if (sp != nullptr) {
         for (std::int64_t x = 0; x < n; ++x) {
           const std::int64_t* row = sp + base + x * st;
-          for (std::int64_t b = 0; b < bw; ++b) sc.sbuf[static_cast<std::size_t>(b * n + x)] = row[b];
+          for (std::int64_t b = 0; b < bw; ++b)
+            sc.sbuf[static_cast<std::size_t>(b * n + x)] = row[b];
         }
       }
       for (std::int64_t b = 0; b < bw; ++b) {
@@ -174,8 +176,8 @@ void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, 
             line[2 * n + x] = line[n + x];
           }
         }
-        envelope_line(m, line, len, qlo, qlo + n, inf, sc.out.data() + b * n,
-                      sc.arg.data() + b * n, sc.s.data(), sc.t.data());
+        envelope_line(m, line, len, qlo, qlo + n, inf, sc.out.data() + b * n, sc.arg.data() + b * n,
+                      sc.s.data(), sc.t.data());
       }
       for (std::int64_t x = 0; x < n; ++x) {
         V* row = fp + base + x * st;
@@ -280,7 +282,8 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
     }
     envelope_pass(dom, d - 1, opt.periodic(d - 1), m, f, inf, sites, threads);
   }
-  for (int a = d - 2; a >= 0; --a) envelope_pass(dom, a, opt.periodic(a), m, f, inf, sites, threads);
+  for (int a = d - 2; a >= 0; --a)
+    envelope_pass(dom, a, opt.periodic(a), m, f, inf, sites, threads);
 }
 
 } // namespace
@@ -343,9 +346,8 @@ V envelope_infinity(const EnvelopeBounds& b) {
 }
 
 template <class V>
-void separable_envelope(const Domain& dom, const TransformOptions& opt,
-                        const std::uint8_t* mask, std::vector<V>& f, const V& inf,
-                        std::vector<std::int64_t>* sites) {
+void separable_envelope(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
+                        std::vector<V>& f, const V& inf, std::vector<std::int64_t>* sites) {
   f.resize(static_cast<std::size_t>(dom.size()));
   if (sites != nullptr) sites->resize(static_cast<std::size_t>(dom.size()));
   const Metric& mt = opt.metric;
@@ -371,11 +373,10 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt,
   }
 }
 
-#define ZDG_ENGINE_INSTANTIATE(V)                                                               \
-  template V envelope_infinity<V>(const EnvelopeBounds&);                                       \
-  template void separable_envelope<V>(const Domain&, const TransformOptions&,                   \
-                                      const std::uint8_t*, std::vector<V>&, const V&,           \
-                                      std::vector<std::int64_t>*);
+#define ZDG_ENGINE_INSTANTIATE(V)                                                                  \
+  template V envelope_infinity<V>(const EnvelopeBounds&);                                          \
+  template void separable_envelope<V>(const Domain&, const TransformOptions&, const std::uint8_t*, \
+                                      std::vector<V>&, const V&, std::vector<std::int64_t>*);
 ZDG_ENGINE_INSTANTIATE(std::int32_t)
 ZDG_ENGINE_INSTANTIATE(std::int64_t)
 ZDG_ENGINE_INSTANTIATE(int128_t)

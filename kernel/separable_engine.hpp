@@ -39,9 +39,9 @@ namespace zdg::detail {
 enum class ValueWidth { I32, I64, I128, Big };
 
 struct EnvelopeBounds {
-  BigInt value_max;  // the largest finite value of a transform without weights
-  BigInt need;       // the bound on every intermediate (see above)
-  ValueWidth width;  // the narrowest engine type that holds need
+  BigInt value_max; // the largest finite value of a transform without weights
+  BigInt need;      // the bound on every intermediate (see above)
+  ValueWidth width; // the narrowest engine type that holds need
 };
 
 /// Checks the options against the domain (torus flags, p) and computes the bounds.
@@ -60,18 +60,21 @@ V envelope_infinity(const EnvelopeBounds& b);
 /// no site). sites (optional): on output the linear index of a minimising site (-1 where
 /// there is none); in value mode it is initialised here.
 template <class V>
-void separable_envelope(const Domain& dom, const TransformOptions& opt,
-                        const std::uint8_t* mask, std::vector<V>& f, const V& inf,
-                        std::vector<std::int64_t>* sites);
+void separable_envelope(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
+                        std::vector<V>& f, const V& inf, std::vector<std::int64_t>* sites);
 
 /// Calls fn(std::type_identity<V>{}) with the engine type of width w.
 template <class Fn>
 decltype(auto) with_value_type(ValueWidth w, Fn&& fn) {
   switch (w) {
-  case ValueWidth::I32: return fn(std::type_identity<std::int32_t>{});
-  case ValueWidth::I64: return fn(std::type_identity<std::int64_t>{});
-  case ValueWidth::I128: return fn(std::type_identity<int128_t>{});
-  default: return fn(std::type_identity<BigInt>{});
+  case ValueWidth::I32:
+    return fn(std::type_identity<std::int32_t>{});
+  case ValueWidth::I64:
+    return fn(std::type_identity<std::int64_t>{});
+  case ValueWidth::I128:
+    return fn(std::type_identity<int128_t>{});
+  default:
+    return fn(std::type_identity<BigInt>{});
   }
 }
 
@@ -89,10 +92,10 @@ BigInt engine_to_bigint(const V& v) {
 template <class Fn>
 void parallel_chunks(std::int64_t n, unsigned threads, Fn&& fn);
 
-#define ZDG_ENGINE_EXTERN(V)                                                                    \
-  extern template V envelope_infinity<V>(const EnvelopeBounds&);                               \
-  extern template void separable_envelope<V>(const Domain&, const TransformOptions&,           \
-                                             const std::uint8_t*, std::vector<V>&, const V&,    \
+#define ZDG_ENGINE_EXTERN(V)                                                                       \
+  extern template V envelope_infinity<V>(const EnvelopeBounds&);                                   \
+  extern template void separable_envelope<V>(const Domain&, const TransformOptions&,               \
+                                             const std::uint8_t*, std::vector<V>&, const V&,       \
                                              std::vector<std::int64_t>*);
 ZDG_ENGINE_EXTERN(std::int32_t)
 ZDG_ENGINE_EXTERN(std::int64_t)

@@ -86,12 +86,16 @@ void write_vol(const std::string& path, const Image<std::uint64_t>& image) {
   std::string out;
   const char* axis[] = {"Z", "Y", "X"};
   for (int k = 2; k >= 0; --k) {
-    out += std::string("Center-") + axis[k] + ": " + std::to_string(d.lower(k) + (d.extent(k) - 1) / 2) + "\n";
+    out += std::string("Center-") + axis[k] + ": " +
+           std::to_string(d.lower(k) + (d.extent(k) - 1) / 2) + "\n";
   }
-  for (int k = 2; k >= 0; --k) out += std::string(axis[k]) + ": " + std::to_string(d.extent(k)) + "\n";
+  for (int k = 2; k >= 0; --k)
+    out += std::string(axis[k]) + ": " + std::to_string(d.extent(k)) + "\n";
   out += "Voxel-Size: 1\nAlpha-Color: 0\nVoxel-Endian: 0\nInt-Endian: 0123\nVersion: 2\n.\n";
   for (auto v : image.values()) {
-    if (v > 255) throw InvalidArgument("value " + std::to_string(v) + " does not fit a vol voxel (max 255); use .npy");
+    if (v > 255)
+      throw InvalidArgument("value " + std::to_string(v) +
+                            " does not fit a vol voxel (max 255); use .npy");
     out.push_back(static_cast<char>(v));
   }
   write_file_atomically(path, out);

@@ -10,8 +10,8 @@
 #include "kernel/reduced_medial_axis.hpp"
 #include "kernel/reverse_distance_transform.hpp"
 #include "kernel/separable_engine.hpp"
-#include "kernel/voronoi_map.hpp"
 #include "kernel/vol_io.hpp"
+#include "kernel/voronoi_map.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -67,10 +67,12 @@ Image<std::int64_t> read_values(const TransformArgs& a) {
     img = npy_to_int64(read_npy(a.input));
   } else if (e == ".pgm") {
     auto p = read_pgm(a.input);
-    img = Image<std::int64_t>(p.domain(), std::vector<std::int64_t>(p.values().begin(), p.values().end()));
+    img = Image<std::int64_t>(p.domain(),
+                              std::vector<std::int64_t>(p.values().begin(), p.values().end()));
   } else if (e == ".vol") {
     auto v = read_vol(a.input);
-    img = Image<std::int64_t>(v.domain(), std::vector<std::int64_t>(v.values().begin(), v.values().end()));
+    img = Image<std::int64_t>(v.domain(),
+                              std::vector<std::int64_t>(v.values().begin(), v.values().end()));
   } else {
     throw IoError(a.input + ": unknown image format '" + e + "' (.npy, .pgm or .vol)");
   }
@@ -189,11 +191,16 @@ void report(const TransformArgs& a, const std::string& cmd, const Domain& dom,
     for (int k = 0; k < dom.dim(); ++k) {
       if (opt.periodic(k)) torus.push_back(k);
     }
-    nlohmann::json j = {{"command", cmd},          {"input", a.input},
-                        {"output", a.output},      {"shape", shape_of(dom)},
-                        {"lower", dom.lowers()},   {"metric", opt.metric.name()},
-                        {"torus", torus},          {"dtype", dtype},
-                        {"max_value", max_value},  {"seconds", seconds},
+    nlohmann::json j = {{"command", cmd},
+                        {"input", a.input},
+                        {"output", a.output},
+                        {"shape", shape_of(dom)},
+                        {"lower", dom.lowers()},
+                        {"metric", opt.metric.name()},
+                        {"torus", torus},
+                        {"dtype", dtype},
+                        {"max_value", max_value},
+                        {"seconds", seconds},
                         {"threads", threads_used(opt.threads)}};
     for (auto& [k, v] : extra.items()) j[k] = v;
     print_json(j);
@@ -286,8 +293,8 @@ void run_rdt(const TransformArgs& a) {
   double secs = since(t0);
   std::uint64_t count = 0;
   for (auto x : r.values()) count += x;
-  write_unsigned(a.output, r.domain(), std::vector<std::uint64_t>(r.values().begin(), r.values().end()),
-                 DType::U8);
+  write_unsigned(a.output, r.domain(),
+                 std::vector<std::uint64_t>(r.values().begin(), r.values().end()), DType::U8);
   report(a, "rdt", r.domain(), opt, "uint8", count > 0 ? "1" : "0", secs,
          {{"points", std::to_string(count)}});
 }
@@ -308,9 +315,9 @@ void run_rma(const TransformArgs& a) {
     rows.push_back(b.value);
     mx = std::max(mx, b.value);
   }
-  write_npy(a.output, make_npy<std::int64_t>({static_cast<std::int64_t>(balls.size()),
-                                              static_cast<std::int64_t>(d + 1)},
-                                             rows));
+  write_npy(a.output,
+            make_npy<std::int64_t>(
+                {static_cast<std::int64_t>(balls.size()), static_cast<std::int64_t>(d + 1)}, rows));
   report(a, "rma", mask.domain(), opt, "int64", std::to_string(mx), secs,
          {{"balls", balls.size()}});
 }
@@ -318,8 +325,8 @@ void run_rma(const TransformArgs& a) {
 } // namespace
 
 void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
-  auto* tr = app.add_subcommand(
-      "transform", "separable exact l_p transforms of n-D images (.npy, .pgm, .vol)");
+  auto* tr = app.add_subcommand("transform",
+                                "separable exact l_p transforms of n-D images (.npy, .pgm, .vol)");
   tr->require_subcommand(1);
   struct Spec {
     const char* name;
@@ -327,13 +334,15 @@ void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
     void (*run)(const TransformArgs&);
   };
   static const Spec specs[] = {
-      {"dt", "distance transform: d^p to the nearest 0 (squared for l2, d for linf); output the "
-             "narrowest unsigned dtype holding the largest possible value",
+      {"dt",
+       "distance transform: d^p to the nearest 0 (squared for l2, d for linf); output the "
+       "narrowest unsigned dtype holding the largest possible value",
        run_dt},
       {"voronoi", "Voronoi map: coordinates of a nearest background point, int64 (*dims, d)",
        run_voronoi},
-      {"power", "power map of the sites v > 0 (v = radius^p): coordinates of the site "
-                "minimising d^p - v, int64 (*dims, d)",
+      {"power",
+       "power map of the sites v > 0 (v = radius^p): coordinates of the site "
+       "minimising d^p - v, int64 (*dims, d)",
        run_power},
       {"rdt", "reverse distance transform: uint8 union of the open balls d(c, y)^p < v(c)",
        run_rdt},
@@ -347,7 +356,8 @@ void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
     sub->add_option("--metric", args->metric, "l1, l2, linf or lP (P >= 1)")->capture_default_str();
     sub->add_option("--torus", args->torus, "periodic axes: comma list (0,2) or 'all'");
     sub->add_option("--lower", args->lower, "lower bounds of the domain, comma list (default 0)");
-    sub->add_option("--threads", args->threads, "worker threads (0 = all cores)")->capture_default_str();
+    sub->add_option("--threads", args->threads, "worker threads (0 = all cores)")
+        ->capture_default_str();
     sub->add_flag("--json", args->json, "print a JSON summary on stdout");
     auto run = s.run;
     sub->callback([args, run] { run(*args); });

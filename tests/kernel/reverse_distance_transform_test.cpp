@@ -51,8 +51,8 @@ TEST(ReverseDistanceTransform, WorkedExample) {
   Image<std::int64_t> v(Domain({5, 5}), std::int64_t{0});
   v.values()[12] = 5;
   auto r = reverse_distance_transform(v, {});
-  EXPECT_EQ(r.values(), (std::vector<std::uint8_t>{0, 0, 1, 0, 0, 0, 1, 1, 1, 0, 1, 1, 1, 1, 1,
-                                                   0, 1, 1, 1, 0, 0, 0, 1, 0, 0}));
+  EXPECT_EQ(r.values(), (std::vector<std::uint8_t>{0, 0, 1, 0, 0, 0, 1, 1, 1, 0, 1, 1, 1,
+                                                   1, 1, 0, 1, 1, 1, 0, 0, 0, 1, 0, 0}));
   Image<std::int64_t> none(Domain({3}), std::int64_t{0});
   EXPECT_EQ(reverse_distance_transform(none, {}).values(), (std::vector<std::uint8_t>{0, 0, 0}));
   none.values()[1] = -1;

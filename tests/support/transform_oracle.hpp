@@ -42,7 +42,9 @@ struct TransformCase {
 /// finite_p: no linf.
 inline TransformCase random_transform_case(bool finite_p = false) {
   std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
-  auto pick = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1)); };
+  auto pick = [&](int lo, int hi) {
+    return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1));
+  };
   int d = pick(1, 4);
   const int max_extent[] = {0, 40, 16, 8, 5};
   std::vector<std::int64_t> ext, low;
