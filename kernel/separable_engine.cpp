@@ -85,48 +85,54 @@ struct LineMetric {
 };
 
 // Lower envelope of g_e(t) = f[e] + |t - e|^p over positions e in [0, len) (f[e] == inf: no
-// function), evaluated at t in [qlo, qhi): g[t - qlo] and the winning position arg[t - qlo]
-// (-1 when there is no function at all). s, t: scratch of size len.
-template <int K, class V>
+// function), evaluated at t in [qlo, qhi): g[t - qlo] and, when WithArg, the winning
+// position arg[t - qlo] (-1 when there is no function at all). g may alias f (the query
+// reads only the stack). s, t, fs: scratch of size len.
+template <bool WithArg, int K, class V>
 void envelope_line(const LineMetric<K, V>& m, const V* f, std::int64_t len, std::int64_t qlo,
                    std::int64_t qhi, const V& inf, V* g, std::int64_t* arg, std::int64_t* s,
-                   std::int64_t* t) {
+                   std::int64_t* t, V* fs) {
   std::int64_t q = -1;
   for (std::int64_t u = 0; u < len; ++u) {
-    const V& fu = f[u];
+    const V fu = f[u];
     if (fu == inf) continue;
-    while (q >= 0 && m.eval(f[s[q]], t[q] - s[q]) > m.eval(fu, t[q] - u)) --q;
+    while (q >= 0 && m.eval(fs[q], t[q] - s[q]) > m.eval(fu, t[q] - u)) --q;
     if (q < 0) {
       q = 0;
       s[0] = u;
       t[0] = qlo;
+      fs[0] = fu;
     } else {
-      std::int64_t w = 1 + m.sep(s[q], f[s[q]], u, fu, t[q], qhi);
+      std::int64_t w = 1 + m.sep(s[q], fs[q], u, fu, t[q], qhi);
       if (w < qhi) {
         ++q;
         s[q] = u;
         t[q] = w;
+        fs[q] = fu;
       }
     }
   }
   if (q < 0) {
     for (std::int64_t x = qlo; x < qhi; ++x) {
       g[x - qlo] = inf;
-      arg[x - qlo] = -1;
+      if constexpr (WithArg) arg[x - qlo] = -1;
     }
     return;
   }
-  std::int64_t k = 0;
-  for (std::int64_t x = qlo; x < qhi; ++x) {
-    while (k < q && t[k + 1] <= x) ++k;
-    g[x - qlo] = m.eval(f[s[k]], x - s[k]);
-    arg[x - qlo] = s[k];
+  t[q + 1] = qhi;
+  for (std::int64_t k = 0; k <= q; ++k) {
+    const std::int64_t sk = s[k];
+    const V fk = fs[k];
+    for (std::int64_t x = t[k]; x < t[k + 1]; ++x) {
+      g[x - qlo] = m.eval(fk, x - sk);
+      if constexpr (WithArg) arg[x - qlo] = sk;
+    }
   }
 }
 
 template <class V>
 struct Scratch {
-  std::vector<V> buf, out;
+  std::vector<V> buf, fs;
   std::vector<std::int64_t> sbuf, arg, s, t;
 };
 
@@ -146,20 +152,25 @@ void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, 
   parallel_chunks(outer * nblocks, threads, [&](std::int64_t begin, std::int64_t end) {
     Scratch<V> sc;
     const auto ub = static_cast<std::size_t>(bw_max);
-    sc.buf.assign(ub * static_cast<std::size_t>(len), V{});
-    sc.out.assign(ub * static_cast<std::size_t>(n), V{});
-    sc.arg.assign(ub * static_cast<std::size_t>(n), 0);
-    if (sp != nullptr) sc.sbuf.assign(ub * static_cast<std::size_t>(n), 0);
-    sc.s.assign(static_cast<std::size_t>(len), 0);
-    sc.t.assign(static_cast<std::size_t>(len), 0);
+    const auto ulen = static_cast<std::size_t>(len), un = static_cast<std::size_t>(n);
+    sc.buf.assign(ub * ulen, V{});
+    if (sp != nullptr) {
+      sc.sbuf.assign(ub * un, 0);
+      sc.arg.assign(ub * un, 0);
+    }
+    sc.s.assign(ulen + 1, 0);
+    sc.t.assign(ulen + 1, 0);
+    sc.fs.assign(ulen + 1, V{});
     for (std::int64_t unit = begin; unit < end; ++unit) {
       const std::int64_t o = unit / nblocks, j0 = (unit % nblocks) * bw_max;
       const std::int64_t bw = std::min(bw_max, st - j0);
       const std::int64_t base = o * n * st + j0;
+      V* bp = sc.buf.data();
+      constexpr std::int64_t kAhead = 24;
       for (std::int64_t x = 0; x < n; ++x) {
+        if (st > 1 && x + kAhead < n) __builtin_prefetch(fp + base + (x + kAhead) * st);
         const V* row = fp + base + x * st;
-        for (std::int64_t b = 0; b < bw; ++b)
-          sc.buf[static_cast<std::size_t>(b * len + qlo + x)] = row[b];
+        for (std::int64_t b = 0; b < bw; ++b) bp[b * len + qlo + x] = row[b];
       }
       if (sp != nullptr) {
         for (std::int64_t x = 0; x < n; ++x) {
@@ -169,19 +180,24 @@ void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, 
         }
       }
       for (std::int64_t b = 0; b < bw; ++b) {
-        V* line = sc.buf.data() + b * len;
+        V* line = bp + b * len;
         if (periodic) {
           for (std::int64_t x = 0; x < n; ++x) {
             line[x] = line[n + x];
             line[2 * n + x] = line[n + x];
           }
         }
-        envelope_line(m, line, len, qlo, qlo + n, inf, sc.out.data() + b * n, sc.arg.data() + b * n,
-                      sc.s.data(), sc.t.data());
+        if (sp != nullptr) {
+          envelope_line<true>(m, line, len, qlo, qlo + n, inf, line, sc.arg.data() + b * n,
+                              sc.s.data(), sc.t.data(), sc.fs.data());
+        } else {
+          envelope_line<false>(m, line, len, qlo, qlo + n, inf, line, nullptr, sc.s.data(),
+                               sc.t.data(), sc.fs.data());
+        }
       }
       for (std::int64_t x = 0; x < n; ++x) {
         V* row = fp + base + x * st;
-        for (std::int64_t b = 0; b < bw; ++b) row[b] = sc.out[static_cast<std::size_t>(b * n + x)];
+        for (std::int64_t b = 0; b < bw; ++b) row[b] = bp[b * len + x];
       }
       if (sp != nullptr) {
         for (std::int64_t x = 0; x < n; ++x) {
