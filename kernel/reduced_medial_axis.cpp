@@ -1,6 +1,7 @@
 #include "kernel/reduced_medial_axis.hpp"
 
 #include "kernel/distance_transform.hpp"
+#include "kernel/linf_covering.hpp"
 #include "kernel/power_map.hpp"
 #include "kernel/separable_engine.hpp"
 
@@ -8,7 +9,6 @@ namespace zdg {
 
 std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
                                             const TransformOptions& opt) {
-  detail::require_finite_p(opt, "reduced medial axis");
   const Domain& dom = shape.domain();
   auto dt_bounds = detail::envelope_bounds(dom, opt, BigInt(0));
   require_background(shape, opt);
@@ -18,12 +18,26 @@ std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
     V inf = detail::envelope_infinity<V>(bounds);
     std::vector<V> dt;
     detail::separable_envelope<V>(dom, opt, shape.values().data(), dt, inf, nullptr);
-    std::vector<V> f(dt.size());
-    for (std::size_t i = 0; i < f.size(); ++i) f[i] = dt[i] > V(0) ? V(-dt[i]) : inf;
     std::vector<std::int64_t> site;
-    detail::separable_envelope<V>(dom, opt, nullptr, f, inf, &site);
+    if (opt.metric.is_inf()) {
+      // l_inf: the centre of the largest cube covering each point (DT values fit int64:
+      // they are at most the largest extent).
+      std::vector<std::int64_t> r(dt.size());
+      for (std::size_t i = 0; i < r.size(); ++i) {
+        if constexpr (std::is_same_v<V, BigInt>) {
+          r[i] = dt[i].template convert_to<std::int64_t>();
+        } else {
+          r[i] = static_cast<std::int64_t>(dt[i]);
+        }
+      }
+      detail::linf_covering(dom, opt, r, &site);
+    } else {
+      std::vector<V> f(dt.size());
+      for (std::size_t i = 0; i < f.size(); ++i) f[i] = dt[i] > V(0) ? V(-dt[i]) : inf;
+      detail::separable_envelope<V>(dom, opt, nullptr, f, inf, &site);
+    }
     std::vector<std::uint8_t> kept(dt.size(), 0);
-    for (std::size_t i = 0; i < f.size(); ++i) {
+    for (std::size_t i = 0; i < dt.size(); ++i) {
       if (shape.values()[i] != 0) kept[static_cast<std::size_t>(site[i])] = 1;
     }
     for (std::size_t i = 0; i < kept.size(); ++i) {

@@ -1,4 +1,4 @@
-// Reduced discrete medial axis of a binary shape in the l_p metrics (p finite), exact.
+// Reduced discrete medial axis of a binary shape in the l_p metrics, exact.
 //
 // The distance transform gives every shape point c the largest open ball
 // B(c) = { y : d_p(c, y)^p < DT(c) } free of background. The reduced discrete medial axis
@@ -9,8 +9,10 @@
 // DT centres; the union of the balls is exactly the shape (tests check both).
 //
 // Cost: one distance transform and one power map, O(N d) (l_1, l_2), O(N d log n) otherwise;
-// width chosen at entry (the weights are at most the largest DT value). l_inf is rejected
-// (power map not separable); no background: InvalidArgument. A value that does not fit int64
+// width chosen at entry (the weights are at most the largest DT value). For l_inf, where the
+// power map is not separable, a ball is kept when it is the (deterministic) largest DT cube
+// covering some shape point (kernel/linf_covering.hpp): same guarantees (DT centres, union =
+// shape). No background: InvalidArgument. A value that does not fit int64
 // (p huge) is an OverflowError.
 #pragma once
 

@@ -1,5 +1,6 @@
 #include "kernel/reverse_distance_transform.hpp"
 
+#include "kernel/linf_covering.hpp"
 #include "kernel/power_map.hpp"
 #include "kernel/separable_engine.hpp"
 
@@ -9,7 +10,6 @@ namespace zdg {
 
 Image<std::uint8_t> reverse_distance_transform(const Image<std::int64_t>& values,
                                                const TransformOptions& opt) {
-  detail::require_finite_p(opt, "reverse distance transform");
   const Domain& dom = values.domain();
   Image<std::uint8_t> out(dom, std::uint8_t{0});
   const auto& v = values.values();
@@ -18,6 +18,13 @@ Image<std::uint8_t> reverse_distance_transform(const Image<std::int64_t>& values
     return out;
   }
   std::int64_t wmax = detail::check_weights(values);
+  if (opt.metric.is_inf()) {
+    detail::envelope_bounds(dom, opt, BigInt(0)); // validates the options
+    std::vector<std::int64_t> r = v;
+    detail::linf_covering(dom, opt, r, nullptr);
+    for (std::size_t i = 0; i < r.size(); ++i) out.values()[i] = r[i] > 0 ? 1 : 0;
+    return out;
+  }
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(wmax));
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
     V inf = detail::envelope_infinity<V>(bounds);

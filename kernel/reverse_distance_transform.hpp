@@ -6,7 +6,9 @@
 // shape exactly: y is covered iff min_c (d_p(c, y)^p - v(c)) < 0, the sign of the power map
 // (Coeurjolly and Montanvert, IEEE PAMI 29(3), 2007).
 //
-// Cost, width, torus and thread behaviour: those of kernel/power_map.hpp (l_inf rejected).
+// Cost, width, torus and thread behaviour: those of kernel/power_map.hpp. For l_inf (cubes
+// d_inf < v) the sign of the power is not separable; the union is read from the largest
+// covering cube instead (kernel/linf_covering.hpp, O(N d)).
 // Negative values: InvalidArgument; an image without any ball gives the empty set.
 #pragma once
 

@@ -17,7 +17,7 @@ TYPED_TEST_SUITE(ReverseDistanceTransformTyped, test::TowerTypes, test::TowerNam
 // the background; each shape point lies in its own ball).
 TYPED_TEST(ReverseDistanceTransformTyped, ReverseOfTheDistanceTransformIsTheShape) {
   test::check_property([] {
-    auto c = test::random_transform_case(true);
+    auto c = test::random_transform_case();
     c.opt.min_engine_bits = test::engine_bits<TypeParam>();
     auto dt = distance_transform<std::int64_t>(c.shape, c.opt);
     auto rdt = reverse_distance_transform(dt, c.opt);
@@ -28,7 +28,7 @@ TYPED_TEST(ReverseDistanceTransformTyped, ReverseOfTheDistanceTransformIsTheShap
 // Oracle: y is in the union iff some ball value v(c) > d(c, y)^p (brute force).
 TYPED_TEST(ReverseDistanceTransformTyped, EqualsUnionOfBalls) {
   test::check_property([] {
-    auto c = test::random_transform_case(true);
+    auto c = test::random_transform_case();
     c.opt.min_engine_bits = test::engine_bits<TypeParam>();
     const Domain& dom = c.shape.domain();
     std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());

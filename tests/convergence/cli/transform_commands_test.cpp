@@ -128,7 +128,7 @@ TEST(TransformCommands, ErrorsExitTwoAndLeaveNoOutput) {
       {"transform dt " + f("in.npy") + " -o " + f("out.npy") + " --lower 1,2,3", "--lower"},
       {"transform dt " + f("in.npy") + " -o " + f("in.npy"), "refusing to overwrite"},
       {"transform dt " + f("missing.npy") + " -o " + f("out.npy"), "missing.npy"},
-      {"transform rma " + f("in.npy") + " -o " + f("out.npy") + " --metric linf", "linf"},
+      {"transform power " + f("in.npy") + " -o " + f("out.npy") + " --metric linf", "linf"},
       {"transform voronoi " + f("in.npy") + " -o " + f("out.pgm"), ".npy"},
   };
   for (const auto& c : cases) {
