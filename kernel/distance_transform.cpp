@@ -61,9 +61,16 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
   }
   Image<T> out(dom);
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
-    std::vector<V> f;
     V inf = detail::envelope_infinity<V>(bounds);
-    detail::separable_envelope<V>(dom, opt, shape.values().data(), f, inf, nullptr);
+    if constexpr (std::is_integral_v<V> && std::is_integral_v<T> && sizeof(V) == sizeof(T)) {
+      // Same width: work in the output buffer (signed and unsigned variants may alias; the
+      // final values are >= 0 and finite since there is background).
+      detail::separable_envelope<V>(dom, opt, shape.values().data(),
+                                    reinterpret_cast<V*>(out.values().data()), inf, nullptr);
+      return;
+    }
+    std::vector<V> f(static_cast<std::size_t>(dom.size()));
+    detail::separable_envelope<V>(dom, opt, shape.values().data(), f.data(), inf, nullptr);
     T* o = out.values().data();
     const V* fp = f.data();
     detail::parallel_chunks(dom.size(), detail::resolve_threads(opt.threads, dom.size()),

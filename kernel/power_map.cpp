@@ -51,7 +51,7 @@ PowerMap power_map(const Image<std::int64_t>& weights, const TransformOptions& o
       std::int64_t w = weights[i];
       f[static_cast<std::size_t>(i)] = w > 0 ? V(-V(w)) : inf;
     }
-    detail::separable_envelope<V>(dom, opt, nullptr, f, inf, &map.site);
+    detail::separable_envelope<V>(dom, opt, nullptr, f.data(), inf, &map.site);
     for (std::size_t i = 0; i < f.size(); ++i) map.negative[i] = f[i] < V(0) ? 1 : 0;
   });
   return map;

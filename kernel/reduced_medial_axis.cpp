@@ -16,8 +16,8 @@ std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
   std::vector<MedialBall> balls;
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
     V inf = detail::envelope_infinity<V>(bounds);
-    std::vector<V> dt;
-    detail::separable_envelope<V>(dom, opt, shape.values().data(), dt, inf, nullptr);
+    std::vector<V> dt(static_cast<std::size_t>(dom.size()));
+    detail::separable_envelope<V>(dom, opt, shape.values().data(), dt.data(), inf, nullptr);
     std::vector<std::int64_t> site;
     if (opt.metric.is_inf()) {
       // l_inf: the centre of the largest cube covering each point (DT values fit int64:
@@ -34,7 +34,7 @@ std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
     } else {
       std::vector<V> f(dt.size());
       for (std::size_t i = 0; i < f.size(); ++i) f[i] = dt[i] > V(0) ? V(-dt[i]) : inf;
-      detail::separable_envelope<V>(dom, opt, nullptr, f, inf, &site);
+      detail::separable_envelope<V>(dom, opt, nullptr, f.data(), inf, &site);
     }
     std::vector<std::uint8_t> kept(dt.size(), 0);
     for (std::size_t i = 0; i < dt.size(); ++i) {

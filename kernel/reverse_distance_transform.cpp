@@ -30,7 +30,7 @@ Image<std::uint8_t> reverse_distance_transform(const Image<std::int64_t>& values
     V inf = detail::envelope_infinity<V>(bounds);
     std::vector<V> f(static_cast<std::size_t>(dom.size()));
     for (std::size_t i = 0; i < f.size(); ++i) f[i] = v[i] > 0 ? V(-V(v[i])) : inf;
-    detail::separable_envelope<V>(dom, opt, nullptr, f, inf, nullptr);
+    detail::separable_envelope<V>(dom, opt, nullptr, f.data(), inf, nullptr);
     for (std::size_t i = 0; i < f.size(); ++i) out.values()[i] = f[i] < V(0) ? 1 : 0;
   });
   return out;

@@ -138,16 +138,15 @@ struct Scratch {
 
 // One pass along axis a: every line of that axis becomes the lower envelope of its values.
 template <int K, class V>
-void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, V>& m,
-                   std::vector<V>& f, const V& inf, std::vector<std::int64_t>* sites,
-                   unsigned threads) {
+void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, V>& m, V* f,
+                   const V& inf, std::vector<std::int64_t>* sites, unsigned threads) {
   const std::int64_t n = dom.extent(a), st = dom.stride(a);
   const std::int64_t outer = dom.size() / (n * st);
   constexpr std::int64_t kBlock = sizeof(V) <= 4 ? 16 : 8;
   const std::int64_t bw_max = std::min(st, kBlock);
   const std::int64_t nblocks = (st + bw_max - 1) / bw_max;
   const std::int64_t len = periodic ? 3 * n : n, qlo = periodic ? n : 0;
-  V* fp = f.data();
+  V* fp = f;
   std::int64_t* sp = sites != nullptr ? sites->data() : nullptr;
   parallel_chunks(outer * nblocks, threads, [&](std::int64_t begin, std::int64_t end) {
     Scratch<V> sc;
@@ -216,11 +215,11 @@ void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, 
 // the nearest point with mask == 0 (two scans), turned into its metric length.
 template <int K, class V>
 void mask_pass(const Domain& dom, bool periodic, const LineMetric<K, V>& m,
-               const std::uint8_t* mask, std::vector<V>& f, const V& inf,
-               std::vector<std::int64_t>* sites, unsigned threads) {
+               const std::uint8_t* mask, V* f, const V& inf, std::vector<std::int64_t>* sites,
+               unsigned threads) {
   const int a = dom.dim() - 1;
   const std::int64_t n = dom.extent(a), lines = dom.size() / n;
-  V* fp = f.data();
+  V* fp = f;
   std::int64_t* sp = sites != nullptr ? sites->data() : nullptr;
   const V zero{};
   parallel_chunks(lines, threads, [&](std::int64_t begin, std::int64_t end) {
@@ -282,9 +281,8 @@ void mask_pass(const Domain& dom, bool periodic, const LineMetric<K, V>& m,
 }
 
 template <int K, class V>
-void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
-                std::vector<V>& f, const V& inf, std::vector<std::int64_t>* sites,
-                const std::vector<V>& pw) {
+void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask, V* f,
+                const V& inf, std::vector<std::int64_t>* sites, const std::vector<V>& pw) {
   LineMetric<K, V> m;
   m.pw = pw.data();
   const unsigned threads = resolve_threads(opt.threads, dom.size());
@@ -363,8 +361,7 @@ V envelope_infinity(const EnvelopeBounds& b) {
 
 template <class V>
 void separable_envelope(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
-                        std::vector<V>& f, const V& inf, std::vector<std::int64_t>* sites) {
-  f.resize(static_cast<std::size_t>(dom.size()));
+                        V* f, const V& inf, std::vector<std::int64_t>* sites) {
   if (sites != nullptr) sites->resize(static_cast<std::size_t>(dom.size()));
   const Metric& mt = opt.metric;
   std::vector<V> pw;
@@ -392,7 +389,7 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt, const st
 #define ZDG_ENGINE_INSTANTIATE(V)                                                                  \
   template V envelope_infinity<V>(const EnvelopeBounds&);                                          \
   template void separable_envelope<V>(const Domain&, const TransformOptions&, const std::uint8_t*, \
-                                      std::vector<V>&, const V&, std::vector<std::int64_t>*);
+                                      V*, const V&, std::vector<std::int64_t>*);
 ZDG_ENGINE_INSTANTIATE(std::int32_t)
 ZDG_ENGINE_INSTANTIATE(std::int64_t)
 ZDG_ENGINE_INSTANTIATE(int128_t)

@@ -55,13 +55,13 @@ unsigned resolve_threads(unsigned requested, std::int64_t n);
 template <class V>
 V envelope_infinity(const EnvelopeBounds& b);
 
-/// Runs the passes in place on f (size N). mask != nullptr: f is overwritten with the
+/// Runs the passes in place on f[0, N). mask != nullptr: f is overwritten with the
 /// transform of the sites {mask == 0} (all of weight 0). Otherwise f holds F_0 (inf where
 /// no site). sites (optional): on output the linear index of a minimising site (-1 where
 /// there is none); in value mode it is initialised here.
 template <class V>
 void separable_envelope(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
-                        std::vector<V>& f, const V& inf, std::vector<std::int64_t>* sites);
+                        V* f, const V& inf, std::vector<std::int64_t>* sites);
 
 /// Calls fn(std::type_identity<V>{}) with the engine type of width w.
 template <class Fn>
@@ -95,7 +95,7 @@ void parallel_chunks(std::int64_t n, unsigned threads, Fn&& fn);
 #define ZDG_ENGINE_EXTERN(V)                                                                       \
   extern template V envelope_infinity<V>(const EnvelopeBounds&);                                   \
   extern template void separable_envelope<V>(const Domain&, const TransformOptions&,               \
-                                             const std::uint8_t*, std::vector<V>&, const V&,       \
+                                             const std::uint8_t*, V*, const V&,                    \
                                              std::vector<std::int64_t>*);
 ZDG_ENGINE_EXTERN(std::int32_t)
 ZDG_ENGINE_EXTERN(std::int64_t)

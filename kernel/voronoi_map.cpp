@@ -11,9 +11,9 @@ VoronoiMap voronoi_map(const Image<std::uint8_t>& shape, const TransformOptions&
   require_background(shape, opt);
   VoronoiMap map{dom, {}};
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
-    std::vector<V> f;
+    std::vector<V> f(static_cast<std::size_t>(dom.size()));
     V inf = detail::envelope_infinity<V>(bounds);
-    detail::separable_envelope<V>(dom, opt, shape.values().data(), f, inf, &map.site);
+    detail::separable_envelope<V>(dom, opt, shape.values().data(), f.data(), inf, &map.site);
   });
   return map;
 }
