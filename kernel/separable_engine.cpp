@@ -28,12 +28,13 @@ struct LineMetric {
   const V* pw = nullptr; // t -> t^p for kLp
 
   V eval(const V& f, std::int64_t dx) const {
+    if constexpr (K == kL2) {
+      V d = small<V>(dx); // the square needs no absolute value
+      return f + d * d;
+    }
     if (dx < 0) dx = -dx;
     if constexpr (K == kL1) {
       return f + small<V>(dx);
-    } else if constexpr (K == kL2) {
-      V d = small<V>(dx);
-      return f + d * d;
     } else if constexpr (K == kLinf) {
       V d = small<V>(dx);
       return f < d ? d : f;
