@@ -76,9 +76,23 @@ inline std::int64_t axis_difference(const Domain& dom, const TransformOptions& o
 }
 
 /// d_p(a, b)^p (d_inf for linf) between points of linear indices i and j, in type I.
+/// The points of dom, cached (the oracles ask for them N^2 times).
+inline const std::vector<std::vector<std::int64_t>>& cached_points(const Domain& dom) {
+  static thread_local Domain cached;
+  static thread_local std::vector<std::vector<std::int64_t>> pts;
+  if (!(cached == dom) || static_cast<std::int64_t>(pts.size()) != dom.size()) {
+    cached = dom;
+    pts.clear();
+    for (std::int64_t i = 0; i < dom.size(); ++i) pts.push_back(dom.point(i));
+  }
+  return pts;
+}
+
 template <class I>
 I metric_length(const Domain& dom, const TransformOptions& opt, std::int64_t i, std::int64_t j) {
-  auto a = dom.point(i), b = dom.point(j);
+  const auto& pts = cached_points(dom);
+  const auto& a = pts[static_cast<std::size_t>(i)];
+  const auto& b = pts[static_cast<std::size_t>(j)];
   I r = 0;
   for (int k = 0; k < dom.dim(); ++k) {
     std::int64_t t = axis_difference(dom, opt, k, a[static_cast<std::size_t>(k)],
