@@ -1,6 +1,7 @@
 #include "kernel/separable_engine.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -23,9 +24,20 @@ V floor_div_pos(const V& a, const V& b) {
   return q;
 }
 
+template <class V>
+double to_double(const V& v) {
+  if constexpr (std::is_same_v<V, BigInt>) {
+    return v.template convert_to<double>();
+  } else {
+    return static_cast<double>(v);
+  }
+}
+
 template <int K, class V>
 struct LineMetric {
   const V* pw = nullptr; // t -> t^p for kLp
+  int p = 2;
+  double inv_pow2 = 1; // 2^-(p-2)
 
   V eval(const V& f, std::int64_t dx) const {
     if constexpr (K == kL2) {
@@ -64,7 +76,37 @@ struct LineMetric {
         r = a < mid ? a : mid;
       }
     } else {
-      std::int64_t a = lo, b = hi; // g_i wins at a; b is "u wins" (sentinel)
+      // Exact search for the last t where i wins, started from a floating-point guess (a
+      // Newton step from the midpoint; it only chooses where to look, every decision is an
+      // exact integer comparison): gallop from the guess, then bisect.
+      auto wins = [&](std::int64_t x) { return !(eval(fu, x - u) < eval(fi, x - i)); };
+      // h(t) = g_u(t) - g_i(t) has slope -2 p ((u - i) / 2)^(p - 1) at the midpoint.
+      const double slope = p * to_double(pw[u - i]) * inv_pow2 / static_cast<double>(u - i);
+      double guess = 0.5 * static_cast<double>(i + u) + to_double(fu - fi) / slope;
+      std::int64_t x0 = lo;
+      if (std::isfinite(guess)) {
+        x0 = guess <= static_cast<double>(lo)       ? lo
+             : guess >= static_cast<double>(hi - 1) ? hi - 1
+                                                    : static_cast<std::int64_t>(guess);
+      }
+      std::int64_t a = lo, b = hi; // g_i wins at a; b is "u wins" (or the sentinel hi)
+      if (wins(x0)) {
+        a = x0;
+        std::int64_t step = 1;
+        while (a + step < hi && wins(a + step)) {
+          a += step;
+          step *= 2;
+        }
+        b = std::min(a + step, hi);
+      } else {
+        b = x0;
+        std::int64_t step = 1;
+        while (b - step > lo && !wins(b - step)) {
+          b -= step;
+          step *= 2;
+        }
+        a = std::max(b - step, lo);
+      }
       while (b - a > 1) {
         std::int64_t m = a + (b - a) / 2;
         if (eval(fu, m - u) < eval(fi, m - i)) {
@@ -286,6 +328,8 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
                 const V& inf, std::vector<std::int64_t>* sites, const std::vector<V>& pw) {
   LineMetric<K, V> m;
   m.pw = pw.data();
+  m.p = opt.metric.p;
+  m.inv_pow2 = std::ldexp(1.0, -(opt.metric.p - 2));
   const unsigned threads = resolve_threads(opt.threads, dom.size());
   const int d = dom.dim();
   if (mask != nullptr) {
