@@ -10,10 +10,12 @@
 // g_i(t) = F(i) + |t - i|^p, computed with the stack and "separator" sweep of Meijster,
 // Roerdink and Hesselink (2000), as extended to every l_p by Hirata (1996) and
 // Maurer, Qi and Raghavan (2003): for i < u the set {t : g_u(t) < g_i(t)} is an up-set, so
-// the separator is a closed form for l_1, l_2, l_inf and a binary search on a table of p-th
-// powers otherwise. Ties go to the site with the smaller position on the line (the result is
-// the same for every thread count). A periodic axis of extent n is the line of 3n positions
-// holding three copies of the values, queried on the middle copy.
+// the separator is a closed form for l_1, l_2, l_inf and otherwise an exact gallop-and-bisect
+// search on a table of p-th powers, started from a floating-point Newton guess (the guess
+// only chooses where to look; every decision is an integer comparison). Ties go to the site with
+// the smaller position on the line (the result is the same for every thread count). A periodic axis
+// of extent n is the line of 3n positions holding three copies of the values, queried on the middle
+// copy.
 //
 // Cost: O(N d) per transform for l_1, l_2, l_inf and O(N d log n) for other p, N points.
 // Lines of non-contiguous axes are processed in blocks of adjacent lines (gathered into a
