@@ -131,14 +131,22 @@ struct LineMetric {
 // function), evaluated at t in [qlo, qhi): g[t - qlo] and, when WithArg, the winning
 // position arg[t - qlo] (-1 when there is no function at all). g may alias f (the query
 // reads only the stack). s, t, fs: scratch of size len.
-template <bool WithArg, int K, class V>
-void envelope_line(const LineMetric<K, V>& m, const V* f, std::int64_t len, std::int64_t qlo,
+//
+// ZeroRuns (values >= 0, as in a distance transform): a 0 between two 0s is a function
+// that only wins at its own position (its neighbours are strictly closer everywhere else),
+// so it is not pushed and every point of value 0 keeps 0 and itself as the argument.
+template <bool WithArg, bool ZeroRuns, int K, class V>
+void envelope_line(const LineMetric<K, V>& m, V* f, std::int64_t len, std::int64_t qlo,
                    std::int64_t qhi, const V& inf, V* g, std::int64_t* arg, std::int64_t* s,
                    std::int64_t* t, V* fs) {
   std::int64_t q = -1;
+  const V zero{};
   for (std::int64_t u = 0; u < len; ++u) {
     const V fu = f[u];
     if (fu == inf) continue;
+    if constexpr (ZeroRuns) {
+      if (fu == zero && u > 0 && u + 1 < len && f[u - 1] == zero && f[u + 1] == zero) continue;
+    }
     while (q >= 0 && m.eval(fs[q], t[q] - s[q]) > m.eval(fu, t[q] - u)) --q;
     if (q < 0) {
       q = 0;
@@ -167,6 +175,14 @@ void envelope_line(const LineMetric<K, V>& m, const V* f, std::int64_t len, std:
     const std::int64_t sk = s[k];
     const V fk = fs[k];
     for (std::int64_t x = t[k]; x < t[k + 1]; ++x) {
+      if constexpr (ZeroRuns) {
+        // g[x - qlo] may alias f[x - qlo] only (written after f[x] is read at index >= it)
+        if (f[x] == zero) {
+          g[x - qlo] = zero;
+          if constexpr (WithArg) arg[x - qlo] = x;
+          continue;
+        }
+      }
       g[x - qlo] = m.eval(fk, x - sk);
       if constexpr (WithArg) arg[x - qlo] = sk;
     }
@@ -181,8 +197,9 @@ struct Scratch {
 
 // One pass along axis a: every line of that axis becomes the lower envelope of its values.
 template <int K, class V>
-void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, V>& m, V* f,
-                   const V& inf, std::vector<std::int64_t>* sites, unsigned threads) {
+void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
+                   const LineMetric<K, V>& m, V* f, const V& inf, std::vector<std::int64_t>* sites,
+                   unsigned threads) {
   const std::int64_t n = dom.extent(a), st = dom.stride(a);
   const std::int64_t outer = dom.size() / (n * st);
   constexpr std::int64_t kBlock = sizeof(V) <= 4 ? 16 : 8;
@@ -230,11 +247,19 @@ void envelope_pass(const Domain& dom, int a, bool periodic, const LineMetric<K, 
           }
         }
         if (sp != nullptr) {
-          envelope_line<true>(m, line, len, qlo, qlo + n, inf, line, sc.arg.data() + b * n,
-                              sc.s.data(), sc.t.data(), sc.fs.data());
+          if (nonnegative) {
+            envelope_line<true, true>(m, line, len, qlo, qlo + n, inf, line, sc.arg.data() + b * n,
+                                      sc.s.data(), sc.t.data(), sc.fs.data());
+          } else {
+            envelope_line<true, false>(m, line, len, qlo, qlo + n, inf, line, sc.arg.data() + b * n,
+                                       sc.s.data(), sc.t.data(), sc.fs.data());
+          }
+        } else if (nonnegative) {
+          envelope_line<false, true>(m, line, len, qlo, qlo + n, inf, line, nullptr, sc.s.data(),
+                                     sc.t.data(), sc.fs.data());
         } else {
-          envelope_line<false>(m, line, len, qlo, qlo + n, inf, line, nullptr, sc.s.data(),
-                               sc.t.data(), sc.fs.data());
+          envelope_line<false, false>(m, line, len, qlo, qlo + n, inf, line, nullptr, sc.s.data(),
+                                      sc.t.data(), sc.fs.data());
         }
       }
       for (std::int64_t x = 0; x < n; ++x) {
@@ -339,10 +364,10 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
       sites->resize(static_cast<std::size_t>(dom.size()));
       for (std::int64_t i = 0; i < dom.size(); ++i) (*sites)[static_cast<std::size_t>(i)] = i;
     }
-    envelope_pass(dom, d - 1, opt.periodic(d - 1), m, f, inf, sites, threads);
+    envelope_pass(dom, d - 1, opt.periodic(d - 1), false, m, f, inf, sites, threads);
   }
   for (int a = d - 2; a >= 0; --a)
-    envelope_pass(dom, a, opt.periodic(a), m, f, inf, sites, threads);
+    envelope_pass(dom, a, opt.periodic(a), mask != nullptr, m, f, inf, sites, threads);
 }
 
 } // namespace
