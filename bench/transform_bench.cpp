@@ -1,0 +1,127 @@
+// Separable l_p transforms on the inputs of issue 4: a disc of radius 1800 in 4096^2, a ball of
+// radius 0.45 n in n^3 (n = 256, 512). Arguments: n, p (0 = linf), threads. Reports the time
+// and ns per voxel (counter "ns_per_voxel"). Peers: bench/compare_transforms.py.
+//
+//   build/bin/transform_bench --benchmark_filter='Dt3d/256/2/2'
+#include "kernel/distance_transform.hpp"
+#include "kernel/reduced_medial_axis.hpp"
+#include "kernel/reverse_distance_transform.hpp"
+#include "kernel/voronoi_map.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+
+namespace {
+
+using zdg::Domain;
+using zdg::Image;
+
+Image<std::uint8_t> disc(std::int64_t n, std::int64_t r) {
+  Image<std::uint8_t> img(Domain({n, n}), std::uint8_t{0});
+  const std::int64_t c = n / 2;
+  for (std::int64_t y = 0; y < n; ++y) {
+    for (std::int64_t x = 0; x < n; ++x) {
+      img[y * n + x] = (x - c) * (x - c) + (y - c) * (y - c) < r * r ? 1 : 0;
+    }
+  }
+  return img;
+}
+
+Image<std::uint8_t> ball(std::int64_t n) {
+  Image<std::uint8_t> img(Domain({n, n, n}), std::uint8_t{0});
+  const std::int64_t c = n / 2, r2 = (45 * n / 100) * (45 * n / 100);
+  std::int64_t i = 0;
+  for (std::int64_t z = 0; z < n; ++z) {
+    for (std::int64_t y = 0; y < n; ++y) {
+      for (std::int64_t x = 0; x < n; ++x, ++i) {
+        img[i] = (x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c) < r2 ? 1 : 0;
+      }
+    }
+  }
+  return img;
+}
+
+zdg::TransformOptions options(const benchmark::State& st) {
+  zdg::TransformOptions opt;
+  opt.metric = zdg::Metric{static_cast<int>(st.range(1))};
+  opt.threads = static_cast<unsigned>(st.range(2));
+  return opt;
+}
+
+// The distance transform in the narrowest output type (as `zdg transform dt` does).
+void run_dt(const Image<std::uint8_t>& img, const zdg::TransformOptions& opt) {
+  if (zdg::distance_transform_max_value(img.domain(), opt) <= zdg::BigInt(4294967295ULL)) {
+    benchmark::DoNotOptimize(zdg::distance_transform<std::uint32_t>(img, opt));
+  } else {
+    benchmark::DoNotOptimize(zdg::distance_transform<std::uint64_t>(img, opt));
+  }
+}
+
+void report(benchmark::State& st, std::int64_t voxels) {
+  st.counters["ns_per_voxel"] = benchmark::Counter(static_cast<double>(voxels) * 1e-9,
+                                                   benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
+}
+
+void Dt2d(benchmark::State& st) {
+  auto img = disc(st.range(0), 1800 * st.range(0) / 4096);
+  auto opt = options(st);
+  for (auto _ : st) run_dt(img, opt);
+  report(st, img.size());
+}
+
+void Dt3d(benchmark::State& st) {
+  auto img = ball(st.range(0));
+  auto opt = options(st);
+  for (auto _ : st) run_dt(img, opt);
+  report(st, img.size());
+}
+
+void Voronoi3d(benchmark::State& st) {
+  auto img = ball(st.range(0));
+  auto opt = options(st);
+  for (auto _ : st) benchmark::DoNotOptimize(zdg::voronoi_map(img, opt));
+  report(st, img.size());
+}
+
+void Rdt3d(benchmark::State& st) {
+  auto img = ball(st.range(0));
+  auto opt = options(st);
+  auto dt = zdg::distance_transform<std::int64_t>(img, opt);
+  for (auto _ : st) benchmark::DoNotOptimize(zdg::reverse_distance_transform(dt, opt));
+  report(st, img.size());
+}
+
+void Rma3d(benchmark::State& st) {
+  auto img = ball(st.range(0));
+  auto opt = options(st);
+  for (auto _ : st) benchmark::DoNotOptimize(zdg::reduced_medial_axis(img, opt));
+  report(st, img.size());
+}
+
+BENCHMARK(Dt2d)
+    ->Args({4096, 2, 1})
+    ->Args({4096, 2, 2})
+    ->Args({4096, 1, 2})
+    ->Args({4096, 0, 2})
+    ->Args({4096, 3, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(Dt3d)
+    ->Args({256, 2, 1})
+    ->Args({256, 2, 2})
+    ->Args({256, 3, 2})
+    ->Args({256, 1, 2})
+    ->Args({256, 0, 2})
+    ->Args({512, 2, 2})
+    ->Args({512, 3, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(Voronoi3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Rdt3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(Rma3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+} // namespace
+
+BENCHMARK_MAIN();

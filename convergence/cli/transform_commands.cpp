@@ -1,0 +1,367 @@
+// zdg transform dt|voronoi|power|rdt|rma: the separable exact l_p transforms on images read
+// from .npy (any dimension), .pgm (2D) or .vol (3D); results written atomically (temporary
+// file, then rename), never over the input.
+#include "arith/error.hpp"
+#include "convergence/cli/commands.hpp"
+#include "kernel/distance_transform.hpp"
+#include "kernel/npy_io.hpp"
+#include "kernel/pgm_io.hpp"
+#include "kernel/power_map.hpp"
+#include "kernel/reduced_medial_axis.hpp"
+#include "kernel/reverse_distance_transform.hpp"
+#include "kernel/separable_engine.hpp"
+#include "kernel/vol_io.hpp"
+#include "kernel/voronoi_map.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace zdg::cli {
+
+namespace {
+
+struct TransformArgs {
+  std::string input, output, metric = "l2", torus, lower;
+  unsigned threads = 0;
+  bool json = false;
+};
+
+std::string extension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+std::vector<std::int64_t> parse_int_list(const std::string& text, const std::string& what) {
+  std::vector<std::int64_t> out;
+  std::string cur;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    if (i == text.size() || text[i] == ',') {
+      try {
+        std::size_t used = 0;
+        long long v = std::stoll(cur, &used);
+        if (used != cur.size()) throw std::invalid_argument("trailing");
+        out.push_back(v);
+      } catch (const std::exception&) {
+        throw InvalidArgument(what + ": '" + cur + "' is not an integer (in '" + text + "')");
+      }
+      cur.clear();
+    } else {
+      cur.push_back(text[i]);
+    }
+  }
+  return out;
+}
+
+// The input as int64 values, whatever its format.
+Image<std::int64_t> read_values(const TransformArgs& a) {
+  std::string e = extension(a.input);
+  if (!std::filesystem::exists(a.input)) throw IoError(a.input + ": no such file");
+  Image<std::int64_t> img;
+  if (e == ".npy") {
+    img = npy_to_int64(read_npy(a.input));
+  } else if (e == ".pgm") {
+    auto p = read_pgm(a.input);
+    img = Image<std::int64_t>(p.domain(),
+                              std::vector<std::int64_t>(p.values().begin(), p.values().end()));
+  } else if (e == ".vol") {
+    auto v = read_vol(a.input);
+    img = Image<std::int64_t>(v.domain(),
+                              std::vector<std::int64_t>(v.values().begin(), v.values().end()));
+  } else {
+    throw IoError(a.input + ": unknown image format '" + e + "' (.npy, .pgm or .vol)");
+  }
+  if (!a.lower.empty()) {
+    auto low = parse_int_list(a.lower, "--lower");
+    if (static_cast<int>(low.size()) != img.dim()) {
+      throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                            std::to_string(img.dim()) + "-D image");
+    }
+    img = Image<std::int64_t>(Domain(img.domain().extents(), low), std::move(img.values()));
+  }
+  return img;
+}
+
+Image<std::uint8_t> read_mask(const TransformArgs& a) {
+  if (extension(a.input) == ".npy") {
+    auto arr = read_npy(a.input);
+    std::vector<std::int64_t> low;
+    if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
+    if (!low.empty() && low.size() != arr.shape.size()) {
+      throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                            std::to_string(arr.shape.size()) + "-D image");
+    }
+    return npy_to_mask(arr, low);
+  }
+  auto v = read_values(a);
+  Image<std::uint8_t> m(v.domain());
+  for (std::int64_t i = 0; i < v.size(); ++i) m[i] = v[i] != 0 ? 1 : 0;
+  return m;
+}
+
+TransformOptions make_options(const TransformArgs& a, int dim) {
+  TransformOptions opt;
+  opt.metric = parse_metric(a.metric);
+  opt.threads = a.threads;
+  if (!a.torus.empty()) {
+    opt.torus.assign(static_cast<std::size_t>(dim), false);
+    if (a.torus == "all") {
+      opt.torus.assign(static_cast<std::size_t>(dim), true);
+    } else {
+      for (auto k : parse_int_list(a.torus, "--torus")) {
+        if (k < 0 || k >= dim) {
+          throw InvalidArgument("--torus: axis " + std::to_string(k) + " of a " +
+                                std::to_string(dim) + "-D image (axes 0.." +
+                                std::to_string(dim - 1) + ")");
+        }
+        opt.torus[static_cast<std::size_t>(k)] = true;
+      }
+    }
+  }
+  return opt;
+}
+
+void check_paths(const TransformArgs& a) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (a.output.empty()) throw InvalidArgument("no output file (-o OUT)");
+  if (fs::exists(a.output, ec) && fs::equivalent(a.input, a.output, ec)) {
+    throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
+  }
+}
+
+std::vector<std::int64_t> shape_of(const Domain& d) {
+  return d.extents();
+}
+
+// Writes an image of unsigned values in the format of the output's extension.
+void write_unsigned(const std::string& path, const Domain& dom, const std::vector<std::uint64_t>& v,
+                    DType dtype) {
+  std::string e = extension(path);
+  if (e == ".pgm") {
+    write_pgm(path, Image<std::uint64_t>(dom, v));
+  } else if (e == ".vol") {
+    write_vol(path, Image<std::uint64_t>(dom, v));
+  } else if (e == ".npy") {
+    std::vector<std::int64_t> s(v.begin(), v.end());
+    if (dtype == DType::U64) {
+      write_npy(path, make_npy<std::uint64_t>(shape_of(dom), v));
+    } else {
+      write_npy(path, make_npy(dtype, shape_of(dom), s));
+    }
+  } else {
+    throw IoError(path + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
+  }
+}
+
+void require_npy(const std::string& path, const char* what) {
+  if (extension(path) != ".npy") {
+    throw IoError(path + ": " + what + " output is an .npy array (got '" + extension(path) + "')");
+  }
+}
+
+// Site coordinates (*dims, d) from linear site indices.
+NpyArray sites_array(const Domain& dom, const std::vector<std::int64_t>& site) {
+  const auto d = static_cast<std::size_t>(dom.dim());
+  std::vector<std::int64_t> coords(site.size() * d);
+  std::vector<std::int64_t> p(d);
+  for (std::size_t i = 0; i < site.size(); ++i) {
+    dom.point(site[i], p);
+    for (std::size_t k = 0; k < d; ++k) coords[i * d + k] = p[k];
+  }
+  auto shape = shape_of(dom);
+  shape.push_back(dom.dim());
+  return make_npy<std::int64_t>(shape, coords);
+}
+
+unsigned threads_used(unsigned requested) {
+  return requested == 0 ? std::max(1u, std::thread::hardware_concurrency()) : requested;
+}
+
+void report(const TransformArgs& a, const std::string& cmd, const Domain& dom,
+            const TransformOptions& opt, const std::string& dtype, const std::string& max_value,
+            double seconds, nlohmann::json extra = nlohmann::json::object()) {
+  if (a.json) {
+    nlohmann::json torus = nlohmann::json::array();
+    for (int k = 0; k < dom.dim(); ++k) {
+      if (opt.periodic(k)) torus.push_back(k);
+    }
+    nlohmann::json j = {{"command", cmd},
+                        {"input", a.input},
+                        {"output", a.output},
+                        {"shape", shape_of(dom)},
+                        {"lower", dom.lowers()},
+                        {"metric", opt.metric.name()},
+                        {"torus", torus},
+                        {"dtype", dtype},
+                        {"max_value", max_value},
+                        {"seconds", seconds},
+                        {"threads", threads_used(opt.threads)}};
+    for (auto& [k, v] : extra.items()) j[k] = v;
+    print_json(j);
+    return;
+  }
+  std::cout << "zdg transform " << cmd << ": " << a.output << " (" << dtype << ", "
+            << opt.metric.name();
+  if (!max_value.empty()) std::cout << ", max " << max_value;
+  std::cout << ") in " << seconds << " s\n";
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+template <class T>
+void run_dt_as(const TransformArgs& a, const Image<std::uint8_t>& mask, const TransformOptions& opt,
+               DType dtype, std::chrono::steady_clock::time_point t0) {
+  auto dt = distance_transform<T>(mask, opt);
+  double secs = since(t0);
+  std::vector<std::uint64_t> v(dt.values().begin(), dt.values().end());
+  std::uint64_t mx = 0;
+  for (auto x : v) mx = std::max(mx, x);
+  write_unsigned(a.output, mask.domain(), v, dtype);
+  report(a, "dt", mask.domain(), opt, dtype_name(dtype), std::to_string(mx), secs);
+}
+
+void run_dt(const TransformArgs& a) {
+  check_paths(a);
+  auto mask = read_mask(a);
+  auto opt = make_options(a, mask.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  BigInt bound = distance_transform_max_value(mask.domain(), opt);
+  if (bound <= 255) {
+    run_dt_as<std::uint8_t>(a, mask, opt, DType::U8, t0);
+  } else if (bound <= 65535) {
+    run_dt_as<std::uint16_t>(a, mask, opt, DType::U16, t0);
+  } else if (bound <= BigInt(4294967295ULL)) {
+    run_dt_as<std::uint32_t>(a, mask, opt, DType::U32, t0);
+  } else if (bound <= BigInt(std::numeric_limits<std::uint64_t>::max())) {
+    run_dt_as<std::uint64_t>(a, mask, opt, DType::U64, t0);
+  } else {
+    // Values might exceed 64 bits: compute exactly, then check what was reached.
+    auto dt = distance_transform<BigInt>(mask, opt);
+    double secs = since(t0);
+    BigInt mx = 0;
+    for (const auto& x : dt.values()) mx = std::max(mx, x);
+    if (mx > BigInt(std::numeric_limits<std::uint64_t>::max())) {
+      throw OverflowError("distance transform: the largest value " + mx.str() + " (" +
+                          opt.metric.name() + ") does not fit uint64, the widest npy type");
+    }
+    std::vector<std::uint64_t> v;
+    v.reserve(dt.values().size());
+    for (const auto& x : dt.values()) v.push_back(x.convert_to<std::uint64_t>());
+    write_unsigned(a.output, mask.domain(), v, DType::U64);
+    report(a, "dt", mask.domain(), opt, "uint64", mx.str(), secs);
+  }
+}
+
+void run_voronoi(const TransformArgs& a) {
+  check_paths(a);
+  require_npy(a.output, "the Voronoi map");
+  auto mask = read_mask(a);
+  auto opt = make_options(a, mask.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  auto map = voronoi_map(mask, opt);
+  double secs = since(t0);
+  write_npy(a.output, sites_array(mask.domain(), map.site));
+  report(a, "voronoi", mask.domain(), opt, "int64", "", secs);
+}
+
+void run_power(const TransformArgs& a) {
+  check_paths(a);
+  require_npy(a.output, "the power map");
+  auto w = read_values(a);
+  auto opt = make_options(a, w.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  auto map = power_map(w, opt);
+  double secs = since(t0);
+  write_npy(a.output, sites_array(w.domain(), map.site));
+  report(a, "power", w.domain(), opt, "int64", "", secs);
+}
+
+void run_rdt(const TransformArgs& a) {
+  check_paths(a);
+  auto v = read_values(a);
+  auto opt = make_options(a, v.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  auto r = reverse_distance_transform(v, opt);
+  double secs = since(t0);
+  std::uint64_t count = 0;
+  for (auto x : r.values()) count += x;
+  write_unsigned(a.output, r.domain(),
+                 std::vector<std::uint64_t>(r.values().begin(), r.values().end()), DType::U8);
+  report(a, "rdt", r.domain(), opt, "uint8", count > 0 ? "1" : "0", secs,
+         {{"points", std::to_string(count)}});
+}
+
+void run_rma(const TransformArgs& a) {
+  check_paths(a);
+  require_npy(a.output, "the medial axis");
+  auto mask = read_mask(a);
+  auto opt = make_options(a, mask.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  auto balls = reduced_medial_axis(mask, opt);
+  double secs = since(t0);
+  const auto d = static_cast<std::size_t>(mask.dim());
+  std::vector<std::int64_t> rows;
+  std::int64_t mx = 0;
+  for (const auto& b : balls) {
+    rows.insert(rows.end(), b.centre.begin(), b.centre.end());
+    rows.push_back(b.value);
+    mx = std::max(mx, b.value);
+  }
+  write_npy(a.output,
+            make_npy<std::int64_t>(
+                {static_cast<std::int64_t>(balls.size()), static_cast<std::int64_t>(d + 1)}, rows));
+  report(a, "rma", mask.domain(), opt, "int64", std::to_string(mx), secs,
+         {{"balls", balls.size()}});
+}
+
+} // namespace
+
+void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
+  auto* tr = app.add_subcommand("transform",
+                                "separable exact l_p transforms of n-D images (.npy, .pgm, .vol)");
+  tr->require_subcommand(1);
+  struct Spec {
+    const char* name;
+    const char* help;
+    void (*run)(const TransformArgs&);
+  };
+  static const Spec specs[] = {
+      {"dt",
+       "distance transform: d^p to the nearest 0 (squared for l2, d for linf); output the "
+       "narrowest unsigned dtype holding the largest possible value",
+       run_dt},
+      {"voronoi", "Voronoi map: coordinates of a nearest background point, int64 (*dims, d)",
+       run_voronoi},
+      {"power",
+       "power map of the sites v > 0 (v = radius^p): coordinates of the site "
+       "minimising d^p - v, int64 (*dims, d)",
+       run_power},
+      {"rdt", "reverse distance transform: uint8 union of the open balls d(c, y)^p < v(c)",
+       run_rdt},
+      {"rma", "reduced discrete medial axis: int64 (k, d+1) rows centre..., DT value", run_rma},
+  };
+  for (const auto& s : specs) {
+    auto args = std::make_shared<TransformArgs>();
+    auto* sub = tr->add_subcommand(s.name, s.help);
+    sub->add_option("IN", args->input, "input image (.npy, .pgm, .vol)")->required();
+    sub->add_option("-o,--output", args->output, "output file (written atomically)")->required();
+    sub->add_option("--metric", args->metric, "l1, l2, linf or lP (P >= 1)")->capture_default_str();
+    sub->add_option("--torus", args->torus, "periodic axes: comma list (0,2) or 'all'");
+    sub->add_option("--lower", args->lower, "lower bounds of the domain, comma list (default 0)");
+    sub->add_option("--threads", args->threads, "worker threads (0 = all cores)")
+        ->capture_default_str();
+    sub->add_flag("--json", args->json, "print a JSON summary on stdout");
+    auto run = s.run;
+    sub->callback([args, run] { run(*args); });
+  }
+}
+
+} // namespace zdg::cli

@@ -1,0 +1,96 @@
+#include "kernel/distance_transform.hpp"
+
+#include "kernel/separable_engine.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace zdg {
+
+namespace {
+
+template <class T>
+BigInt type_max() {
+  if constexpr (std::is_same_v<T, BigInt>) {
+    return BigInt(-1);
+  } else {
+    return BigInt(std::numeric_limits<T>::max());
+  }
+}
+
+template <class T, class V>
+T convert_value(const V& v) {
+  if constexpr (std::is_same_v<T, BigInt>) {
+    return detail::engine_to_bigint(v);
+  } else if constexpr (std::is_same_v<V, BigInt>) {
+    return v.template convert_to<T>();
+  } else {
+    return static_cast<T>(v);
+  }
+}
+
+} // namespace
+
+BigInt distance_transform_max_value(const Domain& domain, const TransformOptions& opt) {
+  return detail::envelope_bounds(domain, opt, BigInt(0)).value_max;
+}
+
+void require_background(const Image<std::uint8_t>& shape, const TransformOptions& opt) {
+  const auto& v = shape.values();
+  if (std::find(v.begin(), v.end(), std::uint8_t{0}) == v.end()) {
+    bool torus = std::any_of(opt.torus.begin(), opt.torus.end(), [](bool b) { return b; });
+    throw InvalidArgument(std::string("distance transform: the image has no background point "
+                                      "(value 0)") +
+                          (torus ? ", also on the torus" : "") +
+                          ": every distance would be infinite");
+  }
+}
+
+template <class T>
+Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOptions& opt) {
+  const Domain& dom = shape.domain();
+  auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
+  require_background(shape, opt);
+  if constexpr (!std::is_same_v<T, BigInt>) {
+    if (bounds.value_max > type_max<T>()) {
+      throw OverflowError("distance transform: values up to " + bounds.value_max.str() + " (" +
+                          opt.metric.name() + ") do not fit the output type (max " +
+                          type_max<T>().str() + ")");
+    }
+  }
+  Image<T> out(dom);
+  detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
+    V inf = detail::envelope_infinity<V>(bounds);
+    if constexpr (std::is_integral_v<V> && std::is_integral_v<T> && sizeof(V) == sizeof(T)) {
+      // Same width: work in the output buffer (signed and unsigned variants may alias; the
+      // final values are >= 0 and finite since there is background).
+      detail::separable_envelope<V>(dom, opt, shape.values().data(),
+                                    reinterpret_cast<V*>(out.values().data()), inf, nullptr);
+      return;
+    }
+    std::vector<V> f(static_cast<std::size_t>(dom.size()));
+    detail::separable_envelope<V>(dom, opt, shape.values().data(), f.data(), inf, nullptr);
+    T* o = out.values().data();
+    const V* fp = f.data();
+    detail::parallel_chunks(dom.size(), detail::resolve_threads(opt.threads, dom.size()),
+                            [&](std::int64_t b, std::int64_t e) {
+                              for (std::int64_t i = b; i < e; ++i) o[i] = convert_value<T>(fp[i]);
+                            });
+  });
+  return out;
+}
+
+template Image<std::uint8_t> distance_transform(const Image<std::uint8_t>&,
+                                                const TransformOptions&);
+template Image<std::uint16_t> distance_transform(const Image<std::uint8_t>&,
+                                                 const TransformOptions&);
+template Image<std::uint32_t> distance_transform(const Image<std::uint8_t>&,
+                                                 const TransformOptions&);
+template Image<std::uint64_t> distance_transform(const Image<std::uint8_t>&,
+                                                 const TransformOptions&);
+template Image<std::int64_t> distance_transform(const Image<std::uint8_t>&,
+                                                const TransformOptions&);
+template Image<BigInt> distance_transform(const Image<std::uint8_t>&, const TransformOptions&);
+
+} // namespace zdg

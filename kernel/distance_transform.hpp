@@ -1,0 +1,38 @@
+// Distance transform of a binary image in the l_p metrics, exact.
+//
+// For every point x of the domain, DT(x) = min { d_p(x, y)^p : y background } for finite p
+// (so the squared Euclidean distance for l_2) and min { d_inf(x, y) } for l_inf, where the
+// background is the set of points of value 0 and d is periodic along the torus axes
+// (DESIGN.md, "Distance transform"). Background points get 0.
+//
+// Algorithm: separable lower envelopes, one pass per axis (kernel/separable_engine.hpp;
+// Hirata 1996, Meijster et al. 2000, Maurer et al. 2003), O(N d) for l_1, l_2, l_inf and
+// O(N d log n) for other p; multi-threaded, the result does not depend on the thread count.
+//
+// Width: the largest value is distance_transform_max_value() = sum_k m_k^p (max_k m_k for
+// l_inf) with m_k = n_k - 1, or floor(n_k / 2) on a torus axis. distance_transform<T> checks at
+// entry that it fits T (OverflowError otherwise: use a wider T, BigInt always fits); the
+// computation itself runs on the narrowest of int32 / int64 / __int128 / GMP that its
+// intermediates need. An image without background is an InvalidArgument.
+#pragma once
+
+#include "arith/integer.hpp"
+#include "kernel/image.hpp"
+#include "kernel/lp_metric.hpp"
+
+#include <cstdint>
+
+namespace zdg {
+
+/// The largest value a distance transform on this domain can take.
+BigInt distance_transform_max_value(const Domain& domain, const TransformOptions& opt);
+
+/// The distance transform of `shape` (nonzero = foreground). T: std::uint8_t, std::uint16_t,
+/// std::uint32_t, std::uint64_t, std::int64_t or BigInt.
+template <class T>
+Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOptions& opt = {});
+
+/// Throws InvalidArgument when `shape` has no background point (value 0).
+void require_background(const Image<std::uint8_t>& shape, const TransformOptions& opt);
+
+} // namespace zdg

@@ -1,0 +1,55 @@
+// NumPy .npy files (format versions 1.0, 2.0 and 3.0): read and write n-D arrays.
+//
+// Accepted dtypes: bool, uint8, uint16, uint32, uint64, int8, int16, int32, int64 (little-endian
+// or byte-sized), C order. Fortran order, big-endian or other dtypes (floats, structured),
+// malformed headers and truncated data are IoError naming the file and the problem. Writing
+// goes to a temporary file in the same directory, then renamed over the target.
+#pragma once
+
+#include "kernel/image.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace zdg {
+
+enum class DType { Bool, U8, U16, U32, U64, I8, I16, I32, I64 };
+
+/// "bool", "uint8", ..., "int64".
+std::string dtype_name(DType t);
+/// Size of one element in bytes.
+std::size_t dtype_size(DType t);
+
+/// An array as stored: dtype, shape (C order) and the raw little-endian bytes.
+struct NpyArray {
+  DType dtype = DType::U8;
+  std::vector<std::int64_t> shape;
+  std::vector<unsigned char> bytes;
+
+  std::int64_t count() const;
+  /// Element i as an int64 (IoError for a uint64 value > 2^63 - 1).
+  std::int64_t get(std::int64_t i) const;
+};
+
+NpyArray read_npy(const std::string& path);
+/// Writes atomically (temporary file + rename). IoError on failure.
+void write_npy(const std::string& path, const NpyArray& a);
+
+/// Builds an array of dtype t from int64 values (InvalidArgument when a value does not fit).
+NpyArray make_npy(DType t, std::vector<std::int64_t> shape, const std::vector<std::int64_t>& v);
+/// Same from a typed buffer (T an unsigned or signed machine integer).
+template <class T>
+NpyArray make_npy(std::vector<std::int64_t> shape, const std::vector<T>& v);
+
+/// The array as a binary image (nonzero = 1) on the domain with these lower bounds
+/// (empty = all 0). A 0-D array is an IoError.
+Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_t>& lower = {});
+/// The array as int64 values.
+Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64_t>& lower = {});
+
+/// Writes `bytes` to path through a temporary file in the same directory and a rename, so
+/// that the target is never half-written (used by every writer of zdg images).
+void write_file_atomically(const std::string& path, const std::string& bytes);
+
+} // namespace zdg

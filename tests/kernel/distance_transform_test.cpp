@@ -1,0 +1,132 @@
+#include "kernel/distance_transform.hpp"
+
+#include "tests/support/tower.hpp"
+#include "tests/support/transform_oracle.hpp"
+
+#include <gtest/gtest.h>
+
+namespace zdg {
+namespace {
+
+using test::brute_distance_transform;
+using test::random_transform_case;
+
+template <class I>
+class DistanceTransformTyped : public ::testing::Test {};
+TYPED_TEST_SUITE(DistanceTransformTyped, test::TowerTypes, test::TowerNames);
+
+// Theorem (separability, Hirata 1996 / Meijster et al. 2000): the pass-by-pass lower
+// envelopes give min over the background of d_p^p; oracle: every pair of points.
+TYPED_TEST(DistanceTransformTyped, EqualsBruteForce) {
+  test::check_property([] {
+    auto c = random_transform_case();
+    c.opt.min_engine_bits = test::engine_bits<TypeParam>();
+    auto dt = distance_transform<std::int64_t>(c.shape, c.opt);
+    auto oracle = brute_distance_transform<std::int64_t>(c.shape, c.opt);
+    RC_ASSERT(dt.values() == oracle);
+  });
+}
+
+TEST(DistanceTransform, DefaultWidthEqualsBruteForce) {
+  test::check_property([] {
+    auto c = random_transform_case();
+    auto dt = distance_transform<std::uint64_t>(c.shape, c.opt);
+    auto oracle = brute_distance_transform<std::int64_t>(c.shape, c.opt);
+    for (std::size_t i = 0; i < oracle.size(); ++i) {
+      RC_ASSERT(dt.values()[i] == static_cast<std::uint64_t>(oracle[i]));
+    }
+  });
+}
+
+// Large p: d^p exceeds int64 and __int128 (l_40 on a 20 x 13 domain: 19^40 ~ 1.4e51), so the
+// engine runs on GMP integers; oracle in BigInt.
+TEST(DistanceTransform, HugePowersUseBigIntegers) {
+  Domain dom({20, 13}, {-3, 4});
+  std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()), 1);
+  v[0] = 0;
+  v[150] = 0;
+  Image<std::uint8_t> shape(dom, v);
+  TransformOptions opt;
+  opt.metric = Metric::lp(40);
+  EXPECT_GT(distance_transform_max_value(dom, opt), BigInt(1) << 160);
+  auto dt = distance_transform<BigInt>(shape, opt);
+  EXPECT_EQ(dt.values(), brute_distance_transform<BigInt>(shape, opt));
+  EXPECT_THROW(distance_transform<std::uint64_t>(shape, opt), OverflowError);
+}
+
+TEST(DistanceTransform, WorkedExamples) {
+  Image<std::uint8_t> line(Domain({7}), std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0, 1});
+  TransformOptions l2;
+  EXPECT_EQ(distance_transform<std::uint32_t>(line, l2).values(),
+            (std::vector<std::uint32_t>{0, 1, 4, 4, 1, 0, 1}));
+  TransformOptions torus = l2;
+  torus.torus = {true};
+  // the last point is next to the first one on the circle
+  EXPECT_EQ(distance_transform<std::uint32_t>(line, torus).values(),
+            (std::vector<std::uint32_t>{0, 1, 4, 4, 1, 0, 1}));
+  Image<std::uint8_t> ring(Domain({6}), std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1});
+  EXPECT_EQ(distance_transform<std::uint32_t>(ring, torus).values(),
+            (std::vector<std::uint32_t>{4, 9, 4, 1, 0, 1}));
+  // 3 x 3 with the background at the centre: l1, l2, linf rings.
+  Image<std::uint8_t> sq(Domain({3, 3}), std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1, 1, 1, 1});
+  TransformOptions o;
+  o.metric = Metric::l1();
+  EXPECT_EQ(distance_transform<std::uint8_t>(sq, o).values(),
+            (std::vector<std::uint8_t>{2, 1, 2, 1, 0, 1, 2, 1, 2}));
+  o.metric = Metric::l2();
+  EXPECT_EQ(distance_transform<std::uint8_t>(sq, o).values(),
+            (std::vector<std::uint8_t>{2, 1, 2, 1, 0, 1, 2, 1, 2}));
+  o.metric = Metric::linf();
+  EXPECT_EQ(distance_transform<std::uint8_t>(sq, o).values(),
+            (std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1, 1, 1, 1}));
+  o.metric = Metric::lp(3);
+  EXPECT_EQ(distance_transform<std::uint8_t>(sq, o).values(),
+            (std::vector<std::uint8_t>{2, 1, 2, 1, 0, 1, 2, 1, 2}));
+}
+
+// Results do not depend on the thread count (lines are independent): a 3D image large enough
+// to be split (>= 2^15 points), every metric, with a torus axis.
+TEST(DistanceTransform, ThreadCountIndependence) {
+  Domain dom({33, 40, 29}, {-16, 0, 5});
+  std::mt19937 rng(7);
+  std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+  for (auto& x : v) x = rng() % 50 == 0 ? 0 : 1;
+  Image<std::uint8_t> shape(dom, v);
+  for (int p : {1, 2, 3, 0}) {
+    TransformOptions opt;
+    opt.metric = Metric{p};
+    opt.torus = {false, true, false};
+    opt.threads = 1;
+    auto ref = distance_transform<std::uint32_t>(shape, opt);
+    for (unsigned t : {2u, 3u, 8u}) {
+      opt.threads = t;
+      EXPECT_EQ(distance_transform<std::uint32_t>(shape, opt), ref) << p << " " << t;
+    }
+  }
+}
+
+TEST(DistanceTransform, Errors) {
+  Image<std::uint8_t> full(Domain({4, 5}), std::uint8_t{1});
+  EXPECT_THROW(distance_transform<std::uint32_t>(full, {}), InvalidArgument);
+  TransformOptions torus;
+  torus.torus = {true, true};
+  try {
+    distance_transform<std::uint32_t>(full, torus);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("torus"), std::string::npos);
+  }
+  Image<std::uint8_t> img(Domain({20, 20}), std::uint8_t{0});
+  EXPECT_THROW(distance_transform<std::uint8_t>(img, {}), OverflowError); // 2 * 19^2 > 255
+  TransformOptions bad;
+  bad.torus = {true};
+  EXPECT_THROW(distance_transform<std::uint32_t>(img, bad), InvalidArgument);
+  EXPECT_THROW(Metric::lp(0), InvalidArgument);
+  EXPECT_THROW(parse_metric("l0"), InvalidArgument);
+  EXPECT_THROW(parse_metric("l2.5"), InvalidArgument);
+  EXPECT_EQ(parse_metric("l7").p, 7);
+  EXPECT_TRUE(parse_metric("linf").is_inf());
+}
+
+} // namespace
+} // namespace zdg

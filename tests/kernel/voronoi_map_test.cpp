@@ -1,0 +1,68 @@
+#include "kernel/voronoi_map.hpp"
+
+#include "kernel/distance_transform.hpp"
+#include "tests/support/tower.hpp"
+#include "tests/support/transform_oracle.hpp"
+
+#include <gtest/gtest.h>
+
+namespace zdg {
+namespace {
+
+template <class I>
+class VoronoiMapTyped : public ::testing::Test {};
+TYPED_TEST_SUITE(VoronoiMapTyped, test::TowerTypes, test::TowerNames);
+
+// Every site is a background point and attains the distance transform (oracle: brute force).
+TYPED_TEST(VoronoiMapTyped, SitesAttainTheDistance) {
+  test::check_property([] {
+    auto c = test::random_transform_case();
+    c.opt.min_engine_bits = test::engine_bits<TypeParam>();
+    auto map = voronoi_map(c.shape, c.opt);
+    auto oracle = test::brute_distance_transform<std::int64_t>(c.shape, c.opt);
+    const Domain& dom = c.shape.domain();
+    for (std::int64_t i = 0; i < dom.size(); ++i) {
+      std::int64_t s = map.site[static_cast<std::size_t>(i)];
+      RC_ASSERT(s >= 0);
+      RC_ASSERT(s < dom.size());
+      RC_ASSERT(c.shape[s] == 0);
+      RC_ASSERT(test::metric_length<std::int64_t>(dom, c.opt, i, s) ==
+                oracle[static_cast<std::size_t>(i)]);
+    }
+  });
+}
+
+TEST(VoronoiMap, BackgroundIsItsOwnSite) {
+  Image<std::uint8_t> img(Domain({3, 4}, {-1, 2}),
+                          std::vector<std::uint8_t>{1, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 0});
+  auto map = voronoi_map(img, {});
+  EXPECT_EQ(map.site[1], 1);
+  EXPECT_EQ(map.site[11], 11);
+  EXPECT_EQ(map.site_point(0), (std::vector<std::int64_t>{-1, 3}));
+  EXPECT_EQ(map.site_point(10), (std::vector<std::int64_t>{1, 5}));
+}
+
+TEST(VoronoiMap, ThreadCountIndependence) {
+  Domain dom({180, 201});
+  std::mt19937 rng(3);
+  std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+  for (auto& x : v) x = rng() % 300 == 0 ? 0 : 1;
+  Image<std::uint8_t> shape(dom, v);
+  for (int p : {1, 2, 5, 0}) {
+    TransformOptions opt;
+    opt.metric = Metric{p};
+    opt.torus = {true, false};
+    opt.threads = 1;
+    auto ref = voronoi_map(shape, opt).site;
+    opt.threads = 3;
+    EXPECT_EQ(voronoi_map(shape, opt).site, ref) << p;
+  }
+}
+
+TEST(VoronoiMap, NoBackgroundIsAnError) {
+  Image<std::uint8_t> full(Domain({2, 2, 2}), std::uint8_t{7});
+  EXPECT_THROW(voronoi_map(full, {}), InvalidArgument);
+}
+
+} // namespace
+} // namespace zdg
