@@ -1,0 +1,453 @@
+#include "kernel/convex_body_hull.hpp"
+
+#include "arith/error.hpp"
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include <cmath>
+
+namespace zdg {
+
+const char* to_string(RegionKind k) {
+  switch (k) {
+  case RegionKind::bounded:
+    return "bounded";
+  case RegionKind::unbounded:
+    return "unbounded";
+  case RegionKind::empty:
+    return "empty";
+  }
+  return "?";
+}
+
+template <TowerInt I>
+I floor_sqrt(const I& n) {
+  if (n < 0) throw InvalidArgument("square root of negative " + to_string(n));
+  if constexpr (std::same_as<I, BigInt>) {
+    return boost::multiprecision::sqrt(n);
+  } else {
+    using U = uint128_t;
+    const U m = static_cast<U>(n.value());
+    if (m < 2) return n;
+    // A double estimate, pushed above the root, then Newton from above (monotone to floor).
+    double est = std::sqrt(static_cast<double>(m));
+    U x = static_cast<U>(est * (1.0 + 1e-9)) + 2;
+    for (;;) {
+      U y = (x + m / x) / 2;
+      if (y >= x) break;
+      x = y;
+    }
+    while (x * x > m) --x;
+    while ((x + 1) * (x + 1) <= m) ++x;
+    return I(static_cast<typename I::value_type>(x));
+  }
+}
+
+namespace {
+
+template <TowerInt I>
+Point2<I> add(const Point2<I>& a, const Point2<I>& b) {
+  return {a.x + b.x, a.y + b.y};
+}
+template <TowerInt I>
+Point2<I> add_scaled(const Point2<I>& a, const I& k, const Point2<I>& b) {
+  return {a.x + k * b.x, a.y + k * b.y};
+}
+
+// Integers k with A k^2 + 2 B k + C <= 0, A > 0.
+template <TowerInt I>
+IntRange<I> quadratic_range(const I& A, const I& B, const I& C) {
+  I delta = B * B - A * C;
+  if (delta < 0) return std::nullopt;
+  I s = floor_sqrt(delta);
+  auto f_le0 = [&](const I& k) { return (A * k + 2 * B) * k + C <= 0; };
+  I hi = floor_div(I(s - B), A);
+  if (f_le0(I(hi + 1))) hi += 1;
+  I lo = ceil_div(I(-B - s), A);
+  if (f_le0(I(lo - 1))) lo -= 1;
+  if (lo > hi) return std::nullopt;
+  return std::pair<I, I>{lo, hi};
+}
+
+template <TowerInt I>
+I lcm(const I& a, const I& b) {
+  return a / gcd(a, b) * b;
+}
+
+} // namespace
+
+template <TowerInt I>
+bool QuadraticBody<I>::contains(const Point2<I>& p) const {
+  I u = D * p.x - Cx, v = D * p.y - Cy;
+  return alpha * u * u + beta * v * v <= gamma;
+}
+
+template <TowerInt I>
+IntRange<I> QuadraticBody<I>::line_range(const Point2<I>& q, const Point2<I>& v) const {
+  I ux = D * q.x - Cx, uy = D * q.y - Cy, vx = D * v.x, vy = D * v.y;
+  I A = alpha * vx * vx + beta * vy * vy;
+  if (A == 0) throw InvalidArgument("line_range: zero direction");
+  I B = alpha * ux * vx + beta * uy * vy;
+  I C = alpha * ux * ux + beta * uy * uy - gamma;
+  return quadratic_range(A, B, C);
+}
+
+namespace {
+template <TowerInt I>
+QuadraticBody<I> make_quadratic(const Rational<I>& cx, const Rational<I>& cy, I alpha, I beta,
+                                I gamma, const Rational<I>& ax, const Rational<I>& ay) {
+  QuadraticBody<I> b;
+  b.D = lcm(cx.den(), cy.den());
+  b.Cx = cx.num() * (b.D / cx.den());
+  b.Cy = cy.num() * (b.D / cy.den());
+  I g = gcd(alpha, gcd(beta, gamma));
+  b.alpha = alpha / g;
+  b.beta = beta / g;
+  b.gamma = gamma / g;
+  b.xlo = (cx - ax).ceil();
+  b.xhi = (cx + ax).floor();
+  b.ylo = (cy - ay).ceil();
+  b.yhi = (cy + ay).floor();
+  return b;
+}
+} // namespace
+
+template <TowerInt I>
+QuadraticBody<I> disc_body(const Rational<I>& cx, const Rational<I>& cy, const Rational<I>& r) {
+  if (r < Rational<I>(0)) throw InvalidArgument("negative radius " + r.str());
+  I D = lcm(cx.den(), cy.den());
+  I rd2 = r.den() * r.den();
+  I g = D * r.num();
+  return make_quadratic(cx, cy, rd2, rd2, I(g * g), r, r);
+}
+
+template <TowerInt I>
+QuadraticBody<I> ellipse_body(const Rational<I>& cx, const Rational<I>& cy, const Rational<I>& a,
+                              const Rational<I>& b) {
+  if (!(a > Rational<I>(0))) throw InvalidArgument("ellipse semi-axis a = " + a.str() + " <= 0");
+  if (!(b > Rational<I>(0))) throw InvalidArgument("ellipse semi-axis b = " + b.str() + " <= 0");
+  I D = lcm(cx.den(), cy.den());
+  I alpha = a.den() * b.num(), beta = b.den() * a.num(), gamma = D * a.num() * b.num();
+  return make_quadratic(cx, cy, I(alpha * alpha), I(beta * beta), I(gamma * gamma), a, b);
+}
+
+// --- half-planes -------------------------------------------------------------------------
+
+template <TowerInt I>
+bool PolygonBody<I>::contains(const Point2<I>& p) const {
+  for (const auto& [a, b, c] : rows) {
+    if (a * p.x + b * p.y > c) return false;
+  }
+  return true;
+}
+
+template <TowerInt I>
+IntRange<I> PolygonBody<I>::line_range(const Point2<I>& q, const Point2<I>& v) const {
+  std::optional<I> lo, hi;
+  for (const auto& [a, b, c] : rows) {
+    I s = a * v.x + b * v.y;
+    I rhs = c - a * q.x - b * q.y;
+    if (s > 0) {
+      I k = floor_div(rhs, s);
+      if (!hi || k < *hi) hi = k;
+    } else if (s < 0) {
+      I k = ceil_div(rhs, s);
+      if (!lo || k > *lo) lo = k;
+    } else if (rhs < 0) {
+      return std::nullopt;
+    }
+  }
+  if (!lo || !hi) throw InvalidArgument("line_range: the polygon is unbounded along the line");
+  if (*lo > *hi) return std::nullopt;
+  return std::pair<I, I>{*lo, *hi};
+}
+
+namespace {
+
+using Row = std::array<std::int64_t, 3>;
+
+// Feasible intersection points of pairs of lines (as X/det, Y/det with det > 0), and the
+// largest |coordinate| of all pairwise intersections.
+template <TowerInt I>
+struct Vertices {
+  std::vector<std::array<I, 3>> feasible; // X, Y, det (det > 0)
+  I max_abs{0};
+};
+
+template <TowerInt I>
+Vertices<I> pair_vertices(const std::vector<std::array<I, 3>>& rows) {
+  Vertices<I> out;
+  const std::size_t m = rows.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = i + 1; j < m; ++j) {
+      const auto& [a1, b1, c1] = rows[i];
+      const auto& [a2, b2, c2] = rows[j];
+      I det = a1 * b2 - a2 * b1;
+      if (det == 0) continue;
+      I X = c1 * b2 - c2 * b1, Y = a1 * c2 - a2 * c1;
+      if (det < 0) {
+        det = -det;
+        X = -X;
+        Y = -Y;
+      }
+      I bx = abs(ceil_div(abs(X), det)), by = abs(ceil_div(abs(Y), det));
+      if (bx > out.max_abs) out.max_abs = bx;
+      if (by > out.max_abs) out.max_abs = by;
+      bool ok = true;
+      for (const auto& [a, b, c] : rows) {
+        if (a * X + b * Y > c * det) {
+          ok = false;
+          break;
+        }
+      }
+      if (ok) out.feasible.push_back({X, Y, det});
+    }
+  }
+  return out;
+}
+
+} // namespace
+
+template <TowerInt I>
+std::pair<RegionKind, PolygonBody<I>> polygon_body(std::span<const HalfPlane<I>> hs) {
+  PolygonBody<I> body;
+  for (const auto& h : hs) {
+    I L = lcm(lcm(h.a.den(), h.b.den()), h.c.den());
+    I a = h.a.num() * (L / h.a.den()), b = h.b.num() * (L / h.b.den()),
+      c = h.c.num() * (L / h.c.den());
+    if (a == 0 && b == 0) {
+      if (c < 0) return {RegionKind::empty, body};
+      continue; // 0 <= c: the whole plane
+    }
+    I g = gcd(a, gcd(b, c));
+    body.rows.push_back({I(a / g), I(b / g), I(c / g)});
+  }
+  if (body.rows.empty()) return {RegionKind::unbounded, body};
+  // Bounded iff the recession cone {v : n_i . v <= 0} is {0}; a nontrivial cone contains a
+  // vector orthogonal to some normal n_j.
+  bool bounded = true;
+  for (const auto& r : body.rows) {
+    for (int sg : {1, -1}) {
+      I vx = -r[1] * sg, vy = r[0] * sg;
+      bool in_cone = true;
+      for (const auto& s : body.rows) {
+        if (s[0] * vx + s[1] * vy > 0) {
+          in_cone = false;
+          break;
+        }
+      }
+      if (in_cone) bounded = false;
+    }
+  }
+  auto vs = pair_vertices(body.rows);
+  if (!bounded) {
+    // Nonempty iff it meets a box holding every pairwise intersection and every axis
+    // crossing of a line (a nonempty region has a minimal face there).
+    I M = vs.max_abs + 1;
+    for (const auto& [a, b, c] : body.rows) {
+      if (a != 0) M = std::max(M, I(ceil_div(abs(c), abs(a)) + 1));
+      if (b != 0) M = std::max(M, I(ceil_div(abs(c), abs(b)) + 1));
+    }
+    auto boxed = body.rows;
+    boxed.push_back({I(1), I(0), M});
+    boxed.push_back({I(-1), I(0), M});
+    boxed.push_back({I(0), I(1), M});
+    boxed.push_back({I(0), I(-1), M});
+    auto bv = pair_vertices(boxed);
+    return {bv.feasible.empty() ? RegionKind::empty : RegionKind::unbounded, body};
+  }
+  if (vs.feasible.empty()) return {RegionKind::empty, body};
+  bool first = true;
+  for (const auto& [X, Y, det] : vs.feasible) {
+    I xl = ceil_div(X, det), xh = floor_div(X, det), yl = ceil_div(Y, det), yh = floor_div(Y, det);
+    if (first || xl < body.xlo) body.xlo = xl;
+    if (first || xh > body.xhi) body.xhi = xh;
+    if (first || yl < body.ylo) body.ylo = yl;
+    if (first || yh > body.yhi) body.yhi = yh;
+    first = false;
+  }
+  return {RegionKind::bounded, body};
+}
+
+// --- the walk ----------------------------------------------------------------------------
+
+namespace detail {
+
+// The lattice direction closest to d_out (counterclockwise side) with P + e in K, given the
+// unimodular bracket: P + d_in in K, P + d_out not, det(d_out, d_in) = 1.
+template <TowerInt I, class Body>
+Point2<I> descend(const Body& K, const Point2<I>& P, Point2<I> din, Point2<I> dout) {
+  for (;;) {
+    auto r1 = K.line_range(add(P, din), dout); // contains k = 0
+    din = add_scaled(din, r1->second, dout);
+    Point2<I> m = add(din, dout);
+    auto r2 = K.line_range(add(P, m), din);
+    if (!r2 || r2->second < 1) return din;
+    I ks = r2->first < 1 ? I(1) : r2->first;
+    dout = add_scaled(m, I(ks - 1), din);
+    din = add_scaled(m, ks, din);
+  }
+}
+
+// The next edge direction at the vertex P reached along d (P - d in K): nullopt when every
+// lattice point of K lies on the line of d (the hull is a segment).
+template <TowerInt I, class Body>
+std::optional<Point2<I>> next_direction(const Body& K, const Point2<I>& P, const Point2<I>& d) {
+  auto bz = ext_gcd(d.x, d.y); // s dx + t dy = 1; w = (-t, s) has det(d, w) = 1
+  Point2<I> w{I(-bz.y), bz.x};
+  auto r = K.line_range(add(P, w), d);
+  if (!r) return std::nullopt;
+  Point2<I> din = add_scaled(w, r->second, d);
+  return descend(K, P, din, add(din, d));
+}
+
+// The first edge direction at the lowest-then-leftmost point P0 when P0 + (1, 0) is not in
+// K: the lattice direction of least angle in (0, pi).
+template <TowerInt I, class Body>
+std::optional<Point2<I>> first_direction(const Body& K, const Point2<I>& P0) {
+  const Point2<I> d{I(1), I(0)}, w{I(0), I(1)};
+  if (auto r = K.line_range(add(P0, w), d)) {
+    Point2<I> din = add_scaled(w, r->second, d);
+    return descend(K, P0, din, add(din, d));
+  }
+  // Row P0.y + 1 misses the lattice: scan the rows above (thin bodies only).
+  std::optional<Point2<I>> best;
+  for (I y = P0.y + 2; y <= K.yhi; ++y) {
+    auto r = K.line_range(Point2<I>{I(0), y}, d);
+    if (!r) continue;
+    Point2<I> e{I(r->second - P0.x), I(y - P0.y)};
+    if (!best || e.x * best->y - e.y * best->x > 0) best = e;
+  }
+  if (best) {
+    I g = gcd(best->x, best->y);
+    best = Point2<I>{I(best->x / g), I(best->y / g)};
+  }
+  return best;
+}
+
+} // namespace detail
+
+template <TowerInt I, class Body>
+std::vector<Point2<I>> convex_body_hull(const Body& K) {
+  std::vector<Point2<I>> out;
+  if (K.ylo > K.yhi || K.xlo > K.xhi) return out;
+  const Point2<I> ex{I(1), I(0)};
+  std::optional<Point2<I>> p0;
+  I xr;
+  for (I y = K.ylo; y <= K.yhi; ++y) {
+    if (auto r = K.line_range(Point2<I>{I(0), y}, ex)) {
+      p0 = Point2<I>{r->first, y};
+      xr = r->second;
+      break;
+    }
+  }
+  if (!p0) return out;
+  out.push_back(*p0);
+  Point2<I> P, d;
+  if (xr > p0->x) {
+    P = {xr, p0->y};
+    d = ex;
+  } else {
+    auto e = detail::first_direction(K, *p0);
+    if (!e) return out;
+    P = add_scaled(*p0, K.line_range(*p0, *e)->second, *e);
+    d = *e;
+  }
+  out.push_back(P);
+  for (;;) {
+    auto e = detail::next_direction(K, P, d);
+    if (!e) return out;
+    Point2<I> Q = add_scaled(P, K.line_range(P, *e)->second, *e);
+    if (Q == *p0) return out;
+    out.push_back(Q);
+    P = Q;
+    d = *e;
+  }
+}
+
+template <TowerInt I>
+std::vector<Point2<I>> disc_hull(const Rational<I>& cx, const Rational<I>& cy,
+                                 const Rational<I>& r) {
+  return convex_body_hull<I>(disc_body(cx, cy, r));
+}
+
+template <TowerInt I>
+std::vector<Point2<I>> ellipse_hull(const Rational<I>& cx, const Rational<I>& cy,
+                                    const Rational<I>& a, const Rational<I>& b) {
+  return convex_body_hull<I>(ellipse_body(cx, cy, a, b));
+}
+
+template <TowerInt I>
+HalfPlaneHull<I> halfplane_hull(std::span<const HalfPlane<I>> hs) {
+  auto [kind, body] = polygon_body(hs);
+  HalfPlaneHull<I> out;
+  out.region = kind;
+  if (kind == RegionKind::bounded) out.vertices = convex_body_hull<I>(body);
+  return out;
+}
+
+namespace {
+template <TowerInt I>
+Rational<I> narrow(const Rational<BigInt>& q) {
+  return Rational<I>(int_cast<I>(q.num()), int_cast<I>(q.den()));
+}
+template <TowerInt I>
+std::vector<Point2<BigInt>> widen(const std::vector<Point2<I>>& v) {
+  std::vector<Point2<BigInt>> out;
+  out.reserve(v.size());
+  for (const auto& p : v) out.push_back({to_bigint(p.x), to_bigint(p.y)});
+  return out;
+}
+} // namespace
+
+BodyHullResult disc_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
+                               const Rational<BigInt>& r) {
+  if (r < Rational<BigInt>(0)) throw InvalidArgument("negative radius " + r.str());
+  auto res = escalate([&]<class I>(std::type_identity<I>) {
+    return widen(disc_hull<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(r)));
+  });
+  return {RegionKind::bounded, std::move(res.value), res.served};
+}
+
+BodyHullResult ellipse_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
+                                  const Rational<BigInt>& a, const Rational<BigInt>& b) {
+  ellipse_body(cx, cy, a, b); // validates a, b > 0 before any escalation
+  auto res = escalate([&]<class I>(std::type_identity<I>) {
+    return widen(ellipse_hull<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(a), narrow<I>(b)));
+  });
+  return {RegionKind::bounded, std::move(res.value), res.served};
+}
+
+BodyHullResult halfplane_hull_exact(std::span<const HalfPlane<BigInt>> hs) {
+  auto res = escalate([&]<class I>(std::type_identity<I>) {
+    std::vector<HalfPlane<I>> n;
+    n.reserve(hs.size());
+    for (const auto& h : hs) n.push_back({narrow<I>(h.a), narrow<I>(h.b), narrow<I>(h.c)});
+    auto h = halfplane_hull<I>(std::span<const HalfPlane<I>>(n));
+    return std::pair<RegionKind, std::vector<Point2<BigInt>>>{h.region, widen(h.vertices)};
+  });
+  return {res.value.first, std::move(res.value.second), res.served};
+}
+
+#define ZDG_INSTANTIATE(I)                                                                         \
+  template I floor_sqrt<I>(const I&);                                                              \
+  template struct QuadraticBody<I>;                                                                \
+  template struct PolygonBody<I>;                                                                  \
+  template QuadraticBody<I> disc_body<I>(const Rational<I>&, const Rational<I>&,                   \
+                                         const Rational<I>&);                                      \
+  template QuadraticBody<I> ellipse_body<I>(const Rational<I>&, const Rational<I>&,                \
+                                            const Rational<I>&, const Rational<I>&);               \
+  template std::pair<RegionKind, PolygonBody<I>> polygon_body<I>(std::span<const HalfPlane<I>>);   \
+  template std::vector<Point2<I>> convex_body_hull<I, QuadraticBody<I>>(const QuadraticBody<I>&);  \
+  template std::vector<Point2<I>> convex_body_hull<I, PolygonBody<I>>(const PolygonBody<I>&);      \
+  template std::vector<Point2<I>> disc_hull<I>(const Rational<I>&, const Rational<I>&,             \
+                                               const Rational<I>&);                                \
+  template std::vector<Point2<I>> ellipse_hull<I>(const Rational<I>&, const Rational<I>&,          \
+                                                  const Rational<I>&, const Rational<I>&);         \
+  template HalfPlaneHull<I> halfplane_hull<I>(std::span<const HalfPlane<I>>);
+ZDG_INSTANTIATE(Int64)
+ZDG_INSTANTIATE(Int128)
+ZDG_INSTANTIATE(BigInt)
+#undef ZDG_INSTANTIATE
+
+} // namespace zdg
