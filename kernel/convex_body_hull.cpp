@@ -29,13 +29,16 @@ I floor_sqrt(const I& n) {
     using U = uint128_t;
     const U m = static_cast<U>(n.value());
     if (m < 2) return n;
-    // A double estimate, pushed above the root, then Newton from above (monotone to floor).
-    double est = std::sqrt(static_cast<double>(m));
-    U x = static_cast<U>(est * (1.0 + 1e-9)) + 2;
-    for (;;) {
-      U y = (x + m / x) / 2;
-      if (y >= x) break;
-      x = y;
+    // A double estimate (off by at most a few units below 2^64), corrected exactly; past
+    // 2^64, Newton from above (monotone down to the floor).
+    U x = static_cast<U>(static_cast<std::uint64_t>(std::sqrt(static_cast<double>(m))));
+    if (m >> 64 != 0) {
+      x = static_cast<U>(static_cast<double>(x) * (1.0 + 1e-9)) + 2;
+      for (;;) {
+        U y = (x + m / x) / 2;
+        if (y >= x) break;
+        x = y;
+      }
     }
     while (x * x > m) --x;
     while ((x + 1) * (x + 1) <= m) ++x;
@@ -90,6 +93,31 @@ IntRange<I> QuadraticBody<I>::line_range(const Point2<I>& q, const Point2<I>& v)
   I B = alpha * ux * vx + beta * uy * vy;
   I C = alpha * ux * ux + beta * uy * uy - gamma;
   return quadratic_range(A, B, C);
+}
+
+// The quadratic A k^2 + 2 B k + C of the line q + k v: the fast paths decide the common
+// short answers (k = 0 or 1) without a square root.
+template <TowerInt I>
+I QuadraticBody<I>::last_inside(const Point2<I>& q, const Point2<I>& v) const {
+  I ux = D * q.x - Cx, uy = D * q.y - Cy, vx = D * v.x, vy = D * v.y;
+  I A = alpha * vx * vx + beta * vy * vy;
+  I B = alpha * ux * vx + beta * uy * vy;
+  I C = alpha * ux * ux + beta * uy * uy - gamma;
+  if (A + 2 * B + C > 0) return I(0); // f(1) > 0, and f(0) <= 0: the interval ends at 0
+  return quadratic_range(A, B, C)->second;
+}
+
+template <TowerInt I>
+std::optional<I> QuadraticBody<I>::first_inside(const Point2<I>& q, const Point2<I>& v) const {
+  I ux = D * q.x - Cx, uy = D * q.y - Cy, vx = D * v.x, vy = D * v.y;
+  I A = alpha * vx * vx + beta * vy * vy;
+  I B = alpha * ux * vx + beta * uy * vy;
+  I C = alpha * ux * ux + beta * uy * uy - gamma;
+  if (A + 2 * B + C <= 0) return I(1);
+  if (-B <= A) return std::nullopt; // the parabola's minimum is at k <= 1: f > 0 for k >= 1
+  auto r = quadratic_range(A, B, C);
+  if (!r || r->second < 1) return std::nullopt;
+  return r->first;
 }
 
 namespace {
@@ -275,30 +303,39 @@ namespace detail {
 
 // The lattice direction closest to d_out (counterclockwise side) with P + e in K, given the
 // unimodular bracket: P + d_in in K, P + d_out not, det(d_out, d_in) = 1.
+// Returns d_in and d_out of the final bracket (det(d_out, d_in) = 1).
 template <TowerInt I, class Body>
-Point2<I> descend(const Body& K, const Point2<I>& P, Point2<I> din, Point2<I> dout) {
+std::pair<Point2<I>, Point2<I>> descend(const Body& K, const Point2<I>& P, Point2<I> din,
+                                        Point2<I> dout) {
   for (;;) {
-    auto r1 = K.line_range(add(P, din), dout); // contains k = 0
-    din = add_scaled(din, r1->second, dout);
+    din = add_scaled(din, K.last_inside(add(P, din), dout), dout);
     Point2<I> m = add(din, dout);
-    auto r2 = K.line_range(add(P, m), din);
-    if (!r2 || r2->second < 1) return din;
-    I ks = r2->first < 1 ? I(1) : r2->first;
+    auto r2 = K.first_inside(add(P, m), din);
+    if (!r2) return {din, dout};
+    I ks = *r2;
     dout = add_scaled(m, I(ks - 1), din);
     din = add_scaled(m, ks, din);
   }
 }
 
-// The next edge direction at the vertex P reached along d (P - d in K): nullopt when every
-// lattice point of K lies on the line of d (the hull is a segment).
+// The next edge direction at the vertex P reached along d (P - d in K), given w with
+// det(d, w) = 1: nullopt when every lattice point of K lies on the line of d (the hull is a
+// segment). Returns the direction e and a w' with det(e, w') = 1 for the next call.
 template <TowerInt I, class Body>
-std::optional<Point2<I>> next_direction(const Body& K, const Point2<I>& P, const Point2<I>& d) {
-  auto bz = ext_gcd(d.x, d.y); // s dx + t dy = 1; w = (-t, s) has det(d, w) = 1
-  Point2<I> w{I(-bz.y), bz.x};
+std::optional<std::pair<Point2<I>, Point2<I>>>
+next_direction(const Body& K, const Point2<I>& P, const Point2<I>& d, const Point2<I>& w) {
   auto r = K.line_range(add(P, w), d);
   if (!r) return std::nullopt;
   Point2<I> din = add_scaled(w, r->second, d);
-  return descend(K, P, din, add(din, d));
+  auto [e, dout] = descend(K, P, din, add(din, d));
+  return std::pair<Point2<I>, Point2<I>>{e, Point2<I>{I(-dout.x), I(-dout.y)}};
+}
+
+// w with det(d, w) = 1 for a primitive d.
+template <TowerInt I>
+Point2<I> unimodular_partner(const Point2<I>& d) {
+  auto bz = ext_gcd(d.x, d.y); // s dx + t dy = 1; w = (-t, s)
+  return {I(-bz.y), bz.x};
 }
 
 // The first edge direction at the lowest-then-leftmost point P0 when P0 + (1, 0) is not in
@@ -308,7 +345,7 @@ std::optional<Point2<I>> first_direction(const Body& K, const Point2<I>& P0) {
   const Point2<I> d{I(1), I(0)}, w{I(0), I(1)};
   if (auto r = K.line_range(add(P0, w), d)) {
     Point2<I> din = add_scaled(w, r->second, d);
-    return descend(K, P0, din, add(din, d));
+    return descend(K, P0, din, add(din, d)).first;
   }
   // Row P0.y + 1 misses the lattice: scan the rows above (thin bodies only).
   std::optional<Point2<I>> best;
@@ -354,14 +391,16 @@ std::vector<Point2<I>> convex_body_hull(const Body& K) {
     d = *e;
   }
   out.push_back(P);
+  Point2<I> w = detail::unimodular_partner(d);
   for (;;) {
-    auto e = detail::next_direction(K, P, d);
+    auto e = detail::next_direction(K, P, d, w);
     if (!e) return out;
-    Point2<I> Q = add_scaled(P, K.line_range(P, *e)->second, *e);
+    d = e->first;
+    w = e->second;
+    Point2<I> Q = add_scaled(P, K.last_inside(P, d), d);
     if (Q == *p0) return out;
     out.push_back(Q);
     P = Q;
-    d = *e;
   }
 }
 

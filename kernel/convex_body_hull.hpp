@@ -60,6 +60,10 @@ struct QuadraticBody {
   I xlo, xhi, ylo, yhi;
   bool contains(const Point2<I>& p) const;
   IntRange<I> line_range(const Point2<I>& q, const Point2<I>& v) const;
+  /// For q in K: the largest k >= 0 with q + k v in K.
+  I last_inside(const Point2<I>& q, const Point2<I>& v) const;
+  /// For q not in K: the least k >= 1 with q + k v in K, if any.
+  std::optional<I> first_inside(const Point2<I>& q, const Point2<I>& v) const;
 };
 
 /// Closed disc of centre (cx, cy) and radius r >= 0 (InvalidArgument for r < 0).
@@ -88,6 +92,12 @@ struct PolygonBody {
   I xlo, xhi, ylo, yhi;
   bool contains(const Point2<I>& p) const;
   IntRange<I> line_range(const Point2<I>& q, const Point2<I>& v) const;
+  I last_inside(const Point2<I>& q, const Point2<I>& v) const { return line_range(q, v)->second; }
+  std::optional<I> first_inside(const Point2<I>& q, const Point2<I>& v) const {
+    auto r = line_range(q, v);
+    if (!r || r->second < 1) return std::nullopt;
+    return r->first;
+  }
 };
 
 /// Classifies the region of hs (empty, unbounded or bounded) and, when bounded, returns the
