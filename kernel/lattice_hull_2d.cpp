@@ -1,6 +1,7 @@
 #include "kernel/lattice_hull_2d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 
 namespace zdg {
@@ -17,10 +18,74 @@ bool yx_less(const Point2<I>& a, const Point2<I>& b) {
 }
 } // namespace
 
+// Akl-Toussaint throw-away: the extreme points in the 8 directions (+-x, +-y, +-(x+y),
+// +-(x-y)) span a convex polygon of hull points; points strictly inside it are no vertices.
+template <TowerInt I>
+std::vector<std::size_t> akl_toussaint_survivors(std::span<const Point2<I>> pts) {
+  const std::size_t n = pts.size();
+  std::array<std::size_t, 8>
+      e{}; // ccw: min y, max x-y, max x, max x+y, max y, min x-y, min x, min x+y
+  std::array<I, 8> best;
+  auto key = [&](int k, const Point2<I>& p) -> I {
+    switch (k) {
+    case 0:
+      return -p.y;
+    case 1:
+      return p.x - p.y;
+    case 2:
+      return p.x;
+    case 3:
+      return p.x + p.y;
+    case 4:
+      return p.y;
+    case 5:
+      return p.y - p.x;
+    case 6:
+      return -p.x;
+    default:
+      return -p.x - p.y;
+    }
+  };
+  for (int k = 0; k < 8; ++k) best[k] = key(k, pts[0]);
+  for (std::size_t i = 1; i < n; ++i) {
+    for (int k = 0; k < 8; ++k) {
+      I v = key(k, pts[i]);
+      if (v > best[k]) {
+        best[k] = v;
+        e[k] = i;
+      }
+    }
+  }
+  std::vector<std::size_t> poly;
+  for (int k = 0; k < 8; ++k) {
+    if (poly.empty() || pts[poly.back()] != pts[e[k]]) poly.push_back(e[k]);
+  }
+  while (poly.size() > 1 && pts[poly.back()] == pts[poly.front()]) poly.pop_back();
+  std::vector<std::size_t> keep;
+  if (poly.size() < 3) {
+    keep.resize(n);
+    std::iota(keep.begin(), keep.end(), std::size_t{0});
+    return keep;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    bool inside = true;
+    for (std::size_t k = 0; k < poly.size() && inside; ++k) {
+      inside = orientation(pts[poly[k]], pts[poly[(k + 1) % poly.size()]], pts[i]) > 0;
+    }
+    if (!inside) keep.push_back(i);
+  }
+  return keep;
+}
+
 template <TowerInt I>
 std::vector<std::size_t> lattice_hull_2d_indices(std::span<const Point2<I>> pts) {
-  std::vector<std::size_t> idx(pts.size());
-  std::iota(idx.begin(), idx.end(), std::size_t{0});
+  std::vector<std::size_t> idx;
+  if (pts.size() > 64) {
+    idx = akl_toussaint_survivors(pts);
+  } else {
+    idx.resize(pts.size());
+    std::iota(idx.begin(), idx.end(), std::size_t{0});
+  }
   std::stable_sort(idx.begin(), idx.end(),
                    [&](std::size_t a, std::size_t b) { return xy_less(pts[a], pts[b]); });
   idx.erase(std::unique(idx.begin(), idx.end(),
