@@ -5,6 +5,7 @@
 #include <boost/multiprecision/gmp.hpp>
 
 #include <cmath>
+#include <string>
 
 namespace zdg {
 
@@ -301,6 +302,15 @@ std::pair<RegionKind, PolygonBody<I>> polygon_body(std::span<const HalfPlane<I>>
 
 namespace detail {
 
+// Scans of lattice rows without a lattice point (thin bodies) stop loudly past this many.
+constexpr long kMaxEmptyRows = 1L << 26;
+
+[[noreturn]] void throw_thin(const std::string& at) {
+  throw InvalidArgument("convex body hull: more than 2^26 lattice rows without a lattice point "
+                        "from row " +
+                        at + " (a long thin region; not supported)");
+}
+
 // The lattice direction closest to d_out (counterclockwise side) with P + e in K, given the
 // unimodular bracket: P + d_in in K, P + d_out not, det(d_out, d_in) = 1.
 // Returns d_in and d_out of the final bracket (det(d_out, d_in) = 1).
@@ -349,9 +359,13 @@ std::optional<Point2<I>> first_direction(const Body& K, const Point2<I>& P0) {
   }
   // Row P0.y + 1 misses the lattice: scan the rows above (thin bodies only).
   std::optional<Point2<I>> best;
+  long empty = 0;
   for (I y = P0.y + 2; y <= K.yhi; ++y) {
     auto r = K.line_range(Point2<I>{I(0), y}, d);
-    if (!r) continue;
+    if (!r) {
+      if (++empty > kMaxEmptyRows) throw_thin(to_string(I(P0.y + 2)));
+      continue;
+    }
     Point2<I> e{I(r->second - P0.x), I(y - P0.y)};
     if (!best || e.x * best->y - e.y * best->x > 0) best = e;
   }
@@ -371,12 +385,14 @@ std::vector<Point2<I>> convex_body_hull(const Body& K) {
   const Point2<I> ex{I(1), I(0)};
   std::optional<Point2<I>> p0;
   I xr;
+  long empty = 0;
   for (I y = K.ylo; y <= K.yhi; ++y) {
     if (auto r = K.line_range(Point2<I>{I(0), y}, ex)) {
       p0 = Point2<I>{r->first, y};
       xr = r->second;
       break;
     }
+    if (++empty > detail::kMaxEmptyRows) detail::throw_thin(to_string(K.ylo));
   }
   if (!p0) return out;
   out.push_back(*p0);
