@@ -140,11 +140,34 @@ TYPED_TEST(LatticeHullVsCgal, Hull3dMatchesCgalConvexHull3) {
         our_planes.insert({to_double(n.x), to_double(n.y), to_double(n.z)});
       RC_ASSERT(our_planes == planes);
       RC_ASSERT(h.normals.size() == planes.size());
-    } else {
+    } else if (h.dimension == 2) {
+      // Coplanar: CGAL's convex_hull_2 of the projection along a coordinate axis that is not
+      // parallel to the plane (injective on it) gives the vertex set.
       RC_ASSERT(h.volume6 == 0);
-      // Lower dimensions: the vertices are the extreme points of the set (checked by CGAL's
-      // 2D hull in the plane for the planar case is covered by lattice_hull_3d_test).
-      RC_ASSERT(!h.vertices.empty());
+      RC_ASSERT(h.facets.size() == 2u);
+      const auto& n = h.normals[0];
+      int drop = n.z != 0 ? 2 : (n.y != 0 ? 1 : 0);
+      std::vector<K::Point_2> proj;
+      for (auto [x, y, z] : raw) {
+        proj.emplace_back(drop == 0 ? y : x, drop == 2 ? y : z);
+      }
+      std::vector<K::Point_2> hull2;
+      CGAL::convex_hull_2(proj.begin(), proj.end(), std::back_inserter(hull2));
+      std::set<std::pair<double, double>> a, b;
+      for (const auto& v : h.vertices) {
+        a.insert({to_double(drop == 0 ? v.y : v.x), to_double(drop == 2 ? v.y : v.z)});
+      }
+      for (const auto& q : hull2) b.insert({CGAL::to_double(q.x()), CGAL::to_double(q.y())});
+      RC_ASSERT(a == b);
+    } else {
+      // A point or a segment: the lexicographic extremes.
+      RC_ASSERT(h.volume6 == 0);
+      RC_ASSERT(h.facets.empty());
+      auto lo = *std::min_element(raw.begin(), raw.end()),
+           hi = *std::max_element(raw.begin(), raw.end());
+      RC_ASSERT(to_double(h.vertices.front().x) == static_cast<double>(lo[0]));
+      RC_ASSERT(to_double(h.vertices.back().z) == static_cast<double>(hi[2]));
+      RC_ASSERT(h.vertices.size() == (lo == hi ? 1u : 2u));
     }
   });
 }
