@@ -52,7 +52,13 @@ void BM_DiscHullOn(benchmark::State& state) {
     benchmark::DoNotOptimize(h);
   }
 }
+BENCHMARK(BM_DiscHullOn<Int64>)
+    ->Arg(1000)
+    ->Arg(1000000)
+    ->Arg(1000000000)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_DiscHullOn<Int128>)->Arg(1000000)->Arg(1000000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DiscHullOn<BigInt>)->Arg(1000000)->Unit(benchmark::kMillisecond);
 
 std::vector<Point2<Int64>> disc_points(std::int64_t r) {
   std::vector<Point2<Int64>> p;
