@@ -1,9 +1,11 @@
 #include "kernel/convex_body_hull.hpp"
 
 #include "arith/error.hpp"
+#include "kernel/lattice_polygon.hpp"
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -82,8 +84,8 @@ I lcm(const I& a, const I& b) {
 
 template <TowerInt I>
 bool QuadraticBody<I>::contains(const Point2<I>& p) const {
-  I u = D * p.x - Cx, v = D * p.y - Cy;
-  return alpha * u * u + beta * v * v <= gamma;
+  I du = D * p.x - Cx, dv = D * p.y - Cy;
+  return alpha * du * du + beta * dv * dv <= gamma;
 }
 
 template <TowerInt I>
@@ -137,6 +139,8 @@ QuadraticBody<I> make_quadratic(const Rational<I>& cx, const Rational<I>& cy, I 
   b.xhi = (cx + ax).floor();
   b.ylo = (cy - ay).ceil();
   b.yhi = (cy + ay).floor();
+  b.tlo = b.ylo;
+  b.thi = b.yhi;
   return b;
 }
 } // namespace
@@ -286,6 +290,26 @@ std::pair<RegionKind, PolygonBody<I>> polygon_body(std::span<const HalfPlane<I>>
     return {bv.feasible.empty() ? RegionKind::empty : RegionKind::unbounded, body};
   }
   if (vs.feasible.empty()) return {RegionKind::empty, body};
+  // A flat direction: the lattice width direction of the vertices scaled to integers.
+  {
+    I L = 1;
+    for (const auto& vtx : vs.feasible) L = lcm(L, vtx[2]);
+    std::vector<Point2<I>> scaled;
+    for (const auto& [X, Y, det] : vs.feasible) scaled.push_back({X * (L / det), Y * (L / det)});
+    std::sort(scaled.begin(), scaled.end(), [](const Point2<I>& a, const Point2<I>& b) {
+      return a.x < b.x || (a.x == b.x && a.y < b.y);
+    });
+    scaled.erase(std::unique(scaled.begin(), scaled.end()), scaled.end());
+    body.u = lattice_width<I>(std::span<const Point2<I>>(scaled)).direction;
+    bool first_t = true;
+    for (const auto& [X, Y, det] : vs.feasible) {
+      I num = body.u.x * X + body.u.y * Y;
+      I lo = ceil_div(num, det), hi = floor_div(num, det);
+      if (first_t || lo < body.tlo) body.tlo = lo;
+      if (first_t || hi > body.thi) body.thi = hi;
+      first_t = false;
+    }
+  }
   bool first = true;
   for (const auto& [X, Y, det] : vs.feasible) {
     I xl = ceil_div(X, det), xh = floor_div(X, det), yl = ceil_div(Y, det), yh = floor_div(Y, det);
@@ -348,25 +372,41 @@ Point2<I> unimodular_partner(const Point2<I>& d) {
   return {I(-bz.y), bz.x};
 }
 
-// The first edge direction at the lowest-then-leftmost point P0 when P0 + (1, 0) is not in
-// K: the lattice direction of least angle in (0, pi).
+// The lattice scan frame of a body: lines <u, x> = t, each parametrized as q(t) + k v with
+// det(v, w) = 1 and <u, w> = 1 (for u = (0, 1): rows, v = (1, 0), w = (0, 1)).
+template <TowerInt I>
+struct ScanFrame {
+  Point2<I> u, v, w;
+  Point2<I> origin(const I& t) const { return {t * w.x, t * w.y}; } // <u, origin> = t
+};
+
+template <TowerInt I>
+ScanFrame<I> scan_frame(const Point2<I>& u) {
+  auto bz = ext_gcd(u.x, u.y); // s ux + r uy = 1: w = (s, r)
+  return {u, Point2<I>{u.y, I(-u.x)}, Point2<I>{bz.x, bz.y}};
+}
+
+// The first edge direction at the start vertex P0 (on the first nonempty scan line, the
+// first lattice point along v) when P0 + v is not in K: the lattice direction of least angle
+// from v in (0, pi).
 template <TowerInt I, class Body>
-std::optional<Point2<I>> first_direction(const Body& K, const Point2<I>& P0) {
-  const Point2<I> d{I(1), I(0)}, w{I(0), I(1)};
-  if (auto r = K.line_range(add(P0, w), d)) {
-    Point2<I> din = add_scaled(w, r->second, d);
-    return descend(K, P0, din, add(din, d)).first;
+std::optional<Point2<I>> first_direction(const Body& K, const ScanFrame<I>& F, const Point2<I>& P0,
+                                         const I& t0) {
+  if (auto r = K.line_range(add(P0, F.w), F.v)) {
+    Point2<I> din = add_scaled(F.w, r->second, F.v);
+    return descend(K, P0, din, add(din, F.v)).first;
   }
-  // Row P0.y + 1 misses the lattice: scan the rows above (thin bodies only).
+  // The next scan line misses the lattice: scan the lines beyond (thin bodies only).
   std::optional<Point2<I>> best;
   long empty = 0;
-  for (I y = P0.y + 2; y <= K.yhi; ++y) {
-    auto r = K.line_range(Point2<I>{I(0), y}, d);
+  for (I t = t0 + 2; t <= K.thi; ++t) {
+    auto r = K.line_range(F.origin(t), F.v);
     if (!r) {
-      if (++empty > kMaxEmptyRows) throw_thin(to_string(I(P0.y + 2)));
+      if (++empty > kMaxEmptyRows) throw_thin(to_string(I(t0 + 2)));
       continue;
     }
-    Point2<I> e{I(r->second - P0.x), I(y - P0.y)};
+    Point2<I> q = add_scaled(F.origin(t), r->second, F.v);
+    Point2<I> e{I(q.x - P0.x), I(q.y - P0.y)};
     if (!best || e.x * best->y - e.y * best->x > 0) best = e;
   }
   if (best) {
@@ -381,43 +421,52 @@ std::optional<Point2<I>> first_direction(const Body& K, const Point2<I>& P0) {
 template <TowerInt I, class Body>
 std::vector<Point2<I>> convex_body_hull(const Body& K) {
   std::vector<Point2<I>> out;
-  if (K.ylo > K.yhi || K.xlo > K.xhi) return out;
-  const Point2<I> ex{I(1), I(0)};
+  if (K.tlo > K.thi || K.ylo > K.yhi || K.xlo > K.xhi) return out;
+  const auto F = detail::scan_frame(K.u);
+  // The first scan line meeting the lattice; its first point along v is a hull vertex.
   std::optional<Point2<I>> p0;
-  I xr;
+  I kr, t0;
   long empty = 0;
-  for (I y = K.ylo; y <= K.yhi; ++y) {
-    if (auto r = K.line_range(Point2<I>{I(0), y}, ex)) {
-      p0 = Point2<I>{r->first, y};
-      xr = r->second;
+  for (I t = K.tlo; t <= K.thi; ++t) {
+    if (auto r = K.line_range(F.origin(t), F.v)) {
+      p0 = add_scaled(F.origin(t), r->first, F.v);
+      kr = r->second - r->first;
+      t0 = t;
       break;
     }
-    if (++empty > detail::kMaxEmptyRows) detail::throw_thin(to_string(K.ylo));
+    if (++empty > detail::kMaxEmptyRows) detail::throw_thin(to_string(K.tlo));
   }
   if (!p0) return out;
   out.push_back(*p0);
   Point2<I> P, d;
-  if (xr > p0->x) {
-    P = {xr, p0->y};
-    d = ex;
+  if (kr > 0) {
+    P = add_scaled(*p0, kr, F.v);
+    d = F.v;
   } else {
-    auto e = detail::first_direction(K, *p0);
+    auto e = detail::first_direction(K, F, *p0, t0);
     if (!e) return out;
-    P = add_scaled(*p0, K.line_range(*p0, *e)->second, *e);
+    P = add_scaled(*p0, K.last_inside(*p0, *e), *e);
     d = *e;
   }
   out.push_back(P);
   Point2<I> w = detail::unimodular_partner(d);
   for (;;) {
     auto e = detail::next_direction(K, P, d, w);
-    if (!e) return out;
+    if (!e) break;
     d = e->first;
     w = e->second;
     Point2<I> Q = add_scaled(P, K.last_inside(P, d), d);
-    if (Q == *p0) return out;
+    if (Q == *p0) break;
     out.push_back(Q);
     P = Q;
   }
+  // Start at the lowest, then leftmost vertex (a segment: its lowest-then-leftmost end).
+  auto lowest =
+      std::min_element(out.begin(), out.end(), [](const Point2<I>& a, const Point2<I>& b) {
+        return a.y < b.y || (a.y == b.y && a.x < b.x);
+      });
+  std::rotate(out.begin(), lowest, out.end());
+  return out;
 }
 
 template <TowerInt I>

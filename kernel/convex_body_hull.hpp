@@ -24,9 +24,11 @@
 // point of K lies on the line of the last edge (P - d in K makes the slice of K at level 1
 // contain floor(a/b) whenever a d + b w is in K - P). The edge is then followed to its end
 // by one more line_range call. Time O(V log r) oracle calls for V vertices (V =
-// Theta(r^{2/3}) for a disc of radius r: Balog-Barany 1991), plus finding the first vertex,
-// which scans lattice rows from the bottom of K until one meets K (one row for a disc or
-// ellipse whose radii are >= 1; a long thin sliver of a polygon may cost one call per row).
+// Theta(r^{2/3}) for a disc of radius r: Balog-Barany 1991), plus finding the first vertex:
+// lattice lines <u, x> = t are scanned from the lowest t until one meets K (rows for a disc or
+// ellipse: one or two; for a polygon u is its lattice-width direction, so a thin polygon
+// needs few lines; past 2^26 empty lines in a row the walk stops with InvalidArgument).
+// The output is rotated to start at the lowest-then-leftmost vertex.
 // Half-plane regions are first classified exactly (empty, unbounded, bounded) and bounded in
 // O(m^3) rational arithmetic for m half-planes.
 //
@@ -58,6 +60,9 @@ template <TowerInt I>
 struct QuadraticBody {
   I D, Cx, Cy, alpha, beta, gamma;
   I xlo, xhi, ylo, yhi;
+  // The walk finds its first vertex on the lattice lines <u, x> = t, t = tlo, tlo + 1, ...
+  Point2<I> u{I(0), I(1)};
+  I tlo{0}, thi{-1};
   bool contains(const Point2<I>& p) const;
   IntRange<I> line_range(const Point2<I>& q, const Point2<I>& v) const;
   /// For q in K: the largest k >= 0 with q + k v in K.
@@ -90,6 +95,10 @@ template <TowerInt I>
 struct PolygonBody {
   std::vector<std::array<I, 3>> rows;
   I xlo, xhi, ylo, yhi;
+  // Scan lines <u, x> = t along a flat direction u of the polygon (its lattice-width
+  // direction, from the generalized Gauss reduction): few lines for a thin polygon.
+  Point2<I> u{I(0), I(1)};
+  I tlo{0}, thi{-1};
   bool contains(const Point2<I>& p) const;
   IntRange<I> line_range(const Point2<I>& q, const Point2<I>& v) const;
   I last_inside(const Point2<I>& q, const Point2<I>& v) const { return line_range(q, v)->second; }

@@ -152,6 +152,26 @@ TYPED_TEST(ConvexBodyHull, ThinSliversMatchEnumeration) {
   });
 }
 
+// A long thin diagonal sliver 0 <= 1000 y - 999 x <= 1/2, 0 <= x <= 10^7: its lattice
+// points are (1000 k, 999 k), k = 0..10^4 (a segment). Scanning rows would meet 10^7 rows,
+// almost all empty; the scan along the flat direction meets one line.
+TEST(ConvexBodyHullThin, LongDiagonalSliverIsScannedAlongItsFlatDirection) {
+  using I = Int64;
+  std::vector<HalfPlane<I>> hs = {{rat<I>(-999), rat<I>(1000), rat<I>(1, 2)},
+                                  {rat<I>(999), rat<I>(-1000), rat<I>(0)},
+                                  {rat<I>(1), rat<I>(0), rat<I>(10000000)},
+                                  {rat<I>(-1), rat<I>(0), rat<I>(0)}};
+  auto h = halfplane_hull<I>(std::span<const HalfPlane<I>>(hs));
+  ASSERT_EQ(h.region, RegionKind::bounded);
+  EXPECT_EQ(h.vertices, (std::vector<Point2<I>>{{0, 0}, {10000000, 9990000}}));
+  // Up to 3 instead of 1/2: the lattice points are (s + 1000 j, s + 999 j) on the lines
+  // 1000 y - 999 x = s, s = 0..3; the hull is the parallelogram of the ends of s = 0 and 3.
+  hs[0].c = rat<I>(3);
+  auto g = halfplane_hull<I>(std::span<const HalfPlane<I>>(hs));
+  EXPECT_EQ(g.vertices,
+            (std::vector<Point2<I>>{{0, 0}, {10000000, 9990000}, {9999003, 9989004}, {3, 3}}));
+}
+
 TEST(ConvexBodyHullRegion, ClassifiesEmptyUnboundedAndBounded) {
   using I = Int64;
   auto kind = [](std::vector<std::array<std::int64_t, 3>> rows) {
