@@ -5,8 +5,10 @@
 //   points excluded); duplicates are allowed. Degenerate sets: one distinct point gives one
 //   vertex, collinear points give the two endpoints (lowest-then-leftmost first).
 //
-// Algorithm: Andrew's monotone chain (Andrew 1979, "Another efficient algorithm for convex
-// hulls in two dimensions"), O(n log n), decided by the exact orientation predicate
+// Algorithm: past 64 points the Akl-Toussaint throw-away (Akl, Toussaint 1978: points strictly
+// inside the polygon of the extremes in 8 directions are dropped, O(n)), then Andrew's
+// monotone chain (Andrew 1979, "Another efficient algorithm for convex hulls in two
+// dimensions"), O(n log n), decided by the exact orientation predicate
 // orient(a, b, c) = sign((b - a) x (c - a)).
 // Width: orientation needs about 2 b + 2 bits for b-bit coordinates, so Int64 serves
 // coordinates below 2^30 in magnitude for sure; lattice_hull_2d() is exact by escalation
