@@ -4,6 +4,7 @@
 #include "kernel/convex_body_hull.hpp"
 
 #include "kernel/lattice_hull_2d.hpp"
+#include "kernel/lattice_polygon.hpp"
 #include "tests/support/tower.hpp"
 
 #include <cstdlib>
@@ -204,6 +205,21 @@ TEST(ConvexBodyHullExample, RadiusFiveDisc) {
   std::vector<Point2<Int64>> want = {{0, -5}, {3, -4}, {4, -3}, {5, 0},  {4, 3},   {3, 4},
                                      {0, 5},  {-3, 4}, {-4, 3}, {-5, 0}, {-4, -3}, {-3, -4}};
   EXPECT_EQ(v, want);
+}
+
+// Gauss circle problem: N(r) = #{(x, y) : x^2 + y^2 <= r^2} (OEIS A000328) from the hull
+// alone, by Pick: N = interior + boundary. N(10^3) = 3141549, N(10^4) = 314159053,
+// N(10^6) = 3141592649625 (the classical table of the circle problem).
+TEST(ConvexBodyHullExample, GaussCircleCountsByPick) {
+  auto count = [](std::int64_t r) {
+    auto v = disc_hull<Int64>(rat<Int64>(0), rat<Int64>(0), rat<Int64>(r));
+    auto m = lattice_polygon_measures<Int64>(std::span<const Point2<Int64>>(v));
+    return m.interior + m.boundary;
+  };
+  EXPECT_EQ(count(5), 81);
+  EXPECT_EQ(count(1000), 3141549);
+  EXPECT_EQ(count(10000), 314159053);
+  EXPECT_EQ(count(1000000), 3141592649625);
 }
 
 // Exact by escalation: a disc centred near 2^62 is the translate of the same disc at the
