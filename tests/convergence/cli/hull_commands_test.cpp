@@ -12,14 +12,22 @@ namespace {
 
 using zdg::test::run_zdg;
 
-std::string write_file(const std::string& name, const std::string& text) {
-  auto dir = zdg::test::scratch_dir("hull_input");
-  auto p = dir / name;
-  std::ofstream(p) << text;
-  return p.string();
-}
+// Input files of one test, in a scratch directory removed at the end of the test.
+class HullCli : public ::testing::Test {
+protected:
+  void SetUp() override { dir_ = zdg::test::scratch_dir("hull_input"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::string write_file(const std::string& name, const std::string& text) {
+    auto p = dir_ / name;
+    std::ofstream(p) << text;
+    return p.string();
+  }
 
-TEST(HullCli, DiscRadiusFive) {
+private:
+  std::filesystem::path dir_;
+};
+
+TEST_F(HullCli, DiscRadiusFive) {
   auto r = run_zdg("hull disc 0 0 5 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
@@ -33,7 +41,7 @@ TEST(HullCli, DiscRadiusFive) {
   EXPECT_EQ(j["area2"], "148");
 }
 
-TEST(HullCli, DiscWithRationalAndDecimalData) {
+TEST_F(HullCli, DiscWithRationalAndDecimalData) {
   auto a = run_zdg("hull disc -3/4 0.5 1000.5 --json");
   ASSERT_EQ(a.status, 0) << a.err;
   auto j = nlohmann::json::parse(a.out);
@@ -43,7 +51,7 @@ TEST(HullCli, DiscWithRationalAndDecimalData) {
   EXPECT_EQ(nlohmann::json::parse(b.out), j);
 }
 
-TEST(HullCli, EllipseAndPoints2d) {
+TEST_F(HullCli, EllipseAndPoints2d) {
   auto e = run_zdg("hull ellipse 0 0 3 1/2 --json");
   ASSERT_EQ(e.status, 0) << e.err;
   auto j = nlohmann::json::parse(e.out);
@@ -57,7 +65,7 @@ TEST(HullCli, EllipseAndPoints2d) {
                                       "boundary_points":"8","interior_points":"3"})"));
 }
 
-TEST(HullCli, Points3dCube) {
+TEST_F(HullCli, Points3dCube) {
   std::string text;
   for (int z = 0; z <= 2; ++z) {
     for (int y = 0; y <= 2; ++y) {
@@ -74,7 +82,7 @@ TEST(HullCli, Points3dCube) {
   EXPECT_EQ(j["vertices"][0], nlohmann::json({"0", "0", "0"}));
 }
 
-TEST(HullCli, HugeCoordinates) {
+TEST_F(HullCli, HugeCoordinates) {
   // Beyond int64: parsed as BigInt, computed by escalation.
   auto f =
       write_file("big.txt", "0 0\n100000000000000000000000 0\n0 100000000000000000000000\n1 1\n");
@@ -85,7 +93,7 @@ TEST(HullCli, HugeCoordinates) {
   EXPECT_EQ(j["area2"], "10000000000000000000000000000000000000000000000");
 }
 
-TEST(HullCli, HalfPlanes) {
+TEST_F(HullCli, HalfPlanes) {
   auto b =
       run_zdg("hull halfplanes '" + write_file("b.txt", "1 1 10\n-1 0 0\n0 -1 1/2\n") + "' --json");
   ASSERT_EQ(b.status, 0) << b.err;
@@ -101,7 +109,7 @@ TEST(HullCli, HalfPlanes) {
   EXPECT_EQ(nlohmann::json::parse(e.out)["region"], "empty");
 }
 
-TEST(HullCli, BadInputExitsTwoWithTheLine) {
+TEST_F(HullCli, BadInputExitsTwoWithTheLine) {
   auto empty = run_zdg("hull points '" + write_file("empty.txt", "") + "'");
   EXPECT_EQ(empty.status, 2);
   EXPECT_NE(empty.err.find("empty"), std::string::npos);
