@@ -10,12 +10,13 @@
 //
 // Algorithm: a pre-filter keeps the points extreme in their axis-parallel lines (a point
 //   strictly between two others on a line is no vertex; this leaves O(n^{2/3}) points of a
-//   dense lattice body), then randomized incremental construction with conflict lists in the
-//   order of Quickhull (Barber, Dobkin, Huhdanpaa, ACM TOMS 1996; Clarkson-Shor 1989):
-//   expected O(n log n). Every decision is an exact sign: "p strictly above the plane of a
-//   triangle" is n . p > n . a with n = (b - a) x (c - a). Points not strictly above any
-//   face are discarded, so coplanar points never become false vertices; flat triangles are
-//   merged and collinear boundary points dropped at the end.
+//   dense lattice body), then incremental construction with conflict lists, each face's
+//   furthest conflict point inserted first (Quickhull: Barber, Dobkin, Huhdanpaa, ACM TOMS
+//   1996): O(n log n) on typical inputs, O(n^2) in the worst case. Every decision is an exact
+//   sign: "p strictly above the plane of a triangle" is n . p > n . a with
+//   n = (b - a) x (c - a). Points not strictly above any face are discarded, so coplanar
+//   points never become false vertices; flat triangles are merged and collinear boundary
+//   points dropped at the end.
 // Width: n has 2b + 1 bits for b-bit coordinates and n . p 3b + 3 bits: Int64 serves
 //   coordinates below 2^19 for sure; lattice_hull_3d() escalates (Int64 -> Int128 -> BigInt).
 //   The lattice point count scans the xy-columns of the bounding box: O(X Y F).
@@ -44,7 +45,7 @@ struct LatticeHull3d {
 template <TowerInt I>
 LatticeHull3d<I> lattice_hull_3d_on(std::span<const Point3<I>> pts);
 
-/// The hull of int64 points, exact by escalation (results as BigInt), with the type that
+/// The hull of points of any size, exact by escalation (results as BigInt), with the type that
 /// served.
 struct LatticeHull3dExact {
   LatticeHull3d<BigInt> hull;
@@ -52,8 +53,8 @@ struct LatticeHull3dExact {
 };
 LatticeHull3dExact lattice_hull_3d_exact(std::span<const Point3<BigInt>> pts);
 
-/// The hull on Int64 points when they fit (coordinates below 2^19 in magnitude are always
-/// safe); a convenience for benchmarks and tests: escalates internally, converting back.
+/// The hull of points of I, exact by escalation (computed on I first, then on BigInt); the
+/// results are converted back to I (OverflowError if a normal or the volume does not fit).
 template <TowerInt I>
 LatticeHull3d<I> lattice_hull_3d(std::span<const Point3<I>> pts);
 
