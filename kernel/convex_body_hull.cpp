@@ -139,8 +139,15 @@ QuadraticBody<I> make_quadratic(const Rational<I>& cx, const Rational<I>& cy, I 
   b.xhi = (cx + ax).floor();
   b.ylo = (cy - ay).ceil();
   b.yhi = (cy + ay).floor();
-  b.tlo = b.ylo;
-  b.thi = b.yhi;
+  // Scan along the shorter axis (a tall ellipse by columns): few lines, each long.
+  if (b.yhi - b.ylo > b.xhi - b.xlo) {
+    b.u = {I(1), I(0)};
+    b.tlo = b.xlo;
+    b.thi = b.xhi;
+  } else {
+    b.tlo = b.ylo;
+    b.thi = b.yhi;
+  }
   return b;
 }
 } // namespace

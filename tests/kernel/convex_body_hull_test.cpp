@@ -173,6 +173,18 @@ TEST(ConvexBodyHullThin, LongDiagonalSliverIsScannedAlongItsFlatDirection) {
             (std::vector<Point2<I>>{{0, 0}, {10000000, 9990000}, {9999003, 9989004}, {3, 3}}));
 }
 
+// A needle-like ellipse (semi-axes 1/2 and 10^9): scanned by columns, one or two lines.
+TEST(ConvexBodyHullThin, TallThinEllipse) {
+  using Q = Rational<BigInt>;
+  auto r = ellipse_hull_exact(Q(BigInt(1), BigInt(3)), Q(0), Q(BigInt(1), BigInt(2)),
+                              Q(BigInt(1000000000)));
+  // Only the column x = 0 meets the lattice: y^2 <= 10^18 (1 - 4/9), |y| <= 745355992.
+  ASSERT_EQ(r.vertices.size(), 2u);
+  EXPECT_EQ(r.vertices[0].y, BigInt(-745355992));
+  EXPECT_EQ(r.vertices[1].y, BigInt(745355992));
+  EXPECT_EQ(r.vertices[1].x, BigInt(0));
+}
+
 TEST(ConvexBodyHullRegion, ClassifiesEmptyUnboundedAndBounded) {
   using I = Int64;
   auto kind = [](std::vector<std::array<std::int64_t, 3>> rows) {
