@@ -25,8 +25,9 @@
 // contain floor(a/b) whenever a d + b w is in K - P). The edge is then followed to its end
 // by one more line_range call. Time O(V log r) oracle calls for V vertices (V =
 // Theta(r^{2/3}) for a disc of radius r: Balog-Barany 1991), plus finding the first vertex:
-// lattice lines <u, x> = t are scanned from the lowest t until one meets K (rows for a disc or
-// ellipse: one or two; for a polygon u is its lattice-width direction, so a thin polygon
+// lattice lines <u, x> = t are scanned from the lowest t until one meets K (rows or columns,
+// along the shorter axis, for a disc or ellipse: one or two lines; for a polygon u is its
+// lattice-width direction, so a thin polygon
 // needs few lines; past 2^26 empty lines in a row the walk stops with InvalidArgument).
 // The output is rotated to start at the lowest-then-leftmost vertex.
 // Half-plane regions are first classified exactly (empty, unbounded, bounded) and bounded in
