@@ -27,15 +27,15 @@
 // Theta(r^{2/3}) for a disc of radius r: Balog-Barany 1991), plus finding the first vertex:
 // lattice lines <u, x> = t are scanned from the lowest t until one meets K (rows or columns,
 // along the shorter axis, for a disc or ellipse: one or two lines; for a polygon u is its
-// lattice-width direction, so a thin polygon
-// needs few lines; past 2^26 empty lines in a row the walk stops with InvalidArgument).
-// The output is rotated to start at the lowest-then-leftmost vertex.
-// Half-plane regions are first classified exactly (empty, unbounded, bounded) and bounded in
-// O(m^3) rational arithmetic for m half-planes.
+// lattice-width direction, so a thin polygon needs few lines; past 2^26 empty lines in a row the
+// walk stops with InvalidArgument). The output is rotated to start at the lowest-then-leftmost
+// vertex. Half-plane regions are first classified exactly (empty, unbounded, bounded) and bounded
+// in O(m^3) rational arithmetic for m half-planes.
 //
-// Width: the quadratic oracles square D x - Cx (D the common denominator of the data): for a
-// disc of radius r with integer data Int64 serves up to about r = 2^20..2^30 depending on the
-// edge lengths; the *_exact entry points escalate Int64 -> Int128 -> BigInt on OverflowError.
+// Width: the quadratic oracles square D x - Cx (D the common denominator of the data), so
+// Int64 needs about D r < 2^31 (a disc of integer radius 10^9 at an integer centre still
+// runs on Int64: the walk's lines are nearly tangent, which keeps the products small); the
+// *_exact entry points escalate Int64 -> Int128 -> BigInt on OverflowError.
 #pragma once
 
 #include "arith/escalate.hpp"
