@@ -1,0 +1,70 @@
+// Convex hull of a digitized shape: conv({z in B cap Z^d : inside(z)}) for any inside
+// predicate on an integer box B (d = 2 or 3), e.g. the Gauss digitization of a shape at a
+// grid step (convergence experiments).
+//
+// Only the extreme points of each axis-parallel column can be hull vertices, so each column
+// of the box is scanned from both ends until the predicate holds: for a convex shape this
+// costs O(columns + boundary) predicate calls, O(|B|) for an arbitrary one (every call is
+// the caller's, exact or not as the predicate is). The column extremes then go to the exact
+// hull (lattice_hull_2d / lattice_hull_3d, exact by escalation). The box is given by int64
+// bounds; results are on Int64.
+#pragma once
+
+#include "arith/error.hpp"
+#include "arith/integer.hpp"
+#include "kernel/lattice_hull_2d.hpp"
+#include "kernel/lattice_hull_3d.hpp"
+#include "kernel/point.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace zdg {
+
+struct Box2 {
+  std::int64_t x0, y0, x1, y1; // inclusive
+};
+struct Box3 {
+  std::int64_t x0, y0, z0, x1, y1, z1; // inclusive
+};
+
+/// Hull vertices (counterclockwise from the lowest-then-leftmost) of the points (x, y) of the
+/// box with inside(x, y) true.
+template <class Inside>
+std::vector<Point2<Int64>> digitized_shape_hull_2d(const Box2& box, Inside&& inside) {
+  if (box.x0 > box.x1 || box.y0 > box.y1) return {};
+  std::vector<Point2<Int64>> ext;
+  for (std::int64_t x = box.x0; x <= box.x1; ++x) {
+    std::int64_t lo = box.y0;
+    while (lo <= box.y1 && !inside(x, lo)) ++lo;
+    if (lo > box.y1) continue;
+    std::int64_t hi = box.y1;
+    while (hi > lo && !inside(x, hi)) --hi;
+    ext.push_back({x, lo});
+    if (hi != lo) ext.push_back({x, hi});
+  }
+  return lattice_hull_2d<Int64>(std::span<const Point2<Int64>>(ext));
+}
+
+/// The exact 3D hull of the points (x, y, z) of the box with inside(x, y, z) true.
+template <class Inside>
+LatticeHull3d<Int64> digitized_shape_hull_3d(const Box3& box, Inside&& inside) {
+  std::vector<Point3<Int64>> ext;
+  if (box.x0 <= box.x1 && box.y0 <= box.y1 && box.z0 <= box.z1) {
+    for (std::int64_t x = box.x0; x <= box.x1; ++x) {
+      for (std::int64_t y = box.y0; y <= box.y1; ++y) {
+        std::int64_t lo = box.z0;
+        while (lo <= box.z1 && !inside(x, y, lo)) ++lo;
+        if (lo > box.z1) continue;
+        std::int64_t hi = box.z1;
+        while (hi > lo && !inside(x, y, hi)) --hi;
+        ext.push_back({x, y, lo});
+        if (hi != lo) ext.push_back({x, y, hi});
+      }
+    }
+  }
+  return lattice_hull_3d<Int64>(std::span<const Point3<Int64>>(ext));
+}
+
+} // namespace zdg

@@ -1,0 +1,152 @@
+#include "kernel/lattice_polygon.hpp"
+
+#include "arith/error.hpp"
+
+#include <utility>
+
+namespace zdg {
+
+template <TowerInt I>
+I polygon_area2(std::span<const Point2<I>> v) {
+  I s = 0;
+  const std::size_t n = v.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& a = v[i];
+    const auto& b = v[(i + 1) % n];
+    s += a.x * b.y - b.x * a.y;
+  }
+  return s;
+}
+
+template <TowerInt I>
+LatticePolygonMeasures<I> lattice_polygon_measures(std::span<const Point2<I>> v) {
+  LatticePolygonMeasures<I> m;
+  const std::size_t n = v.size();
+  if (n == 0) return m;
+  if (n == 1) {
+    m.boundary = 1;
+    return m;
+  }
+  if (n == 2) {
+    m.boundary = gcd(I(v[1].x - v[0].x), I(v[1].y - v[0].y)) + 1;
+    return m;
+  }
+  m.area2 = polygon_area2(v);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& a = v[i];
+    const auto& b = v[(i + 1) % n];
+    m.boundary += gcd(I(b.x - a.x), I(b.y - a.y));
+  }
+  m.interior = (m.area2 - m.boundary + 2) / 2;
+  return m;
+}
+
+LatticePolygonMeasures<BigInt> lattice_polygon_measures_exact(std::span<const Point2<BigInt>> v) {
+  auto r = escalate([&]<class I>(std::type_identity<I>) {
+    std::vector<Point2<I>> w;
+    w.reserve(v.size());
+    for (const auto& p : v) w.push_back({int_cast<I>(p.x), int_cast<I>(p.y)});
+    auto m = lattice_polygon_measures<I>(std::span<const Point2<I>>(w));
+    return LatticePolygonMeasures<BigInt>{to_bigint(m.area2), to_bigint(m.boundary),
+                                          to_bigint(m.interior)};
+  });
+  return r.value;
+}
+
+namespace {
+
+// w(u) = max <u, p> - min <u, p>: a norm on R^2 when the polygon is full-dimensional.
+template <TowerInt I>
+I width_along(std::span<const Point2<I>> v, const Point2<I>& u) {
+  I lo = u.x * v[0].x + u.y * v[0].y, hi = lo;
+  for (const auto& p : v) {
+    I s = u.x * p.x + u.y * p.y;
+    if (s < lo) lo = s;
+    if (s > hi) hi = s;
+  }
+  return hi - lo;
+}
+
+// The integer mu minimizing the convex function f(mu) = w(b - mu a).
+template <TowerInt I>
+I best_multiple(std::span<const Point2<I>> v, const Point2<I>& a, const Point2<I>& b) {
+  auto f = [&](const I& mu) { return width_along(v, Point2<I>{b.x - mu * a.x, b.y - mu * a.y}); };
+  I f0 = f(I(0));
+  int dir = 0;
+  if (f(I(1)) < f0) {
+    dir = 1;
+  } else if (f(I(-1)) < f0) {
+    dir = -1;
+  } else {
+    return I(0);
+  }
+  // Gallop to a point where f stops decreasing, then bisect on the sign of f(m+1) - f(m).
+  I lo = 0, step = 1, hi;
+  for (;;) {
+    I cand = lo + step * dir;
+    if (f(cand + dir) < f(cand)) {
+      lo = cand;
+      step = step * 2;
+    } else {
+      hi = cand;
+      break;
+    }
+  }
+  // f decreases from lo to some point <= hi (in direction dir); find the last decreasing step.
+  I a0 = lo, b0 = hi; // invariant: f(a0 + dir) < f(a0), and f(b0 + dir) >= f(b0)
+  while (abs(I(b0 - a0)) > 1) {
+    I mid = a0 + (b0 - a0) / 2;
+    if (f(mid + dir) < f(mid)) {
+      a0 = mid;
+    } else {
+      b0 = mid;
+    }
+  }
+  return b0;
+}
+
+} // namespace
+
+template <TowerInt I>
+LatticeWidth<I> lattice_width(std::span<const Point2<I>> v) {
+  if (v.empty()) throw InvalidArgument("lattice width of an empty set");
+  LatticeWidth<I> r;
+  if (v.size() <= 2) { // a point or a segment: width 0 along a normal of the segment
+    if (v.size() == 2) {
+      I dx = v[1].x - v[0].x, dy = v[1].y - v[0].y;
+      I g = gcd(dx, dy);
+      r.direction = {I(-dy / g), I(dx / g)};
+    }
+    return r;
+  }
+  Point2<I> a{I(1), I(0)}, b{I(0), I(1)};
+  I wa = width_along(v, a), wb = width_along(v, b);
+  if (wb < wa) {
+    std::swap(a, b);
+    std::swap(wa, wb);
+  }
+  // Generalized Gauss reduction: w(a) <= w(b); reduce b by the best multiple of a; swap
+  // while that gets shorter than a. Ends with a a shortest nonzero vector for w.
+  for (;;) {
+    I mu = best_multiple(v, a, b);
+    b = {b.x - mu * a.x, b.y - mu * a.y};
+    wb = width_along(v, b);
+    if (wb >= wa) break;
+    std::swap(a, b);
+    std::swap(wa, wb);
+  }
+  r.width = wa;
+  r.direction = a;
+  return r;
+}
+
+#define ZDG_INSTANTIATE(I)                                                                         \
+  template I polygon_area2<I>(std::span<const Point2<I>>);                                         \
+  template LatticePolygonMeasures<I> lattice_polygon_measures<I>(std::span<const Point2<I>>);      \
+  template LatticeWidth<I> lattice_width<I>(std::span<const Point2<I>>);
+ZDG_INSTANTIATE(Int64)
+ZDG_INSTANTIATE(Int128)
+ZDG_INSTANTIATE(BigInt)
+#undef ZDG_INSTANTIATE
+
+} // namespace zdg
