@@ -3,6 +3,7 @@
 #include "arith/floor_sum.hpp"
 #include "arith/stern_brocot.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -256,6 +257,79 @@ DslSubsegment<I> subsegment_bottom_up(const I& a, const I& b, const I& mu, const
   }
 }
 
+namespace {
+
+// Smallest u + i q >= x, largest u + i q <= x (q > 0).
+template <TowerInt I>
+I lattice_ceil(const I& u, const I& q, const I& x) {
+  return u + ceil_div(I(x - u), q) * q;
+}
+template <TowerInt I>
+I lattice_floor(const I& u, const I& q, const I& x) {
+  return u + floor_div(I(x - u), q) * q;
+}
+
+} // namespace
+
+template <TowerInt I>
+DslSubsegment<I> subsegment_reversed_smart_dss(const I& a, const I& b, const I& mu, const I& x0,
+                                               const I& x1) {
+  auto pr = prepare(a, b, mu, x0, x1);
+  if (pr.done) return *pr.done;
+  const auto& L = pr.loc;
+  const I last = L.n - 1; // the window is X in [0, last]
+  auto runs = path_runs(L.a, L.b);
+  // The characteristics at slope f with upper leaning point v (in the window).
+  auto answer_at = [&](const Fraction<I>& f, const I& v) {
+    return L.answer(f.p, f.q, I(f.p * v - f.q * floor_div(I(L.a * v + L.c), L.b)));
+  };
+  // u: an upper leaning point of the current line (slope t, containing the window).
+  I u = mod(I(mod(I(-L.c), L.b) * mod(ext_gcd(L.a, L.b).x, L.b)), L.b);
+  std::size_t r = runs.size() - 1;
+  I j = runs[r].k;
+  while (true) {
+    if (j == 0) {
+      if (r == 0) { // t = 1/1: its parents are 0/1 and 1/0 (infeasible: two abscissae)
+        if (floor_div(I(L.a * last + L.c), L.b) == 0) return answer_at({I(0), I(1)}, I(0));
+        return answer_at({I(1), I(1)}, I(0));
+      }
+      --r;
+      j = runs[r].k;
+      continue;
+    }
+    const auto& run = runs[r];
+    const Fraction<I> t = run.node(j);
+    const Fraction<I>& beta = run.bound;
+    // 1. The bound beta, a parent of t: feasible iff the window lies in the part of the
+    //    t-line that coincides with a beta-line through an upper leaning point U of t.
+    I up = run.dir == 'L' ? lattice_floor(u, t.q, I(beta.q - 1))
+                          : lattice_ceil(u, t.q, I(last - beta.q + 1));
+    bool beta_fits = run.dir == 'L' ? last <= up + t.q - 1 : up <= t.q - 1;
+    if (beta_fits) {
+      if (r == 0) return answer_at({I(0), I(1)}, I(0)); // beta = 0/1
+      u = up;
+      --r;
+      j = runs[r].k - 1; // the bound of run r is node k - 1 of run r - 1
+      continue;
+    }
+    // 2. beta does not fit: the window holds the upper leaning point v of every line of slope
+    //    N_i (i <= j) containing it, and N_{i-1} fits iff Q_{i-1}, Q_i clear v's distances.
+    I v, need;
+    if (run.dir == 'L') {
+      v = lattice_ceil(u, t.q, beta.q);
+      need = std::max(I(last - v + 1), I(v + 1 - beta.q));
+    } else {
+      v = lattice_ceil(u, t.q, I(0));
+      need = std::max(I(v + 1), I(last - v + 1 - beta.q));
+    }
+    I first = need <= run.base.q ? I(0) : ceil_div(I(need - run.base.q), beta.q);
+    if (first > j) first = j; // t itself is feasible
+    if (first >= 1) return answer_at(run.node(first), v);
+    u = v;
+    j = 0; // N_0 fits: go on from the end of the previous run
+  }
+}
+
 Escalated<DslSubsegment<BigInt>> dsl_subsegment_exact(const BigInt& a, const BigInt& b,
                                                       const BigInt& mu, const BigInt& x0,
                                                       const BigInt& x1) {
@@ -270,7 +344,9 @@ Escalated<DslSubsegment<BigInt>> dsl_subsegment_exact(const BigInt& a, const Big
   template DslSubsegment<I> subsegment_top_down<I>(const I&, const I&, const I&, const I&,         \
                                                    const I&);                                      \
   template DslSubsegment<I> subsegment_bottom_up<I>(const I&, const I&, const I&, const I&,        \
-                                                    const I&);
+                                                    const I&);                                     \
+  template DslSubsegment<I> subsegment_reversed_smart_dss<I>(const I&, const I&, const I&,         \
+                                                             const I&, const I&);
 ZDG_INSTANTIATE(Int64)
 ZDG_INSTANTIATE(Int128)
 ZDG_INSTANTIATE(BigInt)

@@ -55,6 +55,10 @@ template <TowerInt I>
 DslSubsegment<I> subsegment_bottom_up(const I& a, const I& b, const I& mu, const I& x0,
                                       const I& x1);
 
+template <TowerInt I>
+DslSubsegment<I> subsegment_reversed_smart_dss(const I& a, const I& b, const I& mu, const I& x0,
+                                               const I& x1);
+
 /// Top-down search on arbitrary-size values, on the narrowest tower type that serves.
 Escalated<DslSubsegment<BigInt>> dsl_subsegment_exact(const BigInt& a, const BigInt& b,
                                                       const BigInt& mu, const BigInt& x0,

@@ -61,6 +61,7 @@ TYPED_TEST(DslSubsegmentTest, BothSearchesEqualRecognitionOfThePoints) {
       I x0 = int_cast<I>(c.x0), x1 = int_cast<I>(c.x1);
       RC_ASSERT(big(subsegment_top_down(a, b, mu, x0, x1)) == w);
       RC_ASSERT(big(subsegment_bottom_up(a, b, mu, x0, x1)) == w);
+      RC_ASSERT(big(subsegment_reversed_smart_dss(a, b, mu, x0, x1)) == w);
     } catch (const OverflowError&) {
       RC_ASSERT((!std::same_as<I, BigInt>));
     }
