@@ -271,6 +271,24 @@ I lattice_floor(const I& u, const I& q, const I& x) {
 
 } // namespace
 
+// The reversed climb. Window X in [0, last]; the current line has slope t = P/Q and upper
+// leaning points u + k Q (remainder R = 0); parents l = p_l/q_l < t < r = p_r/q_r, with
+// P q_l - Q p_l = 1 = Q p_r - P q_r and q_l + q_r = Q.
+// Lemma. For X = U + k: P k / Q = p_l k / q_l + k / (Q q_l); writing p_l k = m q_l + rho, the
+// floors agree iff 0 <= rho Q + k < Q q_l, i.e. for -q_l < k < Q (rho >= 1 when q_l does not
+// divide k; rho = 0 at k = -q_l). Mirrored: the r-line through U agrees for -Q < k < q_r.
+// Conversely, a lower leaning point L (R = Q - 1) and the upper one L + q_l in S give
+// g_l = (q_l R - X) / Q two values q_l (Q - 1) + q_l apart over Q, a thickness >= q_l: no
+// line of slope l holds both. So l fits iff [0, last] lies in one agreement window: the one of
+// the last U <= q_l - 1 is the widest to the right. Likewise r with the first U >= last-q_r+1.
+// Runs. With t = N_j = N_0 + j beta (direction L: beta = l, N_{j-1} = r; direction R mirrored)
+// and beta not fitting, every N_j-line containing S has a lower leaning point v - q_beta and
+// the upper one v in S; v is the only upper leaning point that can anchor the r-parent test,
+// and v stays the smallest upper leaning point >= q_beta of the new line, so by induction
+// N_{i-1} fits iff Q_{i-1} >= last - v + 1 and Q_i >= v + 1 (direction R: Q_{i-1} >= v + 1 and
+// Q_i >= last - v + 1). Q_i = q(N_0) + i q_beta: the first fitting node is a ceiling division.
+// If it is N_0, the climb goes on from N_0 with anchor v; otherwise that node is the answer
+// (neither parent fits), with v an upper leaning point in S, which gives mu.
 template <TowerInt I>
 DslSubsegment<I> subsegment_reversed_smart_dss(const I& a, const I& b, const I& mu, const I& x0,
                                                const I& x1) {
@@ -334,8 +352,8 @@ Escalated<DslSubsegment<BigInt>> dsl_subsegment_exact(const BigInt& a, const Big
                                                       const BigInt& mu, const BigInt& x0,
                                                       const BigInt& x1) {
   return escalate([&]<class I>(std::type_identity<I>) {
-    auto r = subsegment_top_down(int_cast<I>(a), int_cast<I>(b), int_cast<I>(mu), int_cast<I>(x0),
-                                 int_cast<I>(x1));
+    auto r = subsegment_reversed_smart_dss(int_cast<I>(a), int_cast<I>(b), int_cast<I>(mu),
+                                           int_cast<I>(x0), int_cast<I>(x1));
     return DslSubsegment<BigInt>{to_bigint(r.a), to_bigint(r.b), to_bigint(r.mu)};
   });
 }

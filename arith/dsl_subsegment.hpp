@@ -16,24 +16,41 @@
 // direction) approach a/b monotonically, so feasibility is monotone inside a run; and when
 // p/q is not minimal, one of its two Stern-Brocot parents is feasible.
 //
-// Two searches over that tree, cross-checked in the tests:
+// subsegment_reversed_smart_dss (the algorithm of the front-end): the bottom-up climb of Said
+// and Lachaud's ReversedSmartDSS, from a/b towards the root, moving an upper leaning point
+// exactly. Let t be the current slope, with parents l < t < r (q_l + q_r = q_t), and a line of
+// slope t containing S with upper leaning points U + k q_t. Lemma (proved in the .cpp): the
+// line of slope l through the upper leaning point U coincides with the t-line exactly on
+// [U - q_l + 1, U + q_t - 1], the line of slope r on [U - q_t + 1, U + q_r - 1]; so S fits slope
+// l iff S does not hold a lower leaning point L and the upper one L + q_l, and then the
+// l-line through the last U <= x0 + q_l - 1 contains S (same for r, mirrored). Along a run
+// N_j = N_0 + j beta of the Stern-Brocot path whose bound beta does not fit, every line of
+// slope N_j containing S has the same upper leaning point v in S, and N_{j-1} fits iff q(N_j)
+// and q(N_{j-1}) exceed fixed distances from v to the ends of S: the first fitting node of the
+// run is found by one division. t is the answer iff neither parent fits. Each step leaves a
+// run: O(log b) steps of O(1) operations, whatever x1 - x0.
+//
+// Two independent searches, kept as cross-check oracles (tests, benchmarks):
 // - subsegment_top_down: descends from the root (0/1, then 1/1, then the runs of the
 //   continued fraction of a/b), binary search inside each run for the first feasible node
-//   (the search order of Said and Lachaud's SmartDSS);
+//   (the search order of Said, Lachaud and Feschet's SmartDSS);
 // - subsegment_bottom_up: climbs from a/b, jumping to the other parent of a run when it is
 //   feasible and else binary searching up the run (the search order of ReversedSmartDSS).
-// The feasibility test is our own, not the papers' pattern arithmetic: the remainders
+// Their feasibility test is our own, not the papers' pattern arithmetic: the remainders
 // g(x) = p x - q y(x) over S have min g found by a binary search on m of "some point has
 // g < m", each decided exactly with two floor sums (arith/floor_sum.hpp) on the side of the
-// crossing of the two real lines where the difference of the floors has a constant sign.
+// crossing of the two real lines where the difference of the floors has a constant sign:
+// polylogarithmic, O(log^3 b) floor sums in the worst case, and slower on long windows (deeper
+// answers).
 //
-// Complexity: O(log b) runs, O(log b) feasibility tests per run in the worst case, each
-// O(log b) floor sums of O(log b) steps: polylogarithmic, independent of x1 - x0 (a window of
-// more than 2b points is answered at once: it holds two periods). Width: intermediates of the
-// floor sums reach about b^3; the _exact front-end escalates Int64 -> Int128 -> BigInt.
+// Width: the reversed climb handles numbers of about 4 b and products of about 2 b^2 (the
+// mu of the answer); the searches' floor sums reach about b^3. The _exact front-end
+// escalates Int64 -> Int128 -> BigInt on overflow.
 // Sources: Said and Lachaud, Computing the characteristics of a subsegment of a digital
-// straight line in logarithmic time, DGCI 2011, LNCS 6607; Said, Lachaud, Feschet,
-// Multiscale discrete geometry, DGCI 2009; Debled-Rennesson and Reveilles 1995 (minimality).
+// straight line in logarithmic time, DGCI 2011, LNCS 6607 (ReversedSmartDSS); Said, Lachaud,
+// Feschet, Multiscale discrete geometry, DGCI 2009 (SmartDSS); Lachaud and Said, Two efficient
+// algorithms for computing the characteristics of a subsegment of a digital straight line,
+// Discrete Applied Mathematics 161 (2013); Debled-Rennesson and Reveilles 1995 (minimality).
 #pragma once
 
 #include "arith/escalate.hpp"
@@ -47,19 +64,21 @@ struct DslSubsegment {
   friend bool operator==(const DslSubsegment&, const DslSubsegment&) = default;
 };
 
-/// Requires b > 0, 0 <= a < b and x0 <= x1 (InvalidArgument otherwise).
-template <TowerInt I>
-DslSubsegment<I> subsegment_top_down(const I& a, const I& b, const I& mu, const I& x0, const I& x1);
-
-template <TowerInt I>
-DslSubsegment<I> subsegment_bottom_up(const I& a, const I& b, const I& mu, const I& x0,
-                                      const I& x1);
-
+/// All three require b > 0, 0 <= a < b and x0 <= x1 (InvalidArgument otherwise).
 template <TowerInt I>
 DslSubsegment<I> subsegment_reversed_smart_dss(const I& a, const I& b, const I& mu, const I& x0,
                                                const I& x1);
 
-/// Top-down search on arbitrary-size values, on the narrowest tower type that serves.
+/// Oracle: top-down search with floor-sum feasibility tests.
+template <TowerInt I>
+DslSubsegment<I> subsegment_top_down(const I& a, const I& b, const I& mu, const I& x0, const I& x1);
+
+/// Oracle: bottom-up search with floor-sum feasibility tests.
+template <TowerInt I>
+DslSubsegment<I> subsegment_bottom_up(const I& a, const I& b, const I& mu, const I& x0,
+                                      const I& x1);
+
+/// The reversed climb on arbitrary-size values, on the narrowest tower type that serves.
 Escalated<DslSubsegment<BigInt>> dsl_subsegment_exact(const BigInt& a, const BigInt& b,
                                                       const BigInt& mu, const BigInt& x0,
                                                       const BigInt& x1);

@@ -74,7 +74,7 @@ BENCHMARK(BM_TangentialCoverDisc)
     ->Unit(benchmark::kMillisecond);
 
 // Subsegment queries on a line with a, b, mu near 2^62, window of 2^k points starting near
-// -2^62; the top-down and bottom-up searches, through the escalating front-end.
+// -2^62, through the escalating front-end (the reversed climb; BigInt arguments).
 void BM_SubsegmentNear2To62(benchmark::State& state) {
   const BigInt b = (BigInt(1) << 62) - 57, a = (BigInt(1) << 61) + 987654321;
   const BigInt mu = -(BigInt(1) << 61) + 12345;
@@ -89,20 +89,42 @@ void BM_SubsegmentNear2To62(benchmark::State& state) {
     benchmark::DoNotOptimize(r);
   }
 }
-BENCHMARK(BM_SubsegmentNear2To62)->Arg(4)->Arg(20)->Arg(40)->Arg(61)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SubsegmentNear2To62)->DenseRange(4, 60, 8)->Arg(61)->Unit(benchmark::kMicrosecond);
 
-void BM_SubsegmentInt128BottomUp(benchmark::State& state) {
+// The same on Int128: the reversed climb (ReversedSmartDSS) and, for comparison, the two
+// floor-sum searches kept as oracles.
+template <class F>
+void subsegment_int128(benchmark::State& state, F&& algo) {
   const Int128 b = (Int128(1) * (std::int64_t{1} << 62)) - 57;
   const Int128 a = Int128(std::int64_t{1} << 61) + 987654321, mu = 12345;
   const Int128 len = Int128(std::int64_t{1}) * (std::int64_t{1} << state.range(0));
   std::int64_t x0 = -(std::int64_t{1} << 62) + 99991;
   for (auto _ : state) {
-    auto r = subsegment_bottom_up(a, b, mu, Int128(x0), Int128(x0) + len);
+    auto r = algo(a, b, mu, Int128(x0), Int128(x0) + len);
     benchmark::DoNotOptimize(r);
     x0 += 7919;
   }
 }
-BENCHMARK(BM_SubsegmentInt128BottomUp)
+void BM_SubsegmentInt128Reversed(benchmark::State& state) {
+  subsegment_int128(state, [](const auto&... v) { return subsegment_reversed_smart_dss(v...); });
+}
+void BM_SubsegmentInt128OracleBottomUp(benchmark::State& state) {
+  subsegment_int128(state, [](const auto&... v) { return subsegment_bottom_up(v...); });
+}
+void BM_SubsegmentInt128OracleTopDown(benchmark::State& state) {
+  subsegment_int128(state, [](const auto&... v) { return subsegment_top_down(v...); });
+}
+BENCHMARK(BM_SubsegmentInt128Reversed)
+    ->DenseRange(4, 60, 8)
+    ->Arg(61)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SubsegmentInt128OracleBottomUp)
+    ->Arg(4)
+    ->Arg(20)
+    ->Arg(40)
+    ->Arg(61)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SubsegmentInt128OracleTopDown)
     ->Arg(4)
     ->Arg(20)
     ->Arg(40)

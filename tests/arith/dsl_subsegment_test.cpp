@@ -1,7 +1,7 @@
-// DSL subsegments: the top-down and bottom-up searches agree with each other and with DSS
-// recognition of the enumerated points (itself checked against brute force), on every tower
-// type, for small values and for values near 2^62; the answer does not depend on how the
-// line is written (non-reduced a, b).
+// DSL subsegments: the reversed climb (ReversedSmartDSS) and the two floor-sum searches agree
+// with each other and with DSS recognition of the enumerated points (itself checked against
+// brute force), on every tower type, for small values and for values near 2^62; the answer
+// does not depend on how the line is written (non-reduced a, b).
 #include "arith/dsl_subsegment.hpp"
 
 #include "arith/dss_recognizer.hpp"
@@ -45,9 +45,9 @@ template <class I>
 class DslSubsegmentTest : public ::testing::Test {};
 TYPED_TEST_SUITE(DslSubsegmentTest, zdg::test::TowerTypes, zdg::test::TowerNames);
 
-// Oracle: recognition of the enumerated points. Both searches give it (or, on a narrow type,
-// report an overflow: never a wrong answer).
-TYPED_TEST(DslSubsegmentTest, BothSearchesEqualRecognitionOfThePoints) {
+// Oracle: recognition of the enumerated points. The reversed climb and both searches give it
+// (or, on a narrow type, report an overflow: never a wrong answer).
+TYPED_TEST(DslSubsegmentTest, AllAlgorithmsEqualRecognitionOfThePoints) {
   using I = TypeParam;
   check_property([] {
     Case c = random_case(*rc::gen::weightedElement<int>({{3, 0}, {1, 1}}) == 1);
@@ -67,6 +67,37 @@ TYPED_TEST(DslSubsegmentTest, BothSearchesEqualRecognitionOfThePoints) {
     }
     RC_ASSERT(dsl_subsegment_exact(c.a, c.b, c.mu, c.x0, c.x1).value == w);
   });
+}
+
+// Values near 2^62 and windows up to 2^61 points (too long to enumerate): the reversed climb
+// equals both floor-sum searches.
+TYPED_TEST(DslSubsegmentTest, ReversedClimbEqualsSearchesNearTwoTo62) {
+  using I = TypeParam;
+  check_property([] {
+    std::int64_t b = *test::int64_in(std::int64_t{1} << 61, std::int64_t{1} << 62);
+    std::int64_t a = *test::int64_in(0, b - 1);
+    std::int64_t lim = std::int64_t{1} << 62;
+    std::int64_t mu = *test::int64_in(-lim, lim), x0 = *test::int64_in(-lim, lim);
+    int k = *rc::gen::inRange(0, 62);
+    std::int64_t len = *test::int64_in(0, std::int64_t{1} << k);
+    BigInt x1 = BigInt(x0) + len;
+    auto want = subsegment_top_down(BigInt(a), BigInt(b), BigInt(mu), BigInt(x0), x1);
+    RC_ASSERT(subsegment_bottom_up(BigInt(a), BigInt(b), BigInt(mu), BigInt(x0), x1) == want);
+    try {
+      auto r = subsegment_reversed_smart_dss(I(a), I(b), I(mu), I(x0), int_cast<I>(x1));
+      RC_ASSERT((DslSubsegment<BigInt>{to_bigint(r.a), to_bigint(r.b), to_bigint(r.mu)}) == want);
+    } catch (const OverflowError&) {
+      RC_ASSERT((std::same_as<I, Int64>));
+    }
+  });
+}
+
+// Shrunk counterexample of a first draft: the window holds two upper leaning points of a/b
+// (x = -997, -994), so a/b itself is the answer although no earlier node of its run fits.
+TEST(DslSubsegment, RegressionAnswerIsTheInputSlope) {
+  EXPECT_EQ(
+      subsegment_reversed_smart_dss(Int64(1), Int64(3), Int64(-1000), Int64(-999), Int64(-994)),
+      (DslSubsegment<Int64>{1, 3, -1000}));
 }
 
 // The same line written with a common factor g: (g a, g b, mu') with ceil(mu'/g) = mu.
@@ -94,6 +125,13 @@ TEST(DslSubsegment, WorkedExamples) {
   // One point.
   EXPECT_EQ(subsegment_top_down(Int64(3), Int64(7), Int64(0), Int64(5), Int64(5)),
             (DslSubsegment<Int64>{0, 1, -2}));
+  // The same with the reversed climb; x = 2..4 of slope 2/5: (2,0),(3,1),(4,1), slope 1/2.
+  EXPECT_EQ(subsegment_reversed_smart_dss(Int64(3), Int64(7), Int64(0), Int64(0), Int64(7)),
+            (DslSubsegment<Int64>{3, 7, 0}));
+  EXPECT_EQ(subsegment_reversed_smart_dss(Int64(3), Int64(7), Int64(0), Int64(0), Int64(3)),
+            (DslSubsegment<Int64>{1, 3, 0}));
+  EXPECT_EQ(subsegment_reversed_smart_dss(Int64(2), Int64(5), Int64(0), Int64(2), Int64(4)),
+            (DslSubsegment<Int64>{1, 2, 1}));
 }
 
 TEST(DslSubsegment, RejectsBadArguments) {
@@ -102,6 +140,8 @@ TEST(DslSubsegment, RejectsBadArguments) {
   EXPECT_THROW(subsegment_top_down(Int64(5), Int64(5), Int64(0), Int64(0), Int64(1)),
                InvalidArgument);
   EXPECT_THROW(subsegment_bottom_up(Int64(1), Int64(3), Int64(0), Int64(2), Int64(1)),
+               InvalidArgument);
+  EXPECT_THROW(subsegment_reversed_smart_dss(Int64(-1), Int64(3), Int64(0), Int64(0), Int64(1)),
                InvalidArgument);
 }
 
@@ -112,6 +152,7 @@ TEST(DslSubsegment, HugeValues) {
   auto r = dsl_subsegment_exact(a, b, BigInt(17), x0, x1);
   auto r2 = subsegment_bottom_up(a, b, BigInt(17), x0, x1);
   EXPECT_EQ(r.value, r2);
+  EXPECT_EQ(subsegment_top_down(a, b, BigInt(17), x0, x1), r2);
   EXPECT_GT(r.value.b, 0);
   EXPECT_LE(r.value.b, b);
 }
