@@ -8,6 +8,7 @@
 #include "tests/support/tower.hpp"
 
 #include <cstdint>
+#include <cstdlib>
 #include <optional>
 #include <vector>
 
@@ -90,6 +91,28 @@ TYPED_TEST(DslSubsegmentTest, ReversedClimbEqualsSearchesNearTwoTo62) {
       RC_ASSERT((std::same_as<I, Int64>));
     }
   });
+}
+
+// Exhaustive on small lines: every 0 <= a < b <= 9 (6 under sanitizers), every offset and
+// every window of up to 2 b + 2 points; the reversed climb equals recognition of the points.
+TEST(DslSubsegment, ReversedClimbExhaustiveOnSmallLines) {
+  const std::int64_t max_b = std::getenv("ZDG_SANITIZE") != nullptr ? 6 : 9;
+  for (std::int64_t b = 1; b <= max_b; ++b) {
+    for (std::int64_t a = 0; a < b; ++a) {
+      for (std::int64_t mu = -b; mu < b; ++mu) {
+        for (std::int64_t x0 = -3; x0 < b; ++x0) {
+          for (std::int64_t len = 0; len <= 2 * b + 2; ++len) {
+            auto want = recognized(BigInt(a), BigInt(b), BigInt(mu), BigInt(x0), BigInt(x0 + len));
+            auto r = subsegment_reversed_smart_dss(Int64(a), Int64(b), Int64(mu), Int64(x0),
+                                                   Int64(x0 + len));
+            ASSERT_EQ((DslSubsegment<BigInt>{to_bigint(r.a), to_bigint(r.b), to_bigint(r.mu)}),
+                      (DslSubsegment<BigInt>{want.a, want.b, want.mu}))
+                << a << "/" << b << " mu " << mu << " x " << x0 << ".." << x0 + len;
+          }
+        }
+      }
+    }
+  }
 }
 
 // Shrunk counterexample of a first draft: the window holds two upper leaning points of a/b
