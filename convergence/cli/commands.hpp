@@ -22,6 +22,7 @@ struct Context {
 };
 
 void add_arith_commands(CLI::App& app, Context& ctx);
+void add_converge_commands(CLI::App& app, Context& ctx);
 
 /// Prints j on stdout (two-space indent), followed by a newline.
 void print_json(const nlohmann::json& j);

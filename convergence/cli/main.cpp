@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   zdg::cli::Context ctx;
   zdg::cli::add_arith_commands(app, ctx);
+  zdg::cli::add_converge_commands(app, ctx);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,0 +1,174 @@
+// The 2D estimators of the registry: digitize the translated shape, extract its contours,
+// run the estimator of estimators/, and compare with the shape's ground truth at the
+// projection of each boundary element.
+#include "arith/error.hpp"
+#include "convergence/estimator.hpp"
+#include "estimators/binomial_convolver.hpp"
+#include "estimators/gauss_area.hpp"
+#include "estimators/ii_curvature.hpp"
+#include "estimators/mlp_length.hpp"
+#include "estimators/moments.hpp"
+#include "kernel/digital_contour.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+namespace zdg {
+
+namespace {
+
+struct Digitized2 {
+  const Shape2* shape;
+  Point2<double> t;
+  std::unique_ptr<GaussDigitization2> set;
+  std::vector<DigitalContour> contours;
+  ContourEmbedding embed;
+};
+
+const Shape2& as_2d(const Shape& s) {
+  const auto* p = dynamic_cast<const Shape2*>(&s);
+  if (p == nullptr) throw InvalidArgument("shape '" + s.spec() + "' is not a 2D shape");
+  return *p;
+}
+
+// Pixel box of the continuous box at step h (a margin of one pixel).
+Box2 pixel_box(const std::vector<std::pair<double, double>>& box, double h) {
+  auto lo = [&](double v) { return static_cast<std::int64_t>(std::floor(v / h)) - 1; };
+  auto hi = [&](double v) { return static_cast<std::int64_t>(std::ceil(v / h)) + 1; };
+  double span = std::max(box[0].second - box[0].first, box[1].second - box[1].first) / h;
+  const double far = std::max({std::abs(box[0].first), std::abs(box[0].second),
+                               std::abs(box[1].first), std::abs(box[1].second)}) /
+                     h;
+  if (!(span < 4e9) || !(far < 1e15)) {
+    std::ostringstream msg;
+    msg << "grid step h = " << h << " is too small for the box";
+    throw InvalidArgument(msg.str());
+  }
+  return Box2{{lo(box[0].first), lo(box[1].first)}, {hi(box[0].second), hi(box[1].second)}};
+}
+
+Digitized2 digitize(const RunInput& in) {
+  Digitized2 d;
+  d.shape = &as_2d(in.shape);
+  d.t = {in.translation.at(0), in.translation.at(1)};
+  Box2 box = pixel_box(in.box, in.h);
+  d.set = d.shape->digitize(in.h, d.t, box);
+  // Scan 9 rows and 9 columns spread over the box (and the axes) for contours.
+  std::vector<std::int64_t> rows{0}, cols{0};
+  for (int i = 1; i <= 9; ++i) {
+    rows.push_back(box.lo.y + (box.hi.y - box.lo.y) * i / 10);
+    cols.push_back(box.lo.x + (box.hi.x - box.lo.x) * i / 10);
+  }
+  d.contours = digital_contours(*d.set, rows, cols);
+  d.embed = ContourEmbedding{in.h};
+  return d;
+}
+
+// Ground truth at an embedded point of the translated shape.
+BoundaryPoint2 truth(const Digitized2& d, Point2<double> p) {
+  return d.shape->project({p.x - d.t.x, p.y - d.t.y});
+}
+
+double tangent_angle(Point2<double> a, Point2<double> b) {
+  return std::atan2(std::abs(a.x * b.y - a.y * b.x), a.x * b.x + a.y * b.y);
+}
+
+ErrorStats run_gauss_area(const RunInput& in) {
+  Digitized2 d = digitize(in);
+  auto area = d.shape->area();
+  if (!area) throw InvalidArgument("the area of '" + in.shape.spec() + "' is not known");
+  ErrorAccumulator acc;
+  acc.add(gauss_area(d.contours, in.h) - *area);
+  return acc.stats();
+}
+
+ErrorStats run_moments(const RunInput& in) {
+  Digitized2 d = digitize(in);
+  auto m = d.shape->moments();
+  if (!m) throw InvalidArgument("the moments of '" + in.shape.spec() + "' are not known");
+  Moments2 truth_m = translate_moments(*m, d.t);
+  auto est = moments_estimate(d.contours, in.h);
+  ErrorAccumulator acc;
+  for (std::size_t i = 0; i < 6; ++i) acc.add(est[i] - truth_m[i]);
+  return acc.stats();
+}
+
+ErrorStats run_ii_curvature(const RunInput& in) {
+  Digitized2 d = digitize(in);
+  const double radius = in.k * std::pow(in.h, in.alpha);
+  ErrorAccumulator acc;
+  for (const auto& c : d.contours) {
+    auto kappa = ii_curvature(*d.set, c, in.h, radius);
+    Pixel p = c.start;
+    for (std::size_t i = 0; i < c.codes.size(); ++i) {
+      acc.add(kappa[i] - truth(d, d.embed.linel_midpoint(p, c.codes[i])).curvature);
+      Pixel s = freeman_step(c.codes[i]);
+      p = Pixel{p.x + s.x, p.y + s.y};
+    }
+  }
+  return acc.stats();
+}
+
+ErrorStats run_mlp_length(const RunInput& in) {
+  Digitized2 d = digitize(in);
+  auto perimeter = d.shape->perimeter();
+  if (!perimeter) throw InvalidArgument("the perimeter of '" + in.shape.spec() + "' is not known");
+  double len = 0;
+  for (const auto& c : d.contours) len += mlp_length(c, in.h);
+  ErrorAccumulator acc;
+  acc.add(len - *perimeter);
+  return acc.stats();
+}
+
+template <bool Tangent>
+ErrorStats run_binomial(const RunInput& in) {
+  Digitized2 d = digitize(in);
+  const long n = binomial_mask_order(in.h, in.k);
+  ErrorAccumulator acc;
+  for (const auto& c : d.contours) {
+    // Contours shorter than the mask (specks) are skipped.
+    if (static_cast<double>(c.size()) < 12.0 * std::sqrt(double(n)) + 8) continue;
+    auto est = binomial_convolver(c, in.h, n);
+    auto pts = c.pointels();
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      BoundaryPoint2 b = truth(d, d.embed.pointel(pts[i]));
+      if constexpr (Tangent) {
+        acc.add(tangent_angle(est.tangent[i], b.tangent));
+      } else {
+        acc.add(est.curvature[i] - b.curvature);
+      }
+    }
+  }
+  return acc.stats();
+}
+
+} // namespace
+
+namespace detail {
+
+void register_2d_estimators(std::vector<Estimator>& out) {
+  out.push_back({"gauss-area", 2, "h^2 times the number of digitized pixels (from the contours)",
+                 "none", "area", false, false, 0, 0, run_gauss_area});
+  out.push_back({"moments", 2,
+                 "moments m00, m10, m01, m20, m11, m02 of the digitization (6 errors per run)",
+                 "none", "moment", false, false, 0, 0, run_moments});
+  out.push_back({"mlp-length", 2, "perimeter by the minimum length polygon of the contour", "none",
+                 "length", false, false, 0, 0, run_mlp_length});
+  out.push_back({"ii-curvature", 2,
+                 "integral-invariant curvature 3pi/(2R) - 3A/R^3 at every linel (inner/outer "
+                 "pixel average)",
+                 "R = k h^alpha (defaults k = 3, alpha = 1/3)", "curvature", true, true, 3.0,
+                 1.0 / 3.0, run_ii_curvature});
+  out.push_back({"bc-tangent", 2, "binomial convolver tangent at every pointel",
+                 "mask order n = k h^(-4/3) (default k = 1)", "angle (rad)", true, false, 1.0, 0,
+                 run_binomial<true>});
+  out.push_back({"bc-curvature", 2, "binomial convolver curvature at every pointel",
+                 "mask order n = k h^(-4/3) (default k = 1)", "curvature", true, false, 1.0, 0,
+                 run_binomial<false>});
+}
+
+} // namespace detail
+
+} // namespace zdg

@@ -1,0 +1,96 @@
+#!/usr/bin/python3
+"""Draws DIR/convergence.png and DIR/convergence.svg from DIR/results.csv and DIR/summary.json.
+
+One panel per estimator: log-log error (l_inf, the worst case over translations) against h,
+one colour per shape with the band of the translations (min to max of their l_inf), the
+fitted slope in the legend, and reference slope triangles for the proven rates.
+
+Usage: /usr/bin/python3 papers/plot_convergence.py DIR
+"""
+import csv
+import json
+import math
+import os
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main(directory):
+    with open(os.path.join(directory, "results.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    with open(os.path.join(directory, "summary.json")) as f:
+        summary = json.load(f)
+    fits = {(x["shape"], x["estimator"]): x for x in summary["fits"] if x["norm"] == "linf"}
+    estimators = []
+    for r in rows:
+        if r["estimator"] not in estimators:
+            estimators.append(r["estimator"])
+    fig, axes = plt.subplots(1, len(estimators), figsize=(6 * len(estimators), 4.8), squeeze=False)
+    for ax, est in zip(axes[0], estimators):
+        by_shape = defaultdict(lambda: defaultdict(list))
+        for r in rows:
+            if r["estimator"] == est:
+                by_shape[r["shape"]][float(r["h"])].append(float(r["linf"]))
+        all_h = []
+        for shape, per_h in by_shape.items():
+            hs = sorted(per_h)
+            worst = [max(per_h[h]) for h in hs]
+            low = [min(per_h[h]) for h in hs]
+            fit = fits.get((shape, est))
+            label = shape
+            if fit and fit.get("slope") is not None:
+                label += " (slope %.2f" % fit["slope"]
+                if fit.get("expected") is not None:
+                    label += ", theory >= %.2f: %s" % (
+                        fit["expected"], "pass" if fit.get("pass") else "FAIL")
+                label += ")"
+            pos = [(h, w, l) for h, w, l in zip(hs, worst, low) if w > 0]
+            if not pos:
+                continue
+            line, = ax.loglog([p[0] for p in pos], [p[1] for p in pos], "o-", ms=3, label=label)
+            if any(l != w for _, w, l in pos):
+                ax.fill_between([p[0] for p in pos], [max(p[2], 1e-300) for p in pos],
+                                [p[1] for p in pos], color=line.get_color(), alpha=0.2)
+            all_h += hs
+        # Reference slope triangles for the proven rates of this estimator.
+        drawn = set()
+        for (shape, e), fit in fits.items():
+            if e != est or fit.get("expected") is None or fit["expected"] in drawn:
+                continue
+            drawn.add(fit["expected"])
+            s = fit["expected"]
+            per_h = by_shape.get(shape, {})
+            hs = sorted(per_h)
+            if len(hs) < 2:
+                continue
+            h0, h1 = hs[0], hs[0] * math.exp(0.35 * math.log(hs[-1] / hs[0]))
+            y0 = max(per_h[h0]) * 0.5
+            if y0 <= 0:
+                continue
+            y1 = y0 * (h1 / h0) ** s
+            ax.loglog([h0, h1, h1, h0], [y0, y0, y1, y0], "k-", lw=0.8)
+            ax.text(h1, math.sqrt(y0 * y1), " %.2f" % s, fontsize=8, va="center")
+        ax.set_xlabel("h")
+        ax.set_ylabel("l_inf error")
+        ax.set_title(est)
+        ax.grid(True, which="both", lw=0.3)
+        ax.legend(fontsize=7)
+    title = summary.get("config", {}).get("title") or ""
+    if title:
+        fig.suptitle(title)
+    fig.tight_layout()
+    for ext in ("png", "svg"):
+        tmp = os.path.join(directory, "convergence.tmp." + ext)
+        fig.savefig(tmp, dpi=120)
+        os.replace(tmp, os.path.join(directory, "convergence." + ext))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit("usage: plot_convergence.py DIR")
+    main(sys.argv[1])
