@@ -68,6 +68,8 @@ const Estimator& find_estimator(const std::string& name);
 
 namespace detail {
 void register_2d_estimators(std::vector<Estimator>& out);
-}
+void register_3d_estimators(std::vector<Estimator>& out);
+void register_hausdorff_estimators(std::vector<Estimator>& out); // dimension 0: any
+} // namespace detail
 
 } // namespace zdg

@@ -263,7 +263,8 @@ void print_list() {
   }
   std::cout << "estimators:\n";
   for (const auto& e : estimators()) {
-    std::cout << "  " << std::left << std::setw(14) << e.name << e.dimension << "D  "
+    std::cout << "  " << std::left << std::setw(14) << e.name
+              << (e.dimension == 0 ? std::string("any ") : std::to_string(e.dimension) + "D  ")
               << e.description << "\n"
               << std::string(21, ' ') << "parameters: " << e.parameters << "; error: " << e.quantity
               << '\n';
