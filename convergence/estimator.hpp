@@ -53,7 +53,7 @@ struct RunInput {
 
 struct Estimator {
   std::string name;
-  int dimension;
+  int dimension; // 2 or 3; 0: any (the run dispatches on the shape)
   std::string description;
   std::string parameters; // documentation of k and alpha for this estimator
   std::string quantity;   // what the error measures ("curvature", "angle (rad)", ...)

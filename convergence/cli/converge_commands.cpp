@@ -427,7 +427,9 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     auto name = std::make_shared<std::string>();
     auto quick = std::make_shared<bool>(false);
     auto* cmd = app.add_subcommand("paper", "Reproduce one figure of papers/NAME");
-    cmd->add_option("name", *name, "cviu2014-ii2d, gauss-area, tangent-2d")->required();
+    cmd->add_option("name", *name,
+                    "cviu2014-ii2d, gauss-area, tangent-2d, cviu2014-ii3d, hausdorff")
+        ->required();
     cmd->add_flag("--quick", *quick, "The reduced sweep (papers/NAME/quick.toml)");
     add_run_options(cmd, *o);
     cmd->callback([o, name, quick, &ctx] {
