@@ -38,10 +38,10 @@ TEST(Convergence3dSlow, IntegralInvariantCurvaturesSphereAndGoursat) {
 
 TEST(Convergence3dSlow, HausdorffBoundIn2dAnd3d) {
   auto r = sweep({"sphere9", "torus", "ellipse:20,7", "flower:20,7,6"},
-                 {"hausdorff", "hausdorff-ratio"}, "exp:5:25:2", 3, 0);
+                 {"hausdorff", "hausdorff-rel"}, "exp:5:25:2", 3, 0);
   expect_all_linf_pass(r);
   for (const auto& run : r.runs) {
-    if (run.estimator == "hausdorff-ratio") {
+    if (run.estimator == "hausdorff-rel") {
       EXPECT_LE(run.errors.linf, 1.0) << run.shape << " h = " << run.h;
     }
   }

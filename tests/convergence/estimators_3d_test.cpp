@@ -84,7 +84,7 @@ TEST(Estimators3d, ClippedShapesIgnoreTheBoxFaces) {
   // The elliptic cylinder along y is cut by the box at y = +-10: the caps are not part of
   // the surface. Were their surfels counted, the Hausdorff ratio would reach about 10 / h
   // and the mean curvature error 1/R.
-  auto ratio = run_once("cylinder", "hausdorff-ratio", 0.5);
+  auto ratio = run_once("cylinder", "hausdorff-rel", 0.5);
   EXPECT_LE(ratio.linf, 1.0);
   EXPECT_GT(ratio.n, 3000);
   auto mean = run_once("cylinder", "ii-mean", 0.5);
@@ -102,7 +102,7 @@ TEST(Estimators3d, HausdorffBoundHoldsIn2dAnd3d) {
   // true boundary once h < 2 rho / sqrt(d).
   for (const char* shape : {"sphere9", "torus", "ellipsoid"}) {
     for (double h : {0.5, 0.3}) {
-      auto s = run_once(shape, "hausdorff-ratio", h, {0.013, 0.21 * h, -0.37 * h});
+      auto s = run_once(shape, "hausdorff-rel", h, {0.013, 0.21 * h, -0.37 * h});
       EXPECT_LE(s.linf, 1.0) << shape << " " << h;
       EXPECT_GT(s.linf, 0.2);
       auto d = run_once(shape, "hausdorff", h, {0.013, 0.21 * h, -0.37 * h});
@@ -110,7 +110,7 @@ TEST(Estimators3d, HausdorffBoundHoldsIn2dAnd3d) {
     }
   }
   for (const char* shape : {"ellipse:20,7", "flower:20,7,6", "ball:5"}) {
-    auto s = run_once(shape, "hausdorff-ratio", 0.1, {0.03, -0.01});
+    auto s = run_once(shape, "hausdorff-rel", 0.1, {0.03, -0.01});
     EXPECT_LE(s.linf, 1.0) << shape;
     EXPECT_GT(s.n, 100);
   }
@@ -158,7 +158,7 @@ TEST(Estimators3d, DimensionsAndTheoryRows) {
   EXPECT_FALSE(zdg::theory_rate("ii-mean", *heart, 1.0 / 3).has_value());        // cusps
   EXPECT_NEAR(zdg::theory_rate("gauss-volume", *sphere, 0)->slope, 243.0 / 158, 1e-12);
   EXPECT_NEAR(zdg::theory_rate("hausdorff", *zdg::parse_shape("ball:3"), 0)->slope, 1, 1e-12);
-  EXPECT_FALSE(zdg::theory_rate("hausdorff-ratio", *sphere, 0).has_value());
+  EXPECT_FALSE(zdg::theory_rate("hausdorff-rel", *sphere, 0).has_value());
 }
 
 } // namespace

@@ -11,7 +11,7 @@ namespace {
 using zdg::test::run_zdg;
 
 TEST(Converge3dCli, SphereMeanCurvatureJson) {
-  auto r = run_zdg("converge --shape sphere9 --estimator ii-mean --estimator hausdorff-ratio "
+  auto r = run_zdg("converge --shape sphere9 --estimator ii-mean --estimator hausdorff-rel "
                    "--h 1,0.7,0.5 --k 3 --alpha 1/3 --translations 1 --seed 3 --json --quiet");
   ASSERT_EQ(r.status, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
@@ -23,14 +23,14 @@ TEST(Converge3dCli, SphereMeanCurvatureJson) {
     if (run["estimator"] == "ii-mean") {
       EXPECT_LT(run["linf"].get<double>(), 0.3);
     } else {
-      EXPECT_LE(run["linf"].get<double>(), 1.0); // hausdorff-ratio
+      EXPECT_LE(run["linf"].get<double>(), 1.0); // hausdorff-rel
     }
   }
   ASSERT_EQ(j["fits"].size(), 6u);
   EXPECT_EQ(j["fits"][0]["estimator"], "ii-mean");
   EXPECT_NEAR(j["fits"][0]["expected"].get<double>(), 1.0 / 3, 1e-12);
   EXPECT_TRUE(j["fits"][0]["pass"].get<bool>());
-  EXPECT_TRUE(j["fits"][3]["pass"].is_null()); // hausdorff-ratio: no rate, no verdict
+  EXPECT_TRUE(j["fits"][3]["pass"].is_null()); // hausdorff-rel: no rate, no verdict
 }
 
 TEST(Converge3dCli, ListAndDimensionErrors) {
