@@ -97,6 +97,25 @@ TEST(Estimators3d, ClippedShapesIgnoreTheBoxFaces) {
   EXPECT_LT(zdg::detail::evaluated_surfels(d, 0).size(), d.surfels.size());
 }
 
+TEST(Estimators3d, TrackedSurfacesHaveTheTopologyOfTheirShapes) {
+  // Seeds from 64 lines, tracking, then the primal quad surface: V - E + F = 2 for the
+  // sphere and the ellipsoid (translated), 0 for the torus; no surfel on the box.
+  for (auto [shape, chi] : {std::pair{"sphere9", 2}, {"ellipsoid", 2}, {"torus", 0}}) {
+    auto s = zdg::parse_shape(shape);
+    auto box = *s->bounding_box();
+    zdg::RunInput in{*s, 0.4, {0.11, -0.05, 0.17}, box, 3, 1.0 / 3.0};
+    auto d = zdg::detail::digitize_3d(in);
+    auto quads = zdg::primal_surface(d.surfels);
+    EXPECT_EQ(zdg::euler_characteristic(quads), chi) << shape;
+    EXPECT_EQ(zdg::detail::evaluated_surfels(d, 0).size(), d.surfels.size()) << shape;
+    // Every tracked surfel separates an inside voxel from an outside one.
+    for (std::size_t i = 0; i < d.surfels.size(); i += 97) {
+      EXPECT_TRUE(d.inside(zdg::inner_voxel(d.surfels[i])));
+      EXPECT_FALSE(d.inside(zdg::outer_voxel(d.surfels[i])));
+    }
+  }
+}
+
 TEST(Estimators3d, HausdorffBoundHoldsIn2dAnd3d) {
   // Lachaud-Thibert 2016: every boundary element centre lies within sqrt(d) h / 2 of the
   // true boundary once h < 2 rho / sqrt(d).
