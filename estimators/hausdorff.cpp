@@ -45,7 +45,8 @@ HausdorffCheck check_hausdorff_bound(std::span<const double> distances, int dime
   HausdorffCheck c;
   c.bound = hausdorff_bound(dimension, h);
   for (double d : distances) {
-    if (!(d <= c.max_distance)) c.max_distance = d; // NaN propagates
+    if (std::isnan(d)) return {d, c.bound}; // a NaN distance never satisfies the bound
+    c.max_distance = std::max(c.max_distance, d);
   }
   return c;
 }

@@ -8,8 +8,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 
 namespace {
+
+// Under the sanitizers (about 15x slower in Debug) the loops below run on fewer shapes/steps.
+const bool kSanitized = std::getenv("ZDG_SANITIZE") != nullptr;
 
 const zdg::FitRecord& linf_fit(const zdg::ExperimentResult& r, const std::string& shape,
                                const std::string& est) {
@@ -65,6 +69,7 @@ TEST(Estimators3d, CoarseErrorsOnTorusAndGoursat) {
   // principal curvatures matched by value are within 0.2 everywhere; matching them by
   // position in a list instead would give errors of |1/r - cos v/(R + r cos v)| >= 0.375.
   for (const char* shape : {"torus", "goursat"}) {
+    if (kSanitized && std::string(shape) == "goursat") continue;
     for (const char* e : {"ii-mean", "ii-k1", "ii-k2"}) {
       auto s = run_once(shape, e, 0.25, {0.01, -0.02, 0.03});
       EXPECT_LT(s.linf, 0.2) << shape << " " << e;
@@ -121,6 +126,7 @@ TEST(Estimators3d, HausdorffBoundHoldsIn2dAnd3d) {
   // true boundary once h < 2 rho / sqrt(d).
   for (const char* shape : {"sphere9", "torus", "ellipsoid"}) {
     for (double h : {0.5, 0.3}) {
+      if (kSanitized && h < 0.5) continue;
       auto s = run_once(shape, "hausdorff-rel", h, {0.013, 0.21 * h, -0.37 * h});
       EXPECT_LE(s.linf, 1.0) << shape << " " << h;
       EXPECT_GT(s.linf, 0.2);
@@ -129,7 +135,7 @@ TEST(Estimators3d, HausdorffBoundHoldsIn2dAnd3d) {
     }
   }
   for (const char* shape : {"ellipse:20,7", "flower:20,7,6", "ball:5"}) {
-    auto s = run_once(shape, "hausdorff-rel", 0.1, {0.03, -0.01});
+    auto s = run_once(shape, "hausdorff-rel", kSanitized ? 0.3 : 0.1, {0.03, -0.01});
     EXPECT_LE(s.linf, 1.0) << shape;
     EXPECT_GT(s.n, 100);
   }
