@@ -7,6 +7,7 @@
 #include <memory>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 namespace zdg {
 
@@ -163,6 +164,62 @@ std::optional<double> named_volume(const std::string& name) {
   return std::nullopt;
 }
 
+constexpr double kFootTolerance = 1e-12;
+
+// The component of p - q orthogonal to the normal at q (zero at a foot point of p).
+P3 tangential_part(const Polynomial& f, P3 p, P3 q) {
+  const double x[3] = {q.x, q.y, q.z};
+  double g[3];
+  f.gradient(x, g);
+  const P3 gv{g[0], g[1], g[2]};
+  const double gn = norm(gv);
+  if (!(gn > 0)) return {0, 0, 0};
+  const P3 n = scale(1.0 / gn, gv), w = sub(p, q);
+  return sub(w, scale(dot(w, n), n));
+}
+
+double tangential_residual(const Polynomial& f, P3 p, P3 q) {
+  return norm(tangential_part(f, p, q));
+}
+
+// One Newton step on (q - p + mu g(q), F(q)) = 0 (the critical points of |q - p|^2 on
+// F = 0), mu from the current point; Gaussian elimination with partial pivoting on the 4x4
+// system [[I + mu M, g], [g^T, 0]]. False when the system is singular.
+bool lagrange_step(const Polynomial& f, P3 p, P3 q, P3& out) {
+  const double x[3] = {q.x, q.y, q.z};
+  double g[3], m[9];
+  f.gradient(x, g);
+  f.hessian(x, m);
+  const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+  if (!(g2 > 0)) return false;
+  const double w[3] = {p.x - q.x, p.y - q.y, p.z - q.z};
+  const double mu = (w[0] * g[0] + w[1] * g[1] + w[2] * g[2]) / g2;
+  double a[4][5];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) a[i][j] = (i == j ? 1.0 : 0.0) + mu * m[3 * i + j];
+    a[i][3] = g[i];
+    a[i][4] = w[i] - mu * g[i]; // -(q - p + mu g)
+  }
+  for (int j = 0; j < 3; ++j) a[3][j] = g[j];
+  a[3][3] = 0;
+  a[3][4] = -f.value(x);
+  for (int c = 0; c < 4; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < 4; ++r) {
+      if (std::abs(a[r][c]) > std::abs(a[piv][c])) piv = r;
+    }
+    if (!(std::abs(a[piv][c]) > 1e-300)) return false;
+    for (int k = 0; k < 5; ++k) std::swap(a[c][k], a[piv][k]);
+    for (int r = 0; r < 4; ++r) {
+      if (r == c) continue;
+      const double t = a[r][c] / a[c][c];
+      for (int k = c; k < 5; ++k) a[r][k] -= t * a[c][k];
+    }
+  }
+  out = {q.x + a[0][4] / a[0][0], q.y + a[1][4] / a[1][1], q.z + a[2][4] / a[2][2]};
+  return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
+}
+
 } // namespace
 
 SurfacePoint3 implicit_surface_geometry(const Polynomial& f, P3 q) {
@@ -220,16 +277,25 @@ SurfacePoint3 implicit_surface_geometry(const Polynomial& f, P3 q) {
 
 SurfacePoint3 project_implicit_surface(const Polynomial& f, P3 p) {
   P3 q = newton(f, p);
-  for (int round = 0; round < 20; ++round) {
-    double x[3] = {q.x, q.y, q.z}, g[3];
-    f.gradient(x, g);
-    const P3 gv{g[0], g[1], g[2]};
-    const double gn = norm(gv);
-    if (!(gn > 0)) break;
-    const P3 n = scale(1.0 / gn, gv), w = sub(p, q);
-    const P3 tangential = sub(w, scale(dot(w, n), n));
-    if (norm(tangential) <= 1e-12 * (1 + norm(w) + norm(q))) break;
-    q = newton(f, add(q, tangential));
+  double residual = tangential_residual(f, p, q);
+  for (int round = 0; round < 8 && residual > kFootTolerance * (1 + norm(sub(p, q)) + norm(q));
+       ++round) {
+    const P3 next = newton(f, add(q, tangential_part(f, p, q)));
+    const double r = tangential_residual(f, p, next);
+    if (!(r < residual)) break;
+    q = next;
+    residual = r;
+  }
+  // Polish by Newton on the Lagrange system when the tangential rounds converge slowly
+  // (points far from the surface compared with its curvature radius).
+  for (int it = 0; it < 12 && residual > kFootTolerance * (1 + norm(sub(p, q)) + norm(q)); ++it) {
+    P3 next;
+    if (!lagrange_step(f, p, q, next)) break;
+    next = newton(f, next);
+    const double r = tangential_residual(f, p, next);
+    if (!(r < residual)) break;
+    q = next;
+    residual = r;
   }
   return implicit_surface_geometry(f, q);
 }

@@ -14,8 +14,10 @@
 // Ground truth (shared/THEORY.md, "Ground-truth formulas"). xi(p), the projection of p onto
 // F = 0: damped Newton q <- q - F(q) g / |g|^2 (the step halved while |F| does not
 // decrease, 40 iterations at most), then foot-point refinement: q <- Newton(q + P (p - q)),
-// P the projection on the tangent plane, until p - q is parallel to the normal (the nearest
-// point of the surface near p, up to 1e-12 relative; 20 rounds at most). At q, with
+// P the projection on the tangent plane (8 rounds at most), polished by Newton on the
+// Lagrange system q - p + mu grad F(q) = 0, F(q) = 0 (12 steps at most), a step being kept
+// only when it reduces |P (p - q)|, until p - q is parallel to the normal (a foot point: the
+// nearest point of the surface near p, to 1e-12 relative). At q, with
 // g = grad F, M = Hessian F, n = g / |g| (outward):
 //   H = (|g|^2 tr M - g^T M g) / (2 |g|^3),  K = -det [[M, g], [g^T, 0]] / |g|^4,
 //   k1 <= k2 the eigenvalues of the shape operator (t_i^T M t_j) / |g| on an orthonormal

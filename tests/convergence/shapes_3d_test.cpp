@@ -85,10 +85,10 @@ TEST(Shapes3d, EllipsoidCurvaturesMatchTheClosedForms) {
   for (int i = 0; i < 200; ++i) {
     P3 dir{u(rng), u(rng), u(rng)};
     if (norm(dir) < 0.1) continue;
-    // A point of the surface (on the ray of dir) moved by up to 0.5 in each coordinate:
-    // the regime of the estimators (surfel centres within h of the surface).
+    // A point of the surface (on the ray of dir) moved by up to 1.5 per coordinate, inside the
+    // smallest curvature radius 30 / sqrt 90 = 3.2 (surfel centres are within h of it).
     const double on = 1 / std::sqrt(dir.x * dir.x / a2 + dir.y * dir.y / b2 + dir.z * dir.z / c2);
-    P3 p{dir.x * on + 0.5 * u(rng), dir.y * on + 0.5 * u(rng), dir.z * on + 0.5 * u(rng)};
+    P3 p{dir.x * on + 1.5 * u(rng), dir.y * on + 1.5 * u(rng), dir.z * on + 1.5 * u(rng)};
     auto q = s->project(p);
     const P3 x = q.point;
     EXPECT_NEAR(x.x * x.x / a2 + x.y * x.y / b2 + x.z * x.z / c2, 1, 1e-12);
