@@ -21,6 +21,8 @@ const std::vector<Estimator>& estimators() {
   static const std::vector<Estimator> all = [] {
     std::vector<Estimator> v;
     detail::register_2d_estimators(v);
+    detail::register_3d_estimators(v);
+    detail::register_hausdorff_estimators(v);
     return v;
   }();
   return all;

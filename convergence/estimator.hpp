@@ -53,7 +53,7 @@ struct RunInput {
 
 struct Estimator {
   std::string name;
-  int dimension;
+  int dimension; // 2 or 3; 0: any (the run dispatches on the shape)
   std::string description;
   std::string parameters; // documentation of k and alpha for this estimator
   std::string quantity;   // what the error measures ("curvature", "angle (rad)", ...)
@@ -68,6 +68,8 @@ const Estimator& find_estimator(const std::string& name);
 
 namespace detail {
 void register_2d_estimators(std::vector<Estimator>& out);
-}
+void register_3d_estimators(std::vector<Estimator>& out);
+void register_hausdorff_estimators(std::vector<Estimator>& out); // dimension 0: any
+} // namespace detail
 
 } // namespace zdg

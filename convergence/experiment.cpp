@@ -128,7 +128,7 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
   for (const auto& e : config.estimators) ests.push_back(&find_estimator(e));
   for (const auto& s : shapes) {
     for (const auto* e : ests) {
-      if (s->dimension() != e->dimension) {
+      if (e->dimension != 0 && s->dimension() != e->dimension) { // 0: any dimension
         throw InvalidArgument("estimator '" + e->name + "' is " + std::to_string(e->dimension) +
                               "D but shape '" + s->spec() + "' is " +
                               std::to_string(s->dimension()) + "D");

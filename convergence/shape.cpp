@@ -2,6 +2,7 @@
 
 #include "arith/error.hpp"
 #include "arith/rational.hpp"
+#include "convergence/shapes_3d.hpp"
 
 #include <random>
 
@@ -22,6 +23,7 @@ std::vector<ShapeKind>& mutable_kinds() {
   static std::vector<ShapeKind> kinds = [] {
     std::vector<ShapeKind> k;
     detail::register_2d_shapes(k);
+    detail::register_3d_shapes(k);
     return k;
   }();
   return kinds;

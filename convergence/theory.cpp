@@ -51,6 +51,41 @@ std::optional<TheoryRate> theory_rate(const std::string& estimator, const Shape&
     return TheoryRate{1.0 / 3.0, "O(h^{1/3}) for C^3 convex curves, parameter-free",
                       "Lachaud, Vialard, de Vieilleville 2007"};
   }
+  // 3D shapes (convergence/shapes_3d.hpp). poly: with z is assumed C^3 with positive reach,
+  // as in 2D; diabolo (singular at 0), heart (cusps) and crixxi are not; distel and the
+  // cylinder are clipped by the box, which their estimators avoid (digitized_3d.hpp).
+  const bool sphere = kind == "sphere1" || kind == "sphere9";
+  const bool convex3 = sphere || kind == "ellipsoid" || kind == "rcube";
+  const bool smooth3 = convex3 || kind == "torus" || kind == "goursat" || kind == "goursat-hole" ||
+                       kind == "leopold" || kind == "cylinder" ||
+                       (kind == "poly" && shape.dimension() == 3);
+  const bool third = std::abs(alpha - 1.0 / 3.0) < 1e-12;
+  if (estimator == "gauss-volume") {
+    if (sphere || kind == "ellipsoid") {
+      return TheoryRate{243.0 / 158.0, "O(h^{243/158}) for C^3 strictly convex bodies",
+                        "Kraetzel; Guo (lattice points in smooth convex bodies)"};
+    }
+    if (convex3) return TheoryRate{1.0, "O(h) for convex bodies", "lattice-point theory"};
+    return std::nullopt;
+  }
+  if ((estimator == "ii-mean" || estimator == "ii-gaussian" || estimator == "ii-k1" ||
+       estimator == "ii-k2") &&
+      smooth3 && third) {
+    return TheoryRate{1.0 / 3.0, "O(h^{1/3}) with R = k h^{1/3}, C^3 surface with positive reach",
+                      "Coeurjolly, Lachaud, Levallois, CVIU 2014 (Thm 6 for k1, k2)"};
+  }
+  if (estimator == "ii-normal" && smooth3 && third) {
+    return TheoryRate{2.0 / 3.0, "O(h^{2/3}) with R = k h^{1/3}, C^3 surface with positive reach",
+                      "Lachaud, Coeurjolly, Levallois 2017"};
+  }
+  if (estimator == "ii-directions" && smooth3 && !sphere && third) {
+    return TheoryRate{1.0 / 3.0, "O(h^{1/3}) / |k1 - k2| with R = k h^{1/3}, away from umbilics",
+                      "Lachaud, Coeurjolly, Levallois 2017"};
+  }
+  if (estimator == "hausdorff" && (shape.dimension() == 3 ? smooth3 : smooth)) {
+    return TheoryRate{1.0, "O(h): at most sqrt(d) h / 2 for h < 2 rho / sqrt(d), reach > rho",
+                      "Lachaud, Thibert, JMIV 2016"};
+  }
   if (estimator == "bc-tangent" && smooth) {
     return TheoryRate{2.0 / 3.0, "O(h^{2/3}) with mask ~ h^{-4/3}, C^3 curves",
                       "Esbelin, Malgouyres, Cartade 2011"};

@@ -263,7 +263,8 @@ void print_list() {
   }
   std::cout << "estimators:\n";
   for (const auto& e : estimators()) {
-    std::cout << "  " << std::left << std::setw(14) << e.name << e.dimension << "D  "
+    std::cout << "  " << std::left << std::setw(14) << e.name
+              << (e.dimension == 0 ? std::string("any ") : std::to_string(e.dimension) + "D  ")
               << e.description << "\n"
               << std::string(21, ' ') << "parameters: " << e.parameters << "; error: " << e.quantity
               << '\n';
@@ -426,7 +427,9 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     auto name = std::make_shared<std::string>();
     auto quick = std::make_shared<bool>(false);
     auto* cmd = app.add_subcommand("paper", "Reproduce one figure of papers/NAME");
-    cmd->add_option("name", *name, "cviu2014-ii2d, gauss-area, tangent-2d")->required();
+    cmd->add_option("name", *name,
+                    "cviu2014-ii2d, gauss-area, tangent-2d, cviu2014-ii3d, hausdorff")
+        ->required();
     cmd->add_flag("--quick", *quick, "The reduced sweep (papers/NAME/quick.toml)");
     add_run_options(cmd, *o);
     cmd->callback([o, name, quick, &ctx] {

@@ -1,0 +1,352 @@
+#include "convergence/shapes_3d.hpp"
+
+#include "arith/error.hpp"
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <utility>
+
+namespace zdg {
+
+namespace {
+
+using P3 = Point3<double>;
+
+P3 sub(P3 a, P3 b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+P3 add(P3 a, P3 b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+P3 scale(double s, P3 a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+double dot(P3 a, P3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+double norm(P3 a) {
+  return std::sqrt(dot(a, a));
+}
+P3 cross(P3 a, P3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+P3 unit(P3 a) {
+  return scale(1.0 / norm(a), a);
+}
+
+// Damped Newton towards F = 0 from q (the 2D `poly:` scheme, in three variables).
+P3 newton(const Polynomial& f, P3 q) {
+  double p[3] = {q.x, q.y, q.z}, g[3];
+  for (int it = 0; it < 40; ++it) {
+    const double v = f.value(p);
+    if (v == 0) break;
+    f.gradient(p, g);
+    const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+    if (!(g2 > 0)) break;
+    const double s[3] = {v * g[0] / g2, v * g[1] / g2, v * g[2] / g2};
+    double damp = 1.0;
+    for (int k = 0; k < 30; ++k) { // halve the step while |F| does not decrease
+      double r[3] = {p[0] - damp * s[0], p[1] - damp * s[1], p[2] - damp * s[2]};
+      if (std::abs(f.value(r)) <= std::abs(v)) break;
+      damp /= 2;
+    }
+    for (int i = 0; i < 3; ++i) p[i] -= damp * s[i];
+    const double step = damp * std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    if (step < 1e-15 * (1 + std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]))) break;
+  }
+  return {p[0], p[1], p[2]};
+}
+
+// Exact membership of h z - t in { F <= 0 }: double filter, exact fallback.
+class PolyVoxelPredicate {
+public:
+  PolyVoxelPredicate(const Polynomial* f, double h, P3 t)
+      : f_(f), h_(h), t_{t.x, t.y, t.z},
+        hx_(exact_rational(h)), tx_{exact_rational(t.x), exact_rational(t.y), exact_rational(t.z)} {
+  }
+
+  bool operator()(const Voxel& z) const {
+    const double hz[3] = {h_ * double(z.x), h_ * double(z.y), h_ * double(z.z)};
+    double p[3], m[3];
+    for (int i = 0; i < 3; ++i) {
+      p[i] = hz[i] - t_[i];
+      m[i] = 2.0 * (std::abs(hz[i]) + std::abs(t_[i])); // >= |p| + its rounding error
+    }
+    double bound = 0;
+    const double v = f_->value_with_bound(p, m, bound);
+    if (v > bound) return false;
+    if (v < -bound) return true;
+    const std::array<BigRational, 3> q{hx_ * BigRational(BigInt(z.x)) - tx_[0],
+                                       hx_ * BigRational(BigInt(z.y)) - tx_[1],
+                                       hx_ * BigRational(BigInt(z.z)) - tx_[2]};
+    return f_->sign_exact(q.data()) <= 0;
+  }
+
+private:
+  const Polynomial* f_;
+  double h_;
+  double t_[3];
+  BigRational hx_;
+  std::array<BigRational, 3> tx_;
+};
+
+class PolyShape3 final : public Shape3 {
+public:
+  PolyShape3(std::string spec, Polynomial f, double lo, double hi, std::optional<double> volume)
+      : spec_(std::move(spec)), f_(std::make_shared<const Polynomial>(std::move(f))), lo_(lo),
+        hi_(hi), volume_(volume) {}
+  std::string spec() const override { return spec_; }
+  std::optional<std::vector<std::pair<double, double>>> bounding_box() const override {
+    return std::vector<std::pair<double, double>>(3, {lo_, hi_});
+  }
+  VoxelPredicate digitize(double h, P3 t) const override {
+    // The predicate shares the polynomial, so it may outlive the shape.
+    auto f = f_;
+    PolyVoxelPredicate pred(f.get(), h, t);
+    return [f, pred](const Voxel& z) { return pred(z); };
+  }
+  bool contains(P3 p) const override {
+    const double q[3] = {p.x, p.y, p.z};
+    return f_->value(q) <= 0;
+  }
+  SurfacePoint3 project(P3 p) const override { return project_implicit_surface(*f_, p); }
+  std::optional<double> volume() const override { return volume_; }
+
+private:
+  std::string spec_;
+  std::shared_ptr<const Polynomial> f_;
+  double lo_, hi_;
+  std::optional<double> volume_;
+};
+
+struct Named {
+  const char* name;
+  const char* polynomial;
+  double lo, hi;
+  const char* note;
+};
+
+// DGtal's list (Shortcuts::getPolynomialList, src/DGtal/helpers/Shortcuts.h, and the box
+// bounds of its examples), with goursat-hole from shared/THEORY.md. DGtal's distel, heart
+// and crixxi are negated here so that their bounded solid is F < 0; diabolo and cylinder
+// are unbounded and distel reaches |x| = 100 along the axes: the box clips them.
+constexpr Named kNamed[] = {
+    {"sphere1", "x^2+y^2+z^2-1", -1.25, 1.25, "unit sphere"},
+    {"sphere9", "x^2+y^2+z^2-81", -10, 10, "sphere of radius 9"},
+    {"ellipsoid", "3*x^2+2*y^2+z^2-90", -10, 10, "ellipsoid, half-axes sqrt 30, sqrt 45, sqrt 90"},
+    {"cylinder", "x^2+2*z^2-90", -10, 10, "elliptic cylinder along y (clipped by the box)"},
+    {"torus", "(x^2+y^2+z^2+6*6-2*2)^2-4*6*6*(x^2+y^2)", -10, 10, "torus R = 6, r = 2"},
+    {"rcube", "x^4+y^4+z^4-6561", -10, 10, "rounded cube x^4 + y^4 + z^4 <= 9^4"},
+    {"goursat", "-1*(8-0.03*x^4-0.03*y^4-0.03*z^4+2*x^2+2*y^2+2*z^2)", -10, 10, "Goursat surface"},
+    {"goursat-hole", "x^4+y^4+z^4-8*(x^2+y^2+z^2)+30", -10, 10,
+     "Goursat surface with holes (genus > 0)"},
+    {"distel", "x^2+y^2+z^2+1000*(x^2+y^2)*(x^2+z^2)*(y^2+z^2)-10000", -10, 10,
+     "distel (spikes along the axes, clipped by the box)"},
+    {"leopold", "(x^2*y^2*z^2+4*x^2+4*y^2+3*z^2)-100", -10, 10, "Leopold surface"},
+    {"diabolo", "x^2-(y^2+z^2)^2", -10, 10, "diabolo (unbounded, singular at 0; clipped)"},
+    {"heart", "(x^2+2.25*y^2+z^2-1)^3-x^2*z^3-0.1125*y^2*z^3", -2, 2, "heart surface"},
+    {"crixxi", "0.9*(y^2+z^2-1)^2+(x^2+y^2-1)^3", -2, 2, "crixxi surface"},
+};
+
+std::optional<double> named_volume(const std::string& name) {
+  constexpr double pi = std::numbers::pi;
+  if (name == "sphere1") return 4.0 / 3.0 * pi;
+  if (name == "sphere9") return 4.0 / 3.0 * pi * 729.0;
+  if (name == "ellipsoid") return 4.0 / 3.0 * pi * std::sqrt(30.0 * 45.0 * 90.0);
+  if (name == "torus") return 2.0 * pi * pi * 6.0 * 4.0; // 2 pi^2 R r^2
+  if (name == "rcube") {
+    // |x|^4 + |y|^4 + |z|^4 <= a^4: 8 a^3 Gamma(5/4)^3 / Gamma(7/4).
+    return 8.0 * 729.0 * std::pow(std::tgamma(1.25), 3) / std::tgamma(1.75);
+  }
+  return std::nullopt;
+}
+
+constexpr double kFootTolerance = 1e-12;
+
+// The component of p - q orthogonal to the normal at q (zero at a foot point of p).
+P3 tangential_part(const Polynomial& f, P3 p, P3 q) {
+  const double x[3] = {q.x, q.y, q.z};
+  double g[3];
+  f.gradient(x, g);
+  const P3 gv{g[0], g[1], g[2]};
+  const double gn = norm(gv);
+  if (!(gn > 0)) return {0, 0, 0};
+  const P3 n = scale(1.0 / gn, gv), w = sub(p, q);
+  return sub(w, scale(dot(w, n), n));
+}
+
+double tangential_residual(const Polynomial& f, P3 p, P3 q) {
+  return norm(tangential_part(f, p, q));
+}
+
+// One Newton step on (q - p + mu g(q), F(q)) = 0 (the critical points of |q - p|^2 on
+// F = 0), mu from the current point; Gaussian elimination with partial pivoting on the 4x4
+// system [[I + mu M, g], [g^T, 0]]. False when the system is singular.
+bool lagrange_step(const Polynomial& f, P3 p, P3 q, P3& out) {
+  const double x[3] = {q.x, q.y, q.z};
+  double g[3], m[9];
+  f.gradient(x, g);
+  f.hessian(x, m);
+  const double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2];
+  if (!(g2 > 0)) return false;
+  const double w[3] = {p.x - q.x, p.y - q.y, p.z - q.z};
+  const double mu = (w[0] * g[0] + w[1] * g[1] + w[2] * g[2]) / g2;
+  double a[4][5];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) a[i][j] = (i == j ? 1.0 : 0.0) + mu * m[3 * i + j];
+    a[i][3] = g[i];
+    a[i][4] = w[i] - mu * g[i]; // -(q - p + mu g)
+  }
+  for (int j = 0; j < 3; ++j) a[3][j] = g[j];
+  a[3][3] = 0;
+  a[3][4] = -f.value(x);
+  for (int c = 0; c < 4; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < 4; ++r) {
+      if (std::abs(a[r][c]) > std::abs(a[piv][c])) piv = r;
+    }
+    if (!(std::abs(a[piv][c]) > 1e-300)) return false;
+    for (int k = 0; k < 5; ++k) std::swap(a[c][k], a[piv][k]);
+    for (int r = 0; r < 4; ++r) {
+      if (r == c) continue;
+      const double t = a[r][c] / a[c][c];
+      for (int k = c; k < 5; ++k) a[r][k] -= t * a[c][k];
+    }
+  }
+  out = {q.x + a[0][4] / a[0][0], q.y + a[1][4] / a[1][1], q.z + a[2][4] / a[2][2]};
+  return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
+}
+
+} // namespace
+
+SurfacePoint3 implicit_surface_geometry(const Polynomial& f, P3 q) {
+  const double p[3] = {q.x, q.y, q.z};
+  double g[3], m[9];
+  f.gradient(p, g);
+  f.hessian(p, m);
+  const P3 gv{g[0], g[1], g[2]};
+  const double gn = norm(gv);
+  if (!(gn > 0) || !std::isfinite(gn)) {
+    throw InvalidArgument("the gradient of '" + f.str() + "' vanishes at (" + std::to_string(q.x) +
+                          ", " + std::to_string(q.y) + ", " + std::to_string(q.z) +
+                          "): no normal or curvature there");
+  }
+  SurfacePoint3 s;
+  s.point = q;
+  s.normal = scale(1.0 / gn, gv);
+  auto mv = [&](P3 a) {
+    return P3{m[0] * a.x + m[1] * a.y + m[2] * a.z, m[3] * a.x + m[4] * a.y + m[5] * a.z,
+              m[6] * a.x + m[7] * a.y + m[8] * a.z};
+  };
+  const double tr = m[0] + m[4] + m[8];
+  s.mean = (gn * gn * tr - dot(gv, mv(gv))) / (2 * gn * gn * gn);
+  // g^T adj(M) g = -det [[M, g], [g^T, 0]].
+  const double c00 = m[4] * m[8] - m[5] * m[7], c11 = m[0] * m[8] - m[2] * m[6],
+               c22 = m[0] * m[4] - m[1] * m[3], c01 = m[2] * m[7] - m[1] * m[8],
+               c02 = m[1] * m[5] - m[2] * m[4], c12 = m[2] * m[3] - m[0] * m[5];
+  const double gag = g[0] * g[0] * c00 + g[1] * g[1] * c11 + g[2] * g[2] * c22 +
+                     2 * (g[0] * g[1] * c01 + g[0] * g[2] * c02 + g[1] * g[2] * c12);
+  s.gaussian = gag / (gn * gn * gn * gn);
+  // Shape operator on an orthonormal tangent basis (t1, t2).
+  const P3 n = s.normal;
+  const P3 e = std::abs(n.x) <= std::abs(n.y) && std::abs(n.x) <= std::abs(n.z)
+                   ? P3{1, 0, 0}
+                   : (std::abs(n.y) <= std::abs(n.z) ? P3{0, 1, 0} : P3{0, 0, 1});
+  const P3 t1 = unit(cross(n, e)), t2 = cross(n, t1);
+  const double a = dot(t1, mv(t1)) / gn, b = dot(t1, mv(t2)) / gn, c = dot(t2, mv(t2)) / gn;
+  const double mid = 0.5 * (a + c), disc = std::hypot(0.5 * (a - c), b);
+  s.k1 = mid - disc;
+  s.k2 = mid + disc;
+  // Eigenvector of k1: (b, k1 - a) or (k1 - c, b), whichever is longer (both are when b != 0).
+  double u = b, v = s.k1 - a;
+  if (std::hypot(s.k1 - c, b) > std::hypot(u, v)) {
+    u = s.k1 - c;
+    v = b;
+  }
+  if (std::hypot(u, v) == 0) { // umbilic: any tangent direction
+    u = 1;
+    v = 0;
+  }
+  s.d1 = unit(add(scale(u, t1), scale(v, t2)));
+  s.d2 = cross(n, s.d1);
+  return s;
+}
+
+SurfacePoint3 project_implicit_surface(const Polynomial& f, P3 p) {
+  P3 q = newton(f, p);
+  double residual = tangential_residual(f, p, q);
+  for (int round = 0; round < 8 && residual > kFootTolerance * (1 + norm(sub(p, q)) + norm(q));
+       ++round) {
+    const P3 next = newton(f, add(q, tangential_part(f, p, q)));
+    const double r = tangential_residual(f, p, next);
+    if (!(r < residual)) break;
+    q = next;
+    residual = r;
+  }
+  // Polish by Newton on the Lagrange system when the tangential rounds converge slowly
+  // (points far from the surface compared with its curvature radius).
+  for (int it = 0; it < 12 && residual > kFootTolerance * (1 + norm(sub(p, q)) + norm(q)); ++it) {
+    P3 next;
+    if (!lagrange_step(f, p, q, next)) break;
+    next = newton(f, next);
+    const double r = tangential_residual(f, p, next);
+    if (!(r < residual)) break;
+    q = next;
+    residual = r;
+  }
+  return implicit_surface_geometry(f, q);
+}
+
+std::optional<std::string> named_polynomial_3d(const std::string& name) {
+  for (const auto& s : kNamed) {
+    if (name == s.name) return std::string(s.polynomial);
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> named_shapes_3d() {
+  std::vector<std::string> out;
+  for (const auto& s : kNamed) out.emplace_back(s.name);
+  return out;
+}
+
+namespace detail {
+
+void register_3d_shapes(std::vector<ShapeKind>& kinds) {
+  kinds.push_back({"poly", 3, "poly:EXPR",
+                   "F(x, y, z) <= 0 with z present, rational coefficients (exact), box "
+                   "[-10,10]^3",
+                   [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
+                     if (args.find('z') == std::string_view::npos) return nullptr; // 2D
+                     Polynomial f = Polynomial::parse(args, 3);
+                     if (f.degree() < 1) {
+                       throw InvalidArgument("shape '" + std::string(spec) +
+                                             "': the polynomial must not be constant");
+                     }
+                     return std::make_unique<PolyShape3>(std::string(spec), std::move(f), -10.0,
+                                                         10.0, std::nullopt);
+                   }});
+  for (const auto& s : kNamed) {
+    const Named named = s;
+    std::ostringstream description;
+    description << named.note << ": " << named.polynomial << " <= 0, box [" << named.lo << ","
+                << named.hi << "]^3";
+    kinds.push_back(
+        {named.name, 3, named.name, description.str(),
+         [named](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
+           if (!args.empty() || spec.find(':') != std::string_view::npos) {
+             throw InvalidArgument("shape '" + std::string(spec) + "': " + named.name +
+                                   " takes no parameters");
+           }
+           return std::make_unique<PolyShape3>(named.name, Polynomial::parse(named.polynomial, 3),
+                                               named.lo, named.hi, named_volume(named.name));
+         }});
+  }
+}
+
+} // namespace detail
+
+} // namespace zdg

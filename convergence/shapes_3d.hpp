@@ -1,0 +1,83 @@
+// The 3D shapes of the registry: implicit polynomial solids X = { F <= 0 } (F < 0 inside,
+// the surface F = 0 counted as inside, as in 2D), see convergence/shape.hpp for the contract.
+//
+//   poly:EXPR     F(x, y, z), rational coefficients (a `poly:` without z is the 2D shape)
+//   sphere1, sphere9, ellipsoid, cylinder, torus, rcube, goursat, goursat-hole, distel,
+//   leopold, diabolo, heart, crixxi    the classic test polynomials (named_polynomial_3d)
+//
+// Digitization G_h(X + t) = { z in Z^3 : h z - t in X }: the sign of F at the point
+// h z - t (exact dyadic rational) is computed in double with the forward error bound of
+// Polynomial::value_with_bound and recomputed exactly (Polynomial::sign_exact on
+// Rational<BigInt>) when the bound does not certify it: the mechanism of the 2D `poly:`
+// shapes, on the same Polynomial class.
+//
+// Ground truth (shared/THEORY.md, "Ground-truth formulas"). xi(p), the projection of p onto
+// F = 0: damped Newton q <- q - F(q) g / |g|^2 (the step halved while |F| does not
+// decrease, 40 iterations at most), then foot-point refinement: q <- Newton(q + P (p - q)),
+// P the projection on the tangent plane (8 rounds at most), polished by Newton on the
+// Lagrange system q - p + mu grad F(q) = 0, F(q) = 0 (12 steps at most), a step being kept
+// only when it reduces |P (p - q)|, until p - q is parallel to the normal (a foot point: the
+// nearest point of the surface near p, to 1e-12 relative). At q, with
+// g = grad F, M = Hessian F, n = g / |g| (outward):
+//   H = (|g|^2 tr M - g^T M g) / (2 |g|^3),  K = -det [[M, g], [g^T, 0]] / |g|^4,
+//   k1 <= k2 the eigenvalues of the shape operator (t_i^T M t_j) / |g| on an orthonormal
+//   basis (t1, t2) of the tangent plane (so k1 + k2 = 2H, k1 k2 = K), d1, d2 its unit
+//   eigenvectors. Sign convention: curvatures are positive where the solid is convex (a
+//   sphere of radius r has H = 1/r, K = 1/r^2).
+//
+// Cost: one membership test is O(#terms deg) flops, plus a BigInt evaluation when the point
+// lies within the filter bound of the surface (rare: about 1e-15 relative). The predicate
+// returned by digitize is safe to call from several threads.
+#pragma once
+
+#include "convergence/polynomial.hpp"
+#include "convergence/shape.hpp"
+#include "kernel/digital_surface.hpp"
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace zdg {
+
+/// A point of the true surface with its differential geometry (outward normal).
+struct SurfacePoint3 {
+  Point3<double> point;
+  Point3<double> normal;         ///< unit, outward (grad F / |grad F|)
+  double mean = 0, gaussian = 0; ///< H = (k1 + k2) / 2, K = k1 k2
+  double k1 = 0, k2 = 0;         ///< principal curvatures, k1 <= k2
+  Point3<double> d1, d2;         ///< unit principal directions of k1 and k2
+};
+
+class Shape3 : public Shape {
+public:
+  int dimension() const final { return 3; }
+  /// The membership predicate of G_h(X + t) (exact; callable from several threads).
+  virtual VoxelPredicate digitize(double h, Point3<double> t) const = 0;
+  /// Membership of a point (double; diagnostics and tests).
+  virtual bool contains(Point3<double> p) const = 0;
+  /// The nearest surface point of p (untranslated frame) with its curvatures.
+  virtual SurfacePoint3 project(Point3<double> p) const = 0;
+  virtual std::optional<double> volume() const { return std::nullopt; }
+};
+
+/// The differential geometry of the surface F = 0 at q (q need not lie exactly on it: the
+/// formulas are evaluated at q). Throws InvalidArgument where grad F = 0.
+SurfacePoint3 implicit_surface_geometry(const Polynomial& f, Point3<double> q);
+
+/// xi(p) on F = 0 with its geometry (damped Newton and foot-point refinement, above).
+SurfacePoint3 project_implicit_surface(const Polynomial& f, Point3<double> p);
+
+/// The classic polynomial of a named shape (sphere9 -> "x^2+y^2+z^2-81"), oriented so that
+/// its bounded solid is F < 0, or nullopt for an unknown name.
+std::optional<std::string> named_polynomial_3d(const std::string& name);
+
+/// The names of the classic 3D shapes, in registry order.
+std::vector<std::string> named_shapes_3d();
+
+namespace detail {
+void register_3d_shapes(std::vector<ShapeKind>& kinds);
+}
+
+} // namespace zdg
