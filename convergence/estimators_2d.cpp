@@ -2,6 +2,7 @@
 // run the estimator of estimators/, and compare with the shape's ground truth at the
 // projection of each boundary element.
 #include "arith/error.hpp"
+#include "convergence/digitized_2d.hpp"
 #include "convergence/estimator.hpp"
 #include "estimators/binomial_convolver.hpp"
 #include "estimators/dss_length.hpp"
@@ -22,51 +23,10 @@ namespace zdg {
 
 namespace {
 
-struct Digitized2 {
-  const Shape2* shape;
-  Point2<double> t;
-  std::unique_ptr<GaussDigitization2> set;
-  std::vector<DigitalContour> contours;
-  ContourEmbedding embed;
-};
-
-const Shape2& as_2d(const Shape& s) {
-  const auto* p = dynamic_cast<const Shape2*>(&s);
-  if (p == nullptr) throw InvalidArgument("shape '" + s.spec() + "' is not a 2D shape");
-  return *p;
-}
-
-// Pixel box of the continuous box at step h (a margin of one pixel).
-Box2 pixel_box(const std::vector<std::pair<double, double>>& box, double h) {
-  auto lo = [&](double v) { return static_cast<std::int64_t>(std::floor(v / h)) - 1; };
-  auto hi = [&](double v) { return static_cast<std::int64_t>(std::ceil(v / h)) + 1; };
-  double span = std::max(box[0].second - box[0].first, box[1].second - box[1].first) / h;
-  const double far = std::max({std::abs(box[0].first), std::abs(box[0].second),
-                               std::abs(box[1].first), std::abs(box[1].second)}) /
-                     h;
-  if (!(span < 4e9) || !(far < 1e15)) {
-    std::ostringstream msg;
-    msg << "grid step h = " << h << " is too small for the box";
-    throw InvalidArgument(msg.str());
-  }
-  return Box2{{lo(box[0].first), lo(box[1].first)}, {hi(box[0].second), hi(box[1].second)}};
-}
+using detail::Digitized2;
 
 Digitized2 digitize(const RunInput& in) {
-  Digitized2 d;
-  d.shape = &as_2d(in.shape);
-  d.t = {in.translation.at(0), in.translation.at(1)};
-  Box2 box = pixel_box(in.box, in.h);
-  d.set = d.shape->digitize(in.h, d.t, box);
-  // Scan 9 rows and 9 columns spread over the box (and the axes) for contours.
-  std::vector<std::int64_t> rows{0}, cols{0};
-  for (int i = 1; i <= 9; ++i) {
-    rows.push_back(box.lo.y + (box.hi.y - box.lo.y) * i / 10);
-    cols.push_back(box.lo.x + (box.hi.x - box.lo.x) * i / 10);
-  }
-  d.contours = digital_contours(*d.set, rows, cols);
-  d.embed = ContourEmbedding{in.h};
-  return d;
+  return detail::digitize_2d(in);
 }
 
 // Ground truth at an embedded point of the translated shape.

@@ -11,6 +11,7 @@
 // Boundary elements on the box (outer pixel or voxel outside it, for shapes the box clips)
 // carry no error. The 2D contours are found as in estimators_2d.cpp (9 rows and columns).
 #include "arith/error.hpp"
+#include "convergence/digitized_2d.hpp"
 #include "convergence/digitized_3d.hpp"
 #include "convergence/estimator.hpp"
 #include "estimators/hausdorff.hpp"
@@ -25,31 +26,13 @@ namespace zdg {
 namespace {
 
 std::vector<double> distances_2d(const RunInput& in) {
-  const auto* shape = dynamic_cast<const Shape2*>(&in.shape);
-  if (shape == nullptr) throw InvalidArgument("shape '" + in.shape.spec() + "' is not 2D");
-  const double h = in.h;
-  const auto& b = in.box;
-  if (b.size() != 2) throw InvalidArgument("a 2D run needs a box with 2 axes");
-  double far = 0;
-  for (const auto& [lo, hi] : b) far = std::max({far, std::abs(lo), std::abs(hi)});
-  if (!(far / h < 1e9)) {
-    std::ostringstream msg;
-    msg << "grid step h = " << h << " is too small for the box";
-    throw InvalidArgument(msg.str());
-  }
-  auto lo = [&](double v) { return static_cast<std::int64_t>(std::floor(v / h)) - 1; };
-  auto hi = [&](double v) { return static_cast<std::int64_t>(std::ceil(v / h)) + 1; };
-  const Box2 box{{lo(b[0].first), lo(b[1].first)}, {hi(b[0].second), hi(b[1].second)}};
-  const Point2<double> t{in.translation.at(0), in.translation.at(1)};
-  auto set = shape->digitize(h, t, box);
-  std::vector<std::int64_t> rows{0}, cols{0};
-  for (int i = 1; i <= 9; ++i) {
-    rows.push_back(box.lo.y + (box.hi.y - box.lo.y) * i / 10);
-    cols.push_back(box.lo.x + (box.hi.x - box.lo.x) * i / 10);
-  }
-  const ContourEmbedding embed{h};
+  const detail::Digitized2 d = detail::digitize_2d(in);
+  const auto* shape = d.shape;
+  const Box2& box = d.box;
+  const Point2<double> t = d.t;
+  const ContourEmbedding& embed = d.embed;
   std::vector<Point2<double>> centres;
-  for (const auto& c : digital_contours(*set, rows, cols)) {
+  for (const auto& c : d.contours) {
     Pixel p = c.start;
     for (auto code : c.codes) {
       Pixel s = freeman_step(code);
