@@ -5,6 +5,8 @@
 #include "convergence/theory.hpp"
 #include "estimators/hausdorff.hpp"
 
+#include "tests/support/experiments.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,14 +16,6 @@ namespace {
 
 // Under the sanitizers (about 15x slower in Debug) the loops below run on fewer shapes/steps.
 const bool kSanitized = std::getenv("ZDG_SANITIZE") != nullptr;
-
-const zdg::FitRecord& linf_fit(const zdg::ExperimentResult& r, const std::string& shape,
-                               const std::string& est) {
-  for (const auto& f : r.fits) {
-    if (f.shape == shape && f.estimator == est && f.norm == "linf") return f;
-  }
-  throw std::runtime_error("no fit for " + shape + " " + est);
-}
 
 zdg::ErrorStats run_once(const std::string& shape, const std::string& est, double h,
                          std::vector<double> t = {0.0, 0.0, 0.0}, double k = 3) {
@@ -56,11 +50,11 @@ TEST(Estimators3d, IISlopesOnTheSphereSmoke) {
     EXPECT_LT(run.errors.linf, 0.5) << run.estimator << " " << run.h;
   }
   for (const char* e : {"ii-mean", "ii-k1", "ii-k2"}) {
-    const auto& f = linf_fit(r, "sphere9", e);
+    const auto& f = zdg::test::linf_fit(r, e, "sphere9");
     EXPECT_NEAR(*f.expected, 1.0 / 3, 1e-12);
     EXPECT_TRUE(*f.pass) << e << " slope " << f.fit.slope;
   }
-  EXPECT_NEAR(*linf_fit(r, "sphere9", "ii-normal").expected, 2.0 / 3, 1e-12);
+  EXPECT_NEAR(*zdg::test::linf_fit(r, "ii-normal", "sphere9").expected, 2.0 / 3, 1e-12);
   EXPECT_TRUE(r.all_pass);
 }
 
@@ -156,7 +150,7 @@ TEST(Estimators3d, HausdorffSlopeSmokeAndGaussVolume) {
   c.translations = 3;
   c.threads = 2;
   auto r = zdg::run_experiment(c);
-  EXPECT_NEAR(*linf_fit(r, "sphere9", "hausdorff").expected, 1.0, 1e-12);
+  EXPECT_NEAR(*zdg::test::linf_fit(r, "hausdorff", "sphere9").expected, 1.0, 1e-12);
   EXPECT_TRUE(r.all_pass);
   auto v = run_once("sphere9", "gauss-volume", 0.25, {0.1, 0.05, -0.07});
   EXPECT_LT(v.linf, 3.0); // of 3054

@@ -2,6 +2,7 @@
 
 #include "arith/error.hpp"
 #include "convergence/theory.hpp"
+#include "tests/support/experiments.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,12 +11,7 @@
 
 namespace {
 
-const zdg::FitRecord& linf_fit(const zdg::ExperimentResult& r, const std::string& est) {
-  for (const auto& f : r.fits) {
-    if (f.estimator == est && f.norm == "linf") return f;
-  }
-  throw std::runtime_error("no fit");
-}
+using zdg::test::linf_fit;
 
 TEST(Fit, ExactPowerLawHasItsSlopeAndNoError) {
   std::vector<double> h{0.1, 0.05, 0.02, 0.01}, e;
