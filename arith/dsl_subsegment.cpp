@@ -169,6 +169,24 @@ std::vector<PathRun<I>> path_runs(const I& a, const I& b) {
   return out;
 }
 
+// The answer at the first node of `run` in [lo, hi] that fits, given that node hi fits and
+// that feasibility is monotone on [lo, hi] (the nodes approach a/b from one side): binary
+// search, O(log k) fit tests.
+template <TowerInt I, class Local>
+DslSubsegment<I> first_fitting_node(const Local& L, const PathRun<I>& run, I lo, I hi) {
+  while (lo < hi) {
+    I mid = lo + (hi - lo) / 2;
+    auto g = run.node(mid);
+    if (L.fit(g.p, g.q)) {
+      hi = mid;
+    } else {
+      lo = mid + 1;
+    }
+  }
+  auto best = run.node(lo);
+  return L.answer(best.p, best.q, *L.fit(best.p, best.q));
+}
+
 } // namespace
 
 template <TowerInt I>
@@ -182,20 +200,8 @@ DslSubsegment<I> subsegment_top_down(const I& a, const I& b, const I& mu, const 
   // Nodes N_0 .. N_{k-1} of a run lie on one side of a/b and approach it (N_k starts the
   // next run, on the other side): feasibility is monotone on them.
   for (const auto& run : path_runs(L.a, L.b)) {
-    I lo = 0, hi = run.k - 1;
-    auto f = run.node(hi);
-    if (!L.fit(f.p, f.q)) continue;
-    while (lo < hi) {
-      I mid = lo + (hi - lo) / 2;
-      auto g = run.node(mid);
-      if (L.fit(g.p, g.q)) {
-        hi = mid;
-      } else {
-        lo = mid + 1;
-      }
-    }
-    auto best = run.node(lo);
-    return L.answer(best.p, best.q, *L.fit(best.p, best.q));
+    auto f = run.node(run.k - 1);
+    if (L.fit(f.p, f.q)) return first_fitting_node(L, run, I(0), I(run.k - 1));
   }
   if (auto m = L.fit(L.a, L.b)) return L.answer(L.a, L.b, *m);
   throw Error("DSL subsegment: no feasible slope on the path (internal error)");
@@ -242,18 +248,7 @@ DslSubsegment<I> subsegment_bottom_up(const I& a, const I& b, const I& mu, const
       j = 0;
       continue;
     }
-    I lo = 1, hi = j; // node hi is feasible
-    while (lo < hi) {
-      I mid = lo + (hi - lo) / 2;
-      auto g = run.node(mid);
-      if (L.fit(g.p, g.q)) {
-        hi = mid;
-      } else {
-        lo = mid + 1;
-      }
-    }
-    auto best = run.node(lo);
-    return L.answer(best.p, best.q, *L.fit(best.p, best.q));
+    return first_fitting_node(L, run, I(1), j); // node j is feasible
   }
 }
 

@@ -2,6 +2,8 @@
 
 #include "arith/error.hpp"
 
+#include "tests/support/digital_sets.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,17 +12,7 @@ namespace {
 
 using zdg::Pixel;
 
-class Disc final : public zdg::GaussDigitization2 {
-public:
-  explicit Disc(std::int64_t r2)
-      : GaussDigitization2(zdg::Box2{{-3000, -3000}, {3000, 3000}}), r2_(r2) {}
-
-protected:
-  bool inside(const Pixel& z) const override { return z.x * z.x + z.y * z.y <= r2_; }
-
-private:
-  std::int64_t r2_;
-};
+using Disc = zdg::test::DiscDigitization;
 
 TEST(BinomialConvolver, MaskOrderFollowsTheLaw) {
   EXPECT_EQ(zdg::binomial_mask_order(1.0, 1.0), 2);

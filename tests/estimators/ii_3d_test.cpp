@@ -2,6 +2,8 @@
 
 #include "tests/support/tower.hpp"
 
+#include "tests/support/digital_sets.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,10 +17,7 @@ using zdg::Voxel;
 using zdg::VoxelBox;
 
 zdg::VoxelPredicate ball(Voxel c, std::int64_t r2) {
-  return [=](const Voxel& z) {
-    const auto dx = z.x - c.x, dy = z.y - c.y, dz = z.z - c.z;
-    return dx * dx + dy * dy + dz * dz <= r2;
-  };
+  return zdg::test::ball_predicate(c, r2);
 }
 
 bool sanitized() {
