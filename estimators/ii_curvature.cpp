@@ -10,37 +10,16 @@
 namespace zdg {
 
 DigitalBallCounter::DigitalBallCounter(const GaussDigitization2& set, double radius_pixels)
-    : set_(set) {
-  if (!(radius_pixels >= 0) || radius_pixels > 1e8) {
-    throw InvalidArgument("digital ball radius " + std::to_string(radius_pixels) +
-                          " pixels is out of range [0, 1e8]");
-  }
-  const double r2 = radius_pixels * radius_pixels;
-  rr_ = static_cast<std::int64_t>(std::floor(radius_pixels));
-  while (static_cast<double>((rr_ + 1) * (rr_ + 1)) <= r2) ++rr_;
-  while (rr_ > 0 && static_cast<double>(rr_ * rr_) > r2) --rr_;
-  w_.resize(static_cast<std::size_t>(2 * rr_ + 1));
-  for (std::int64_t dy = -rr_; dy <= rr_; ++dy) {
-    auto w = static_cast<std::int64_t>(std::floor(std::sqrt(std::max(0.0, r2 - double(dy * dy)))));
-    while (static_cast<double>((w + 1) * (w + 1) + dy * dy) <= r2) ++w;
-    while (w > 0 && static_cast<double>(w * w + dy * dy) > r2) --w;
-    w_[static_cast<std::size_t>(dy + rr_)] = w;
-  }
-  add_.reserve(w_.size());
-  rem_.reserve(w_.size());
-}
-
-std::int64_t DigitalBallCounter::ball_size() const {
-  std::int64_t n = 0;
-  for (auto w : w_) n += 2 * w + 1;
-  return n;
+    : set_(set), disc_(radius_pixels) {
+  add_.reserve(disc_.w.size());
+  rem_.reserve(disc_.w.size());
 }
 
 std::int64_t DigitalBallCounter::direct_count(const Pixel& c) const {
   std::vector<Pixel> row;
   std::int64_t n = 0;
-  for (std::int64_t dy = -rr_; dy <= rr_; ++dy) {
-    std::int64_t w = w_[static_cast<std::size_t>(dy + rr_)];
+  for (std::int64_t dy = -disc_.r; dy <= disc_.r; ++dy) {
+    std::int64_t w = disc_.half_width(dy);
     row.clear();
     for (std::int64_t dx = -w; dx <= w; ++dx) row.push_back(Pixel{c.x + dx, c.y + dy});
     n += set_.count(row);
@@ -52,8 +31,8 @@ std::int64_t DigitalBallCounter::direct_count(const Pixel& c) const {
 void DigitalBallCounter::step(int code) {
   add_.clear();
   rem_.clear();
-  for (std::int64_t k = -rr_; k <= rr_; ++k) {
-    std::int64_t w = w_[static_cast<std::size_t>(k + rr_)];
+  for (std::int64_t k = -disc_.r; k <= disc_.r; ++k) {
+    std::int64_t w = disc_.half_width(k);
     switch (code) {
     case 0:
       rem_.push_back({c_.x - w, c_.y + k});
@@ -80,7 +59,7 @@ void DigitalBallCounter::step(int code) {
 
 std::int64_t DigitalBallCounter::move_to(const Pixel& c) {
   const std::int64_t dx = c.x - c_.x, dy = c.y - c_.y;
-  if (!placed_ || std::llabs(dx) + std::llabs(dy) > rr_) {
+  if (!placed_ || std::llabs(dx) + std::llabs(dy) > disc_.r) {
     c_ = c;
     count_ = direct_count(c);
     placed_ = true;
@@ -91,26 +70,53 @@ std::int64_t DigitalBallCounter::move_to(const Pixel& c) {
   return count_;
 }
 
-std::vector<double> ii_curvature(const GaussDigitization2& set, const DigitalContour& contour,
-                                 double h, double radius) {
+namespace {
+
+void check_steps(double h, double radius) {
   if (!(h > 0) || !(radius > 0)) {
     throw InvalidArgument("ii_curvature: h and R must be > 0 (h = " + std::to_string(h) +
                           ", R = " + std::to_string(radius) + ")");
   }
-  DigitalBallCounter inner(set, radius / h), outer(set, radius / h);
+}
+
+// kappa = 3 pi / (2R) - 3 A / R^3 at every linel, A = h^2 (count(inner) + count(outer)) / 2.
+template <class Count>
+std::vector<double> ii_along(const DigitalContour& contour, double h, double radius,
+                             Count&& count) {
   std::vector<double> out;
   out.reserve(contour.size());
   const double k0 = 3 * std::numbers::pi / (2 * radius), k1 = 3 / (radius * radius * radius);
   Pixel p = contour.start;
   for (auto code : contour.codes) {
-    std::int64_t a = inner.move_to(DigitalContour::inner_pixel(p, code));
-    std::int64_t b = outer.move_to(DigitalContour::outer_pixel(p, code));
-    double area = h * h * 0.5 * static_cast<double>(a + b);
-    out.push_back(k0 - k1 * area);
+    const std::int64_t both = count(DigitalContour::inner_pixel(p, code), 0) +
+                              count(DigitalContour::outer_pixel(p, code), 1);
+    out.push_back(k0 - k1 * (h * h * 0.5 * static_cast<double>(both)));
     Pixel d = freeman_step(code);
     p = Pixel{p.x + d.x, p.y + d.y};
   }
   return out;
+}
+
+} // namespace
+
+std::vector<double> ii_curvature(const GaussDigitization2& set, const DigitalContour& contour,
+                                 double h, double radius) {
+  check_steps(h, radius);
+  DigitalBallCounter inner(set, radius / h), outer(set, radius / h);
+  return ii_along(contour, h, radius, [&](const Pixel& c, int which) {
+    return which == 0 ? inner.move_to(c) : outer.move_to(c);
+  });
+}
+
+std::vector<double> ii_curvature(ContourBallCounter& counter, const DigitalContour& contour,
+                                 double h, double radius) {
+  check_steps(h, radius);
+  const DigitalDisc expected(radius / h);
+  if (expected.r != counter.disc().r || expected.w != counter.disc().w) {
+    throw InvalidArgument("ii_curvature: the counter's disc is not the ball of radius R/h = " +
+                          std::to_string(radius / h) + " pixels");
+  }
+  return ii_along(contour, h, radius, [&](const Pixel& c, int) { return counter.count(c); });
 }
 
 } // namespace zdg

@@ -13,9 +13,15 @@
 // queries, r = R/h. Along a contour the inner and outer pixels move by at most two unit
 // steps per linel, so a contour of n linels costs O(n R/h) queries instead of
 // O(n (R/h)^2). Counts are exact int64_t (the ball has < 2^62 pixels).
+//
+// When every contour of the digitized set is known (complete boundary), the counts come
+// instead from Green's formula over the contours (estimators/contour_ball_count.hpp):
+// O(log n) per linel, independent of R/h, and the same integers.
 #pragma once
 
+#include "estimators/contour_ball_count.hpp"
 #include "kernel/digital_contour.hpp"
+#include "kernel/digital_disc.hpp"
 #include "kernel/gauss_digitization.hpp"
 
 #include <cstdint>
@@ -32,14 +38,13 @@ public:
   /// Moves the ball to c (incrementally when c is within r of the current centre) and
   /// returns the count.
   std::int64_t move_to(const Pixel& c);
-  std::int64_t radius() const { return rr_; }
+  std::int64_t radius() const { return disc_.r; }
   /// Number of pixels of the ball.
-  std::int64_t ball_size() const;
+  std::int64_t ball_size() const { return disc_.size; }
 
 private:
   const GaussDigitization2& set_;
-  std::int64_t rr_;             // floor(r)
-  std::vector<std::int64_t> w_; // half-width of row dy, index dy + rr_
+  DigitalDisc disc_;
   Pixel c_{};
   std::int64_t count_ = 0;
   bool placed_ = false;
@@ -50,6 +55,11 @@ private:
 /// Curvature at every linel of the contour (same order as contour.codes), R in the units
 /// of the embedding (R/h pixels).
 std::vector<double> ii_curvature(const GaussDigitization2& set, const DigitalContour& contour,
+                                 double h, double radius);
+
+/// Same values, with the counts of `counter` (built on the set and ALL its contours, with
+/// radius R/h pixels): O(n log n) for the contour instead of O(n R/h).
+std::vector<double> ii_curvature(ContourBallCounter& counter, const DigitalContour& contour,
                                  double h, double radius);
 
 } // namespace zdg

@@ -63,4 +63,20 @@ TEST(IICurvature, CircleCurvatureIsCloseToOneOverRadius) {
   EXPECT_LT(worst, 0.1);
 }
 
+TEST(IICurvature, GreenCountsGiveTheSameCurvatures) {
+  // The contour counter (complete boundary: one disc) and the incremental counter return the
+  // same integers, hence bit-identical curvatures.
+  const double h = 1.0 / 150;
+  Disc disc(150);
+  auto contours = zdg::digital_contours(disc, {0}, {});
+  ASSERT_EQ(contours.size(), 1u);
+  for (double radius : {0.05, 0.3, 1.7}) {
+    zdg::ContourBallCounter counter(disc, contours, radius / h);
+    EXPECT_EQ(zdg::ii_curvature(counter, contours[0], h, radius),
+              zdg::ii_curvature(disc, contours[0], h, radius));
+  }
+  zdg::ContourBallCounter other(disc, contours, 3.0);
+  EXPECT_THROW((void)zdg::ii_curvature(other, contours[0], h, 0.3), zdg::InvalidArgument);
+}
+
 } // namespace
