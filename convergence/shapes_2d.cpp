@@ -482,10 +482,12 @@ public:
     return radius_unwrapped(s - 2 * kPi * std::floor((s + kPi) / (2 * kPi)));
   }
   // r(pi) = r(-pi) always (cos is even); r'(pi) - r'(-pi) = -6 R2 P pi^2 sin(P pi^3)
-  // vanishes iff P = m / pi^2 (m integer), up to the rounding of P (tolerance 1e-9).
+  // vanishes iff P = m / pi^2 (m integer). The tolerance 1e-11 (max r + max |r'|) absorbs
+  // the rounding of such a P to a double (a jump of about 1e-14 of that scale for
+  // 10 / pi^2); a P off by 1e-9 relative is a corner.
   bool seam_corner() const override {
     Radius a = radius_unwrapped(kPi), b = radius_unwrapped(-kPi);
-    double tol = 1e-9 * (r_max() + max_dr());
+    double tol = 1e-11 * (r_max() + max_dr());
     return std::abs(a.r - b.r) > tol || std::abs(a.d1 - b.d1) > tol;
   }
   double r_min() const override { return r1_ - std::abs(r2_); }

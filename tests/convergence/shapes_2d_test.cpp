@@ -336,6 +336,11 @@ TEST(Shapes2d, ReachOfFlowersIsBelowTheirMinimalRadiusOfCurvature) {
   EXPECT_GE(ba, rca / 2.5);
   // P = 5: r' jumps at t = +-pi, a corner: reach 0.
   EXPECT_EQ(*shape2("accflower:20,5,5")->reach_lower_bound(), 0.0);
+  EXPECT_EQ(*shape2("accflower:20,5,1.0132")->reach_lower_bound(), 0.0);
+  EXPECT_EQ(*shape2("accflower:20,5,1.0132118374")->reach_lower_bound(), 0.0);
+  // P = 2K/pi^2 for other K, and odd m / pi^2: smooth, positive.
+  EXPECT_GT(*shape2("accflower:20,5,0.20264236728467555")->reach_lower_bound(), 0.0);
+  EXPECT_GT(*shape2("accflower:20,5,0.5066059182116889")->reach_lower_bound(), 0.0);
   std::printf("reach lower bounds: flower:20,7,6 %.6g (min radius of curvature %.6g), "
               "accflower:20,5,10/pi^2 %.6g (%.6g)\n",
               bound, rc, ba, rca);
