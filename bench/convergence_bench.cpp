@@ -113,6 +113,37 @@ void BM_ProjectChain(benchmark::State& state) {
 }
 BENCHMARK(BM_ProjectChain)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The linel midpoints of the digitized flower:20,7,6 at h = 1/arg, in contour order (what
+// the estimators project).
+void BM_ProjectChainFlowerContour(benchmark::State& state) {
+  const double h = 1.0 / static_cast<double>(state.range(0));
+  auto shape = zdg::parse_shape("flower:20,7,6");
+  const auto& s = dynamic_cast<const zdg::Shape2&>(*shape);
+  auto n = static_cast<std::int64_t>(std::ceil(28.0 / h));
+  auto set = s.digitize(h, {0.0, 0.0}, zdg::Box2{{-n, -n}, {n, n}});
+  auto contour = zdg::digital_contours(*set, {0}, {}).at(0);
+  zdg::ContourEmbedding e{h};
+  std::vector<zdg::Point2<double>> pts;
+  zdg::Pixel p = contour.start;
+  for (auto c : contour.codes) {
+    pts.push_back(e.linel_midpoint(p, c));
+    auto d = zdg::freeman_step(c);
+    p = {p.x + d.x, p.y + d.y};
+  }
+  benchmark::DoNotOptimize(s.reach_lower_bound());
+  for (auto _ : state) {
+    auto q = s.project_chain(pts);
+    benchmark::DoNotOptimize(q.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(pts.size()));
+}
+BENCHMARK(BM_ProjectChainFlowerContour)
+    ->Arg(3)
+    ->Arg(10)
+    ->Arg(100)
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond);
+
 void BM_ReachLowerBoundFlower(benchmark::State& state) {
   for (auto _ : state) {
     auto shape = zdg::parse_shape("flower:20,7,6");
