@@ -295,13 +295,14 @@ public:
       ny[i] = -j.d1.x / speed;
     }
     // Both orders of a pair at once: min(q / |d.n_i|, q / |d.n_j|) = q / max(...).
+    constexpr double kInf = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < n; ++i) {
       double m = best;
       for (std::size_t k = i + 1; k < n; ++k) {
         const double dx = x[k] - x[i], dy = y[k] - y[i];
         const double den =
             2 * std::max(std::abs(dx * nx[i] + dy * ny[i]), std::abs(dx * nx[k] + dy * ny[k]));
-        const double r = (dx * dx + dy * dy) / den;
+        const double r = den > 0 ? (dx * dx + dy * dy) / den : kInf; // den = 0: no constraint
         m = r < m ? r : m;
       }
       best = std::min(best, m);
