@@ -26,6 +26,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -69,6 +70,24 @@ public:
   virtual bool contains(Point2<double> p) const = 0;
   /// The nearest boundary point of p (untranslated frame) with tangent and curvature.
   virtual BoundaryPoint2 project(Point2<double> p) const = 0;
+  /// The nearest boundary points of a sequence of points in chain order (consecutive
+  /// points close to each other, e.g. the linels of a digital contour). Same answers as
+  /// `project` on each point; shapes may override it to warm-start each projection from
+  /// the previous one (ParametricShape does, with a reach certificate).
+  virtual std::vector<BoundaryPoint2> project_chain(std::span<const Point2<double>> pts) const {
+    std::vector<BoundaryPoint2> out;
+    out.reserve(pts.size());
+    for (const auto& p : pts) out.push_back(project(p));
+    return out;
+  }
+  /// A lower bound of the reach of the boundary (Federer 1959):
+  ///   reach = inf over boundary points x != y of |y - x|^2 / (2 |(y - x) . n_x|),
+  /// the smaller of the minimal radius of curvature and half the narrowest bottleneck;
+  /// 0 when the boundary has a corner; nullopt when unknown. Never an overestimate: a point
+  /// at distance < reach from the boundary has a unique nearest boundary point, and the
+  /// Gauss digitization at step h <= reach / 2 is topologically faithful (Latecki, Conrad,
+  /// Gross 1998; Stelldinger, Koethe 2005).
+  virtual std::optional<double> reach_lower_bound() const { return std::nullopt; }
   virtual std::optional<double> area() const { return std::nullopt; }
   virtual std::optional<double> perimeter() const { return std::nullopt; }
   virtual std::optional<Moments2> moments() const { return std::nullopt; }

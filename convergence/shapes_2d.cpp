@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <numbers>
+#include <span>
 
 namespace zdg {
 
@@ -179,7 +181,10 @@ public:
   virtual double min_speed() const = 0; // lower bound of |C'|
   virtual int quadrature_samples() const { return 1 << 16; }
 
-  BoundaryPoint2 project(P2 p) const override {
+  BoundaryPoint2 project(P2 p) const override { return point_of(jet(project_parameter(p))); }
+
+  // The robust projection: sample a window around the polar guess, then clamped Newton.
+  double project_parameter(P2 p) const {
     double s0 = guess(p);
     CurveJet j0 = jet(s0);
     double d0 = std::hypot(j0.c.x - p.x, j0.c.y - p.y);
@@ -197,6 +202,11 @@ public:
     }
     double step_limit = 2.0 * delta / kSamples + 1e-12;
     double s = best_s;
+    // A step that increases the distance stops Newton; increases within the rounding noise
+    // of the coordinates (a few ulps of |p|) do not, or Newton would stop short near the
+    // minimum, where the distance is flat.
+    const double noise =
+        1e-15 + 8 * std::numeric_limits<double>::epsilon() * (std::abs(p.x) + std::abs(p.y) + d0);
     for (int it = 0; it < 40; ++it) {
       CurveJet j = jet(s);
       double rx = j.c.x - p.x, ry = j.c.y - p.y;
@@ -206,19 +216,98 @@ public:
       step = std::clamp(step, -step_limit, step_limit);
       double ns = s - step;
       CurveJet jn = jet(ns);
-      if (std::hypot(jn.c.x - p.x, jn.c.y - p.y) > std::hypot(rx, ry) + 1e-15) break;
+      if (std::hypot(jn.c.x - p.x, jn.c.y - p.y) > std::hypot(rx, ry) + noise) break;
       s = ns;
       if (std::abs(step) < 1e-14) break;
     }
-    return point_at(s);
+    return s;
   }
 
-  BoundaryPoint2 point_at(double s) const {
-    CurveJet j = jet(s);
+  static BoundaryPoint2 point_of(const CurveJet& j) {
     double speed = std::hypot(j.d1.x, j.d1.y);
     return {j.c,
             {j.d1.x / speed, j.d1.y / speed},
             (j.d1.x * j.d2.y - j.d1.y * j.d2.x) / (speed * speed * speed)};
+  }
+
+  // Warm start with a reach certificate (see shapes_2d.hpp): Newton on
+  // g(s) = (C(s) - p).C'(s) from the previous point's parameter; the iterate x = C(s) is
+  // accepted once its tangential residual eps = |g| / |C'| is below kChainTol (1 + |x|) and
+  // its normal distance |(p - x) x C'| / |C'| is at most reach_lower_bound / 2, which
+  // proves that the nearest boundary point lies within 4 eps of x. Otherwise `project`.
+  std::vector<BoundaryPoint2> project_chain(std::span<const P2> pts) const override {
+    const std::optional<double> reach = reach_lower_bound();
+    if (pts.empty() || !reach || !(*reach > 0)) return Shape2::project_chain(pts);
+    constexpr int kMaxSteps = 8;
+    constexpr double kChainTol = 1e-14, kMaxStep = 0.1;
+    const double dmax2 = (*reach / 2) * (*reach / 2);
+    std::vector<BoundaryPoint2> out;
+    out.reserve(pts.size());
+    double s = project_parameter(pts[0]);
+    CurveJet j = jet(s);
+    out.push_back(point_of(j));
+    for (std::size_t i = 1; i < pts.size(); ++i) {
+      const P2 p = pts[i];
+      bool certified = false;
+      for (int it = 0;; ++it) {
+        const double rx = j.c.x - p.x, ry = j.c.y - p.y;
+        const double speed2 = j.d1.x * j.d1.x + j.d1.y * j.d1.y;
+        const double g = rx * j.d1.x + ry * j.d1.y, cross = rx * j.d1.y - ry * j.d1.x;
+        const double tol2 = kChainTol * kChainTol * (1 + j.c.x * j.c.x + j.c.y * j.c.y);
+        if (g * g <= tol2 * speed2 && cross * cross <= dmax2 * speed2) {
+          certified = true;
+          break;
+        }
+        const double dg = speed2 + rx * j.d2.x + ry * j.d2.y;
+        if (it == kMaxSteps || !(dg > 0)) break;
+        s -= std::clamp(g / dg, -kMaxStep, kMaxStep);
+        j = jet(s);
+      }
+      if (!certified) {
+        s = project_parameter(p);
+        j = jet(s);
+      }
+      out.push_back(point_of(j));
+    }
+    return out;
+  }
+
+  // Federer's formula sampled: the minimum of |y - x|^2 / (2 |(y - x) . n_x|) over pairs of
+  // n_pairs samples of the parameter, and of the radius of curvature over n_dense samples.
+  // Each sampled value is >= the infimum, so the result may overestimate the reach; callers
+  // divide it by a safety factor. O(n_pairs^2 + n_dense).
+  double sampled_reach(int n_pairs, int n_dense) const {
+    double kmax = 0;
+    for (int i = 0; i < n_dense; ++i) {
+      CurveJet j = jet(-kPi + 2 * kPi * i / n_dense);
+      double speed = std::hypot(j.d1.x, j.d1.y);
+      kmax = std::max(kmax, std::abs(j.d1.x * j.d2.y - j.d1.y * j.d2.x) / (speed * speed * speed));
+    }
+    double best = kmax > 0 ? 1 / kmax : std::numeric_limits<double>::infinity();
+    const auto n = static_cast<std::size_t>(n_pairs);
+    std::vector<double> x(n), y(n), nx(n), ny(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      CurveJet j = jet(-kPi + 2 * kPi * static_cast<double>(i) / n_pairs);
+      double speed = std::hypot(j.d1.x, j.d1.y);
+      x[i] = j.c.x;
+      y[i] = j.c.y;
+      nx[i] = j.d1.y / speed;
+      ny[i] = -j.d1.x / speed;
+    }
+    // Both orders of a pair at once: min(q / |d.n_i|, q / |d.n_j|) = q / max(...).
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+      double m = best;
+      for (std::size_t k = i + 1; k < n; ++k) {
+        const double dx = x[k] - x[i], dy = y[k] - y[i];
+        const double den =
+            2 * std::max(std::abs(dx * nx[i] + dy * ny[i]), std::abs(dx * nx[k] + dy * ny[k]));
+        const double r = den > 0 ? (dx * dx + dy * dy) / den : kInf; // den = 0: no constraint
+        m = r < m ? r : m;
+      }
+      best = std::min(best, m);
+    }
+    return best;
   }
 
   // Trapezoid rule over one period: perimeter, and Green's formulas for the moments.
@@ -325,6 +414,25 @@ public:
   std::optional<std::vector<std::pair<double, double>>> bounding_box() const override {
     return std::vector<std::pair<double, double>>{{-r_max(), r_max()}, {-r_max(), r_max()}};
   }
+
+  /// True when r or r' jumps across the seam t = +-pi: the boundary has a corner there.
+  virtual bool seam_corner() const { return false; }
+
+  // Federer's formula on 4096 samples (pairs) and the curvature on 2^16 samples, divided by
+  // kReachSafety = 2 (sampling only overestimates an infimum); 0 with a corner. Computed
+  // once, on first use (about 20 ms), thread-safely.
+  std::optional<double> reach_lower_bound() const override {
+    constexpr int kPairs = 4096, kDense = 1 << 16;
+    constexpr double kReachSafety = 2.0;
+    std::call_once(reach_once_, [this] {
+      reach_ = seam_corner() ? 0.0 : sampled_reach(kPairs, kDense) / kReachSafety;
+    });
+    return reach_;
+  }
+
+private:
+  mutable std::once_flag reach_once_;
+  mutable double reach_ = 0;
 };
 
 class Flower final : public StarShape {
@@ -372,11 +480,16 @@ public:
   std::string spec() const override { return spec_; }
   Radius radius(double s) const override {
     // t wrapped to [-pi, pi)
-    double t = s - 2 * kPi * std::floor((s + kPi) / (2 * kPi));
-    double u = p_ * t * t * t;
-    double du = 3 * p_ * t * t, ddu = 6 * p_ * t;
-    return {r1_ + r2_ * std::cos(u), -r2_ * std::sin(u) * du,
-            -r2_ * (std::cos(u) * du * du + std::sin(u) * ddu)};
+    return radius_unwrapped(s - 2 * kPi * std::floor((s + kPi) / (2 * kPi)));
+  }
+  // r(pi) = r(-pi) always (cos is even); r'(pi) - r'(-pi) = -6 R2 P pi^2 sin(P pi^3)
+  // vanishes iff P = m / pi^2 (m integer). The tolerance 1e-11 (max r + max |r'|) absorbs
+  // the rounding of such a P to a double (a jump of about 1e-14 of that scale for
+  // 10 / pi^2); a P off by 1e-9 relative is a corner.
+  bool seam_corner() const override {
+    Radius a = radius_unwrapped(kPi), b = radius_unwrapped(-kPi);
+    double tol = 1e-11 * (r_max() + max_dr());
+    return std::abs(a.r - b.r) > tol || std::abs(a.d1 - b.d1) > tol;
   }
   double r_min() const override { return r1_ - std::abs(r2_); }
   double r_max() const override { return r1_ + std::abs(r2_); }
@@ -386,6 +499,13 @@ public:
 private:
   std::string spec_;
   double r1_, r2_, p_;
+
+  Radius radius_unwrapped(double t) const {
+    double u = p_ * t * t * t;
+    double du = 3 * p_ * t * t, ddu = 6 * p_ * t;
+    return {r1_ + r2_ * std::cos(u), -r2_ * std::sin(u) * du,
+            -r2_ * (std::cos(u) * du * du + std::sin(u) * ddu)};
+  }
 };
 
 // Ball and ellipse: parametric ground truth, exact polynomial membership.
@@ -407,6 +527,13 @@ public:
     return std::atan2(y / b_, x / a_);
   }
   double min_speed() const override { return std::min(a_, b_); }
+  // The reach of an ellipse is its minimal radius of curvature b^2/a (b <= a), at the
+  // ends of the major axis: the medial axis of the inside is the segment between the two
+  // centres of curvature (+-(a - b^2/a), 0), at distance >= b^2/a from the boundary; the
+  // outside, convex complement, has none. Ball: R.
+  std::optional<double> reach_lower_bound() const override {
+    return std::min(a_, b_) * std::min(a_, b_) / std::max(a_, b_);
+  }
   bool contains(P2 p) const override {
     double x = c_ * p.x + s_ * p.y, y = -s_ * p.x + c_ * p.y;
     return (x / a_) * (x / a_) + (y / b_) * (y / b_) <= 1.0;
@@ -481,6 +608,8 @@ public:
     }
     return best;
   }
+  // Corners: the medial axis of the inside reaches the vertices.
+  std::optional<double> reach_lower_bound() const override { return 0.0; }
   std::optional<double> area() const override { return moments()->at(0); }
   std::optional<double> perimeter() const override {
     double s = 0;

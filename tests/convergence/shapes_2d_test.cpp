@@ -6,7 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <numbers>
+#include <optional>
+#include <vector>
 
 namespace {
 
@@ -128,6 +132,218 @@ TEST(Shapes2d, StarSectorFilterAgreesWithThePolarTest) {
     }
     EXPECT_EQ(disagreements, 0) << spec;
   }
+}
+
+// The linel midpoints and pointels of the outer contour of G_h(X + t), back in the frame
+// of X, in contour order (what the estimators project).
+std::vector<Point2<double>> contour_chain(const Shape2& s, double h, Point2<double> t) {
+  auto bb = *s.bounding_box();
+  auto n = static_cast<std::int64_t>(std::ceil((bb[0].second + 2 * h) / h));
+  auto set = s.digitize(h, t, zdg::Box2{{-n, -n}, {n, n}});
+  auto contour = zdg::digital_contours(*set, {0}, {}).at(0);
+  zdg::ContourEmbedding e{h};
+  std::vector<Point2<double>> pts;
+  zdg::Pixel p = contour.start;
+  for (auto c : contour.codes) {
+    auto m = e.linel_midpoint(p, c), q = e.pointel(p);
+    pts.push_back({q.x - t.x, q.y - t.y});
+    pts.push_back({m.x - t.x, m.y - t.y});
+    auto d = zdg::freeman_step(c);
+    p = {p.x + d.x, p.y + d.y};
+  }
+  return pts;
+}
+
+// n points walking along the boundary from near `from` by steps of h along the tangent,
+// each pushed off the boundary by up to h along the normal (deterministic jitter).
+std::vector<Point2<double>> walk_chain(const Shape2& s, Point2<double> from, double h, int n) {
+  std::vector<Point2<double>> pts;
+  auto q = s.project(from);
+  for (int i = 0; i < n; ++i) {
+    double off = h * std::sin(1.7 * i + 0.3);
+    pts.push_back({q.point.x - off * q.tangent.y, q.point.y + off * q.tangent.x});
+    q = s.project({q.point.x + h * q.tangent.x, q.point.y + h * q.tangent.y});
+  }
+  return pts;
+}
+
+// project_chain answers as project, point by point: position to 1e-12, curvature to 1e-9
+// (relative to max(1, |kappa|)). Returns how many points were compared.
+std::size_t expect_chain_matches_project(const Shape2& s, const std::vector<Point2<double>>& pts,
+                                         const std::string& what) {
+  auto chain = s.project_chain(pts);
+  EXPECT_EQ(chain.size(), pts.size()) << what;
+  int failures = 0;
+  for (std::size_t i = 0; i < pts.size() && i < chain.size() && failures < 5; ++i) {
+    auto q = s.project(pts[i]);
+    const auto& c = chain[i];
+    double dp = std::hypot(q.point.x - c.point.x, q.point.y - c.point.y);
+    double dk = std::abs(q.curvature - c.curvature) / std::max(1.0, std::abs(q.curvature));
+    double dt = std::hypot(q.tangent.x - c.tangent.x, q.tangent.y - c.tangent.y);
+    if (dp > 1e-12 || dk > 1e-9 || dt > 1e-10) {
+      ++failures;
+      ADD_FAILURE() << what << " point " << i << " (" << pts[i].x << ", " << pts[i].y
+                    << "): position differs by " << dp << ", curvature by " << dk << ", tangent by "
+                    << dt << " resid project "
+                    << ((pts[i].x - q.point.x) * q.tangent.x + (pts[i].y - q.point.y) * q.tangent.y)
+                    << " chain "
+                    << ((pts[i].x - c.point.x) * c.tangent.x + (pts[i].y - c.point.y) * c.tangent.y)
+                    << " d " << std::hypot(pts[i].x - q.point.x, pts[i].y - q.point.y) << " "
+                    << std::hypot(pts[i].x - c.point.x, pts[i].y - c.point.y);
+    }
+  }
+  return pts.size();
+}
+
+const char* const kParametric[] = {"ball:5/2",
+                                   "ellipse:20,7",
+                                   "ellipse:20,7,1/3",
+                                   "ellipse:3,8,2",
+                                   "flower:20,7,6",
+                                   "flower:5,2,3,1/2",
+                                   "accflower:20,5,1.0132118364233778",
+                                   "accflower:20,5,5"};
+
+TEST(Shapes2d, ProjectChainAgreesWithProjectOnDigitalContours) {
+  // Coarse h puts contour points beyond reach/2 (the robust fallback), fine h certifies.
+  for (const char* spec : kParametric) {
+    auto s = shape2(spec);
+    for (double h : {1.0, 0.37, 0.1, 0.047}) {
+      expect_chain_matches_project(*s, contour_chain(*s, h, {0.17 * h, -0.29 * h}),
+                                   std::string(spec) + " h=" + std::to_string(h));
+    }
+  }
+}
+
+TEST(Shapes2d, ProjectChainAgreesWithProjectOnFineChains) {
+  // Fine steps, including across the seam t = +-pi of the parametrization.
+  for (const char* spec : kParametric) {
+    auto s = shape2(spec);
+    for (double h : {1e-2, 1.7e-4}) {
+      expect_chain_matches_project(*s, walk_chain(*s, {-30, 0.5}, h, 1500),
+                                   std::string(spec) + " h=" + std::to_string(h));
+    }
+  }
+}
+
+TEST(Shapes2d, ProjectChainFallsBackFarFromTheBoundary) {
+  // Points deep inside (distance > reach/2) and jumps between them go through project.
+  for (const char* spec : {"flower:20,7,6", "ellipse:20,7", "ball:5/2"}) {
+    auto s = shape2(spec);
+    std::vector<Point2<double>> pts;
+    for (int i = 0; i < 200; ++i) {
+      double a = 0.05 * i, r = 1 + 0.5 * std::sin(0.3 * i);
+      pts.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    pts.push_back({0, 0.5});
+    pts.push_back({40, -3});
+    pts.push_back({40, -3});
+    expect_chain_matches_project(*s, pts, spec);
+  }
+  // Default implementation (no warm start) for shapes with corners or no parametrization.
+  for (const char* spec : {"polygon:0,0,4,0,4,2,0,2", "poly:x^4 + y^4 - 16"}) {
+    auto s = shape2(spec);
+    std::vector<Point2<double>> pts;
+    for (int i = 0; i < 50; ++i)
+      pts.push_back({2.5 * std::cos(0.13 * i), 2.5 * std::sin(0.13 * i)});
+    expect_chain_matches_project(*s, pts, spec);
+  }
+  EXPECT_TRUE(shape2("flower:20,7,6")->project_chain({}).empty());
+}
+
+// Radius of curvature of the star r(t) (cos t, sin t):
+// kappa = (r^2 + 2 r'^2 - r r'') / (r^2 + r'^2)^{3/2}; minimum of 1/|kappa| over n samples.
+double min_star_curvature_radius(const std::function<std::array<double, 3>(double)>& radius,
+                                 int n) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    double t = -std::numbers::pi + 2 * std::numbers::pi * (i + 0.5) / n;
+    auto [r, d1, d2] = radius(t);
+    double k = (r * r + 2 * d1 * d1 - r * d2) / std::pow(r * r + d1 * d1, 1.5);
+    best = std::min(best, 1 / std::abs(k));
+  }
+  return best;
+}
+
+// Federer's function |y - x|^2 / (2 |(y - x).n_x|) on pairs of n boundary points obtained by
+// projecting points of a circle of radius rho (an independent sampling): every value is
+// >= the reach, hence >= any lower bound of it.
+double federer_sampled(const Shape2& s, double rho, int n) {
+  std::vector<zdg::BoundaryPoint2> b;
+  for (int i = 0; i < n; ++i) {
+    double a = 2 * std::numbers::pi * (i + 0.25) / n;
+    b.push_back(s.project({rho * std::cos(a), rho * std::sin(a)}));
+  }
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& x : b) {
+    for (const auto& y : b) {
+      double dx = y.point.x - x.point.x, dy = y.point.y - x.point.y;
+      double dn = std::abs(-dx * x.tangent.y + dy * x.tangent.x);
+      if (dn > 0) best = std::min(best, (dx * dx + dy * dy) / (2 * dn));
+    }
+  }
+  return best;
+}
+
+TEST(Shapes2d, ReachOfBallAndEllipseClosedForms) {
+  EXPECT_DOUBLE_EQ(*shape2("ball:3")->reach_lower_bound(), 3);
+  // Minimal radius of curvature b^2/a at the vertices (a, 0): 49/20.
+  EXPECT_DOUBLE_EQ(*shape2("ellipse:20,7")->reach_lower_bound(), 2.45);
+  EXPECT_DOUBLE_EQ(*shape2("ellipse:7,20,1/3")->reach_lower_bound(), 2.45);
+  auto e = shape2("ellipse:20,7");
+  EXPECT_NEAR(1 / e->project({25, 0}).curvature, 2.45, 1e-12);
+  EXPECT_LE(2.45, federer_sampled(*e, 15, 600));
+  EXPECT_DOUBLE_EQ(*shape2("polygon:0,0,4,0,4,2,0,2")->reach_lower_bound(), 0);
+  EXPECT_FALSE(shape2("poly:x^2 + y^2 - 4")->reach_lower_bound().has_value());
+}
+
+TEST(Shapes2d, ReachOfFlowersIsBelowTheirMinimalRadiusOfCurvature) {
+  // flower:20,7,6: r = 20 + 7 cos 6t.
+  auto f = shape2("flower:20,7,6");
+  double rc = min_star_curvature_radius(
+      [](double t) {
+        return std::array<double, 3>{20 + 7 * std::cos(6 * t), -42 * std::sin(6 * t),
+                                     -252 * std::cos(6 * t)};
+      },
+      1 << 20);
+  double bound = *f->reach_lower_bound();
+  EXPECT_LE(bound, rc);
+  EXPECT_GE(bound, rc / 2.5);
+  EXPECT_LE(bound, federer_sampled(*f, 20, 700));
+  // flower:10,3,2: the narrowest bottleneck (the waist, half-width 7) and the tips compete.
+  auto g = shape2("flower:10,3,2");
+  EXPECT_LE(*g->reach_lower_bound(), 7.0);
+  EXPECT_LE(*g->reach_lower_bound(), federer_sampled(*g, 10, 700));
+  EXPECT_GT(*g->reach_lower_bound(), 0.0);
+  // DGtal's AccFlower2D(20, 5, 5 petals): P = 10/pi^2, C^2 at t = +-pi. Radius of
+  // curvature at the tip t = +-pi (r = 25, r' = 0, r'' = -5 (3 P pi^2)^2 = -4500):
+  // r^3 / (r^2 - r r'') = 0.138; the sharpest points are the concave valleys next to it
+  // (r = 15, r'' ~ 5 * 29^2), about 0.0578.
+  const double p = 1.0132118364233778;
+  auto a = shape2("accflower:20,5,1.0132118364233778");
+  double rca = min_star_curvature_radius(
+      [p](double t) {
+        double u = p * t * t * t, du = 3 * p * t * t, ddu = 6 * p * t;
+        return std::array<double, 3>{20 + 5 * std::cos(u), -5 * std::sin(u) * du,
+                                     -5 * (std::cos(u) * du * du + std::sin(u) * ddu)};
+      },
+      1 << 21);
+  EXPECT_NEAR(rca, 0.0578, 0.0005);
+  EXPECT_NEAR(1 / a->project({-26, 0}).curvature, 15625.0 / 113125, 1e-6);
+  double ba = *a->reach_lower_bound();
+  EXPECT_GT(ba, 0.0);
+  EXPECT_LE(ba, rca);
+  EXPECT_GE(ba, rca / 2.5);
+  // P = 5: r' jumps at t = +-pi, a corner: reach 0.
+  EXPECT_EQ(*shape2("accflower:20,5,5")->reach_lower_bound(), 0.0);
+  EXPECT_EQ(*shape2("accflower:20,5,1.0132")->reach_lower_bound(), 0.0);
+  EXPECT_EQ(*shape2("accflower:20,5,1.0132118374")->reach_lower_bound(), 0.0);
+  // P = 2K/pi^2 for other K, and odd m / pi^2: smooth, positive.
+  EXPECT_GT(*shape2("accflower:20,5,0.20264236728467555")->reach_lower_bound(), 0.0);
+  EXPECT_GT(*shape2("accflower:20,5,0.5066059182116889")->reach_lower_bound(), 0.0);
+  std::printf("reach lower bounds: flower:20,7,6 %.6g (min radius of curvature %.6g), "
+              "accflower:20,5,10/pi^2 %.6g (%.6g)\n",
+              bound, rc, ba, rca);
 }
 
 TEST(Shapes2d, ParseErrorsNameTheProblem) {
