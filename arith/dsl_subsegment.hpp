@@ -36,13 +36,15 @@
 // shrinks). With s and the tight remainder of the prefix, the first point of the line that
 // leaves the s-line is weakly exterior (Debled-Rennesson and Reveilles), above it when s < a/b
 // and below when s > a/b; relative to the prefix's first upper (resp. lower) leaning point it
-// lies in one residue class mod q(s) past one threshold: one ceiling division. The update
-// (the new slope is the vector from that leaning point to the exit; it stays the first
-// leaning point) turns in the tree, except along a run where it adds the parent each time:
-// whether the next exit is exactly one parent further is a linear inequality in the run
-// index, so a whole run is crossed in one division. O(number of partial quotients) = O(log b)
-// iterations of O(1) divisions, whatever x1 - x0 (the paper's version walks the pattern
-// repetitions one by one: O(sum of partial quotients)).
+// lies in one residue class mod q(s) past one threshold: one ceiling division. The update:
+// the new slope is the vector from that leaning point to the exit (which stays the first
+// leaning point). Along a run of the path, each update adds the same parent: whether the next
+// exit is exactly one parent further is a linear inequality in the run index, so a whole run
+// is crossed in one division. Every other update turns in the tree:
+// iterations <= 1 + the number of partial quotients of the answer's slope (its denominator is
+// <= x1 - x0 + 1), each of O(1) divisions: O(log min(x1 - x0, b)), never more than O(log b)
+// whatever the window (the paper's version walks the pattern repetitions one by one: the sum
+// of the partial quotients).
 //
 // Two independent searches, kept as cross-check oracles (tests, benchmarks):
 // - subsegment_top_down_search: descends from the root (0/1, then 1/1, then the runs of the
@@ -58,13 +60,15 @@
 // answers).
 //
 // Width: both climbs handle numbers of about 4 b and products of about 2 b^2 (the mu of the
-// answer; SmartDSS's thresholds q R and b q are below b^2); the searches' floor sums reach about
-// b^3. The _exact front-end escalates Int64 -> Int128 -> BigInt on overflow. Sources: Said and
-// Lachaud, Computing the characteristics of a subsegment of a digital straight line in logarithmic
-// time, DGCI 2011, LNCS 6607 (ReversedSmartDSS); Said, Lachaud, Feschet, Multiscale discrete
-// geometry, DGCI 2009 (SmartDSS); Lachaud and Said, Two efficient algorithms for computing the
-// characteristics of a subsegment of a digital straight line, Discrete Applied Mathematics 161
-// (2013); Debled-Rennesson and Reveilles 1995 (minimality; the update of SmartDSS).
+// answer; SmartDSS's thresholds q R and b q stay below b^2); the searches' floor sums reach
+// about b^3. The _exact front-end escalates Int64 -> Int128 -> BigInt on overflow.
+//
+// Sources: Said and Lachaud, Computing the characteristics of a subsegment of a digital
+// straight line in logarithmic time, DGCI 2011, LNCS 6607 (ReversedSmartDSS); Said, Lachaud,
+// Feschet, Multiscale discrete geometry, DGCI 2009 (SmartDSS); Lachaud and Said, Two efficient
+// algorithms for computing the characteristics of a subsegment of a digital straight line,
+// Discrete Applied Mathematics 161 (2013); Debled-Rennesson and Reveilles 1995 (minimality;
+// the update of SmartDSS).
 #pragma once
 
 #include "arith/escalate.hpp"

@@ -133,7 +133,7 @@ BENCHMARK(BM_SubsegmentInt128OracleTopDown)
     ->Unit(benchmark::kMicrosecond);
 
 // SmartDSS (top-down) against the reversed climb on Int128, windows of W points (W = 10 ..
-// 10^12) on 64 lines with b near 2^62, random a, mu and x0 near +-2^62, half of the slopes
+// 2^61) on 64 lines with b near 2^62, random a, mu and x0 near +-2^62, half of the slopes
 // close to a simple fraction (long Stern-Brocot runs); the same queries for both.
 struct SubsegmentQuery {
   Int128 a, b, mu, x0, x1;
@@ -168,8 +168,9 @@ void BM_SubsegmentWidthInt128Reversed(benchmark::State& state) {
   subsegment_width(state, [](const auto&... v) { return subsegment_reversed_smart_dss(v...); });
 }
 void subsegment_widths(benchmark::internal::Benchmark* b) {
-  for (std::int64_t w : {std::int64_t{10}, std::int64_t{1000}, std::int64_t{1000000},
-                         std::int64_t{1000000000}, std::int64_t{1000000000000}}) {
+  for (std::int64_t w :
+       {std::int64_t{10}, std::int64_t{1000}, std::int64_t{1000000}, std::int64_t{1000000000},
+        std::int64_t{1000000000000}, std::int64_t{1000000000000000}, std::int64_t{1} << 61}) {
     b->Arg(w);
   }
   b->Unit(benchmark::kMicrosecond);
