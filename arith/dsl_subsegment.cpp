@@ -190,8 +190,8 @@ DslSubsegment<I> first_fitting_node(const Local& L, const PathRun<I>& run, I lo,
 } // namespace
 
 template <TowerInt I>
-DslSubsegment<I> subsegment_top_down(const I& a, const I& b, const I& mu, const I& x0,
-                                     const I& x1) {
+DslSubsegment<I> subsegment_top_down_search(const I& a, const I& b, const I& mu, const I& x0,
+                                            const I& x1) {
   auto pr = prepare(a, b, mu, x0, x1);
   if (pr.done) return *pr.done;
   const auto& L = pr.loc;
@@ -343,23 +343,104 @@ DslSubsegment<I> subsegment_reversed_smart_dss(const I& a, const I& b, const I& 
   }
 }
 
+// SmartDSS: the minimal characteristics of the prefixes [0, X] of the window, read from its
+// first point (Debled-Rennesson and Reveilles' update), jumping from one exit of the current
+// line to the next (O(1) divisions) and over a run of Stern-Brocot steps in one division.
+// State: slope s = p/q with parents lp < s < rp (q rp.p - p rp.q = 1, so p^-1 = -rp.q mod q),
+// the prefix [0, X] fits mu_s <= p x - q y < mu_s + q tightly (m = mu_s, local). The first
+// point of the t-line (t = a/b) after X off this s-line is, by DR's theorem, weakly exterior,
+// and above the s-line when s < t (else s would still fit the longer prefix), below when
+// s > t. Above: relative to the first upper leaning point U (t-remainder R) of the prefix,
+// x = U + k is above iff p k = -1 (mod q) and k (q a - p b) >= b - q R; below: relative to the
+// first lower leaning point L, p k = 1 (mod q) and k (q a - p b) < b (q - 1) - q R. DR's
+// update: the new slope is (k, y(U + k) - y(U)) (resp. from L): a Stern-Brocot descendant of s
+// with parents s and the new slope minus s; U (resp. L) stays the first leaning point. Run
+// jump: from such a state (X = U + q) the next update gives s + rp again iff the point at
+// U + q + q_rp is above, i.e. R + delta(s + rp) >= 0 with delta(f) = f.q a - f.p b, linear
+// along s + i rp: the number of consecutive such steps (while s < t and the window lasts) is
+// one division (mirrored below with lp, L and b - 1 - R). Every other update turns in the
+// Stern-Brocot tree, so there are O(number of partial quotients of a/b) iterations.
+template <TowerInt I>
+DslSubsegment<I> subsegment_smart_dss(const I& a, const I& b, const I& mu, const I& x0,
+                                      const I& x1) {
+  auto pr = prepare(a, b, mu, x0, x1);
+  if (pr.done) return *pr.done;
+  const auto& L = pr.loc;
+  const I last = L.n - 1; // the window is X in [0, last]
+  auto y = [&](const I& x) { return floor_div(I(L.a * x + L.c), L.b); };
+  auto delta = [&](const Fraction<I>& f) { return I(f.q * L.a - f.p * L.b); }; // sign of t - f
+  Fraction<I> s{0, 1}, lp{-1, 1}, rp{1, 0}; // the prefix [0, 0]: one point, slope 0/1
+  I m = 0, X = 0;
+  while (true) {
+    const I d = delta(s);
+    if (d == 0) break; // s = t: no point of the window leaves the line
+    const bool above = d > 0;
+    const I pinv = mod(I(-rp.q), s.q);
+    // The first upper (above) or lower leaning point x >= 0 of the prefix: p x = m (resp.
+    // m - 1) mod q; its t-remainder R.
+    const I anchor = mod(I(mod(above ? m : I(m - 1), s.q) * pinv), s.q);
+    const I r = mod(I(L.a * anchor + L.c), L.b);
+    I k;
+    if (above) {
+      I kmin = std::max(I(X - anchor + 1), ceil_div(I(L.b - s.q * r), d));
+      k = kmin + mod(I(-pinv - kmin), s.q);
+    } else {
+      I kmin = std::max(I(X - anchor + 1), I(floor_div(I(s.q * r - L.b * (s.q - 1)), I(-d)) + 1));
+      k = kmin + mod(I(pinv - kmin), s.q);
+    }
+    if (anchor + k > last) break; // the whole window fits the s-line
+    const Fraction<I> next{I(y(anchor + k) - y(anchor)), k};
+    const Fraction<I> diff{next.p - s.p, next.q - s.q};
+    if (above) {
+      lp = s;
+      rp = diff;
+    } else {
+      rp = s;
+      lp = diff;
+    }
+    s = next;
+    // Run jump: n further steps s -> s + beta (beta = rp above, lp below).
+    const Fraction<I>& beta = above ? rp : lp;
+    const I ds = delta(s), db = delta(beta);
+    if ((above ? ds > 0 : ds < 0) && beta.q > 0) {
+      I n = above ? std::min(ceil_div(ds, I(-db)), floor_div(I(r + ds), I(-db)))
+                  : std::min(ceil_div(I(-ds), db), floor_div(I(L.b - 1 - r - ds), db));
+      n = std::min(n, floor_div(I(last - anchor - s.q), beta.q));
+      if (n > 0) {
+        Fraction<I> before{s.p + (n - 1) * beta.p, s.q + (n - 1) * beta.q};
+        s = {s.p + n * beta.p, s.q + n * beta.q};
+        (above ? lp : rp) = before;
+      }
+    }
+    // Tight remainder: the anchor is an upper (resp. lower) leaning point of the new line.
+    m = s.p * anchor - s.q * y(anchor);
+    if (!above) m = m - s.q + 1;
+    X = anchor + s.q;
+  }
+  return L.answer(s.p, s.q, m);
+}
+
 Escalated<DslSubsegment<BigInt>> dsl_subsegment_exact(const BigInt& a, const BigInt& b,
                                                       const BigInt& mu, const BigInt& x0,
-                                                      const BigInt& x1) {
+                                                      const BigInt& x1,
+                                                      DslSubsegmentAlgorithm algorithm) {
   return escalate([&]<class I>(std::type_identity<I>) {
-    auto r = subsegment_reversed_smart_dss(int_cast<I>(a), int_cast<I>(b), int_cast<I>(mu),
-                                           int_cast<I>(x0), int_cast<I>(x1));
+    auto run = algorithm == DslSubsegmentAlgorithm::smart_dss ? &subsegment_smart_dss<I>
+                                                              : &subsegment_reversed_smart_dss<I>;
+    auto r = run(int_cast<I>(a), int_cast<I>(b), int_cast<I>(mu), int_cast<I>(x0), int_cast<I>(x1));
     return DslSubsegment<BigInt>{to_bigint(r.a), to_bigint(r.b), to_bigint(r.mu)};
   });
 }
 
 #define ZDG_INSTANTIATE(I)                                                                         \
-  template DslSubsegment<I> subsegment_top_down<I>(const I&, const I&, const I&, const I&,         \
-                                                   const I&);                                      \
+  template DslSubsegment<I> subsegment_top_down_search<I>(const I&, const I&, const I&, const I&,  \
+                                                          const I&);                               \
   template DslSubsegment<I> subsegment_bottom_up<I>(const I&, const I&, const I&, const I&,        \
                                                     const I&);                                     \
   template DslSubsegment<I> subsegment_reversed_smart_dss<I>(const I&, const I&, const I&,         \
-                                                             const I&, const I&);
+                                                             const I&, const I&);                  \
+  template DslSubsegment<I> subsegment_smart_dss<I>(const I&, const I&, const I&, const I&,        \
+                                                    const I&);
 ZDG_INSTANTIATE(Int64)
 ZDG_INSTANTIATE(Int128)
 ZDG_INSTANTIATE(BigInt)

@@ -30,8 +30,24 @@
 // run is found by one division. t is the answer iff neither parent fits. Each step leaves a
 // run: O(log b) steps of O(1) operations, whatever x1 - x0.
 //
+// subsegment_smart_dss: the top-down SmartDSS of Said, Lachaud and Feschet, which reads the
+// window from its first point and descends the Stern-Brocot path of a/b: the minimal slopes s
+// of the prefixes [x0, x] are ancestors of a/b, deeper as x grows (the feasible interval
+// shrinks). With s and the tight remainder of the prefix, the first point of the line that
+// leaves the s-line is weakly exterior (Debled-Rennesson and Reveilles), above it when s < a/b
+// and below when s > a/b; relative to the prefix's first upper (resp. lower) leaning point it
+// lies in one residue class mod q(s) past one threshold: one ceiling division. The update:
+// the new slope is the vector from that leaning point to the exit (which stays the first
+// leaning point). Along a run of the path, each update adds the same parent: whether the next
+// exit is exactly one parent further is a linear inequality in the run index, so a whole run
+// is crossed in one division. Every other update turns in the tree:
+// iterations <= 1 + the number of partial quotients of the answer's slope (its denominator is
+// <= x1 - x0 + 1), each of O(1) divisions: O(log min(x1 - x0, b)), never more than O(log b)
+// whatever the window (the paper's version walks the pattern repetitions one by one: the sum
+// of the partial quotients).
+//
 // Two independent searches, kept as cross-check oracles (tests, benchmarks):
-// - subsegment_top_down: descends from the root (0/1, then 1/1, then the runs of the
+// - subsegment_top_down_search: descends from the root (0/1, then 1/1, then the runs of the
 //   continued fraction of a/b), binary search inside each run for the first feasible node
 //   (the search order of Said, Lachaud and Feschet's SmartDSS);
 // - subsegment_bottom_up: climbs from a/b, jumping to the other parent of a run when it is
@@ -43,14 +59,16 @@
 // polylogarithmic, O(log^3 b) floor sums in the worst case, and slower on long windows (deeper
 // answers).
 //
-// Width: the reversed climb handles numbers of about 4 b and products of about 2 b^2 (the
-// mu of the answer); the searches' floor sums reach about b^3. The _exact front-end
-// escalates Int64 -> Int128 -> BigInt on overflow.
+// Width: both climbs handle numbers of about 4 b and products of about 2 b^2 (the mu of the
+// answer; SmartDSS's thresholds q R and b q stay below b^2); the searches' floor sums reach
+// about b^3. The _exact front-end escalates Int64 -> Int128 -> BigInt on overflow.
+//
 // Sources: Said and Lachaud, Computing the characteristics of a subsegment of a digital
 // straight line in logarithmic time, DGCI 2011, LNCS 6607 (ReversedSmartDSS); Said, Lachaud,
 // Feschet, Multiscale discrete geometry, DGCI 2009 (SmartDSS); Lachaud and Said, Two efficient
 // algorithms for computing the characteristics of a subsegment of a digital straight line,
-// Discrete Applied Mathematics 161 (2013); Debled-Rennesson and Reveilles 1995 (minimality).
+// Discrete Applied Mathematics 161 (2013); Debled-Rennesson and Reveilles 1995 (minimality;
+// the update of SmartDSS).
 #pragma once
 
 #include "arith/escalate.hpp"
@@ -64,23 +82,33 @@ struct DslSubsegment {
   friend bool operator==(const DslSubsegment&, const DslSubsegment&) = default;
 };
 
-/// All three require b > 0, 0 <= a < b and x0 <= x1 (InvalidArgument otherwise).
+/// All require b > 0, 0 <= a < b and x0 <= x1 (InvalidArgument otherwise).
 template <TowerInt I>
 DslSubsegment<I> subsegment_reversed_smart_dss(const I& a, const I& b, const I& mu, const I& x0,
                                                const I& x1);
 
-/// Oracle: top-down search with floor-sum feasibility tests.
+/// SmartDSS with run jumps (top-down): same answer as the reversed climb.
 template <TowerInt I>
-DslSubsegment<I> subsegment_top_down(const I& a, const I& b, const I& mu, const I& x0, const I& x1);
+DslSubsegment<I> subsegment_smart_dss(const I& a, const I& b, const I& mu, const I& x0,
+                                      const I& x1);
+
+/// Oracle: top-down search with floor-sum feasibility tests (polylog, grows with x1 - x0).
+template <TowerInt I>
+DslSubsegment<I> subsegment_top_down_search(const I& a, const I& b, const I& mu, const I& x0,
+                                            const I& x1);
 
 /// Oracle: bottom-up search with floor-sum feasibility tests.
 template <TowerInt I>
 DslSubsegment<I> subsegment_bottom_up(const I& a, const I& b, const I& mu, const I& x0,
                                       const I& x1);
 
-/// The reversed climb on arbitrary-size values, on the narrowest tower type that serves.
-Escalated<DslSubsegment<BigInt>> dsl_subsegment_exact(const BigInt& a, const BigInt& b,
-                                                      const BigInt& mu, const BigInt& x0,
-                                                      const BigInt& x1);
+enum class DslSubsegmentAlgorithm { reversed_smart_dss, smart_dss };
+
+/// The reversed climb (default) or SmartDSS on arbitrary-size values, on the narrowest tower
+/// type that serves.
+Escalated<DslSubsegment<BigInt>>
+dsl_subsegment_exact(const BigInt& a, const BigInt& b, const BigInt& mu, const BigInt& x0,
+                     const BigInt& x1,
+                     DslSubsegmentAlgorithm algorithm = DslSubsegmentAlgorithm::reversed_smart_dss);
 
 } // namespace zdg

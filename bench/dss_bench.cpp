@@ -1,6 +1,6 @@
 // Benchmarks of the DSS kernel: recognition of a 10^7-point DSS point by point (target
 // <= 0.08 s on one core), the tangential cover of the contour of a digitized disc of radius
-// 10^5, and DSL subsegment queries with values near 2^62.
+// 10^5, and DSL subsegment queries with values near 2^62 (SmartDSS and ReversedSmartDSS).
 //
 //   build/bin/dss_bench --benchmark_filter=. --benchmark_min_time=1s
 #include "arith/dsl_subsegment.hpp"
@@ -10,6 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -112,7 +113,7 @@ void BM_SubsegmentInt128OracleBottomUp(benchmark::State& state) {
   subsegment_int128(state, [](const auto&... v) { return subsegment_bottom_up(v...); });
 }
 void BM_SubsegmentInt128OracleTopDown(benchmark::State& state) {
-  subsegment_int128(state, [](const auto&... v) { return subsegment_top_down(v...); });
+  subsegment_int128(state, [](const auto&... v) { return subsegment_top_down_search(v...); });
 }
 BENCHMARK(BM_SubsegmentInt128Reversed)
     ->DenseRange(4, 60, 8)
@@ -130,6 +131,68 @@ BENCHMARK(BM_SubsegmentInt128OracleTopDown)
     ->Arg(40)
     ->Arg(61)
     ->Unit(benchmark::kMicrosecond);
+
+// SmartDSS (top-down) against the reversed climb on Int128, windows of W points (W = 10 ..
+// 2^61) on 64 lines with b near 2^62, random a, mu and x0 near +-2^62, half of the slopes
+// close to a simple fraction (long Stern-Brocot runs); the same queries for both.
+struct SubsegmentQuery {
+  Int128 a, b, mu, x0, x1;
+};
+std::vector<SubsegmentQuery> subsegment_queries(std::int64_t width) {
+  std::mt19937_64 rng(7);
+  std::vector<SubsegmentQuery> out;
+  for (int i = 0; i < 64; ++i) {
+    const std::int64_t b = (std::int64_t{1} << 62) - static_cast<std::int64_t>(rng() >> 40);
+    std::int64_t a = static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(b));
+    if (i % 2 == 1) a = b / (2 + i % 5) + static_cast<std::int64_t>(rng() % 7); // long runs
+    const auto x0 = static_cast<std::int64_t>(rng() >> 1) - (std::int64_t{1} << 62);
+    const auto mu = static_cast<std::int64_t>(rng() >> 1) - (std::int64_t{1} << 62);
+    out.push_back({Int128(a), Int128(b), Int128(mu), Int128(x0), Int128(x0) + Int128(width)});
+  }
+  return out;
+}
+template <class F>
+void subsegment_width(benchmark::State& state, F&& algo) {
+  const auto queries = subsegment_queries(state.range(0));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& q = queries[i++ % queries.size()];
+    auto r = algo(q.a, q.b, q.mu, q.x0, q.x1);
+    benchmark::DoNotOptimize(r);
+  }
+}
+void BM_SubsegmentWidthInt128Smart(benchmark::State& state) {
+  subsegment_width(state, [](const auto&... v) { return subsegment_smart_dss(v...); });
+}
+void BM_SubsegmentWidthInt128Reversed(benchmark::State& state) {
+  subsegment_width(state, [](const auto&... v) { return subsegment_reversed_smart_dss(v...); });
+}
+void subsegment_widths(benchmark::internal::Benchmark* b) {
+  for (std::int64_t w :
+       {std::int64_t{10}, std::int64_t{1000}, std::int64_t{1000000}, std::int64_t{1000000000},
+        std::int64_t{1000000000000}, std::int64_t{1000000000000000}, std::int64_t{1} << 61}) {
+    b->Arg(w);
+  }
+  b->Unit(benchmark::kMicrosecond);
+}
+BENCHMARK(BM_SubsegmentWidthInt128Smart)->Apply(subsegment_widths);
+BENCHMARK(BM_SubsegmentWidthInt128Reversed)->Apply(subsegment_widths);
+
+// The same queries through the escalating front-end (BigInt arguments), SmartDSS.
+void BM_SubsegmentWidthExactSmart(benchmark::State& state) {
+  std::vector<std::array<BigInt, 5>> queries;
+  for (const auto& q : subsegment_queries(state.range(0))) {
+    queries.push_back(
+        {to_bigint(q.a), to_bigint(q.b), to_bigint(q.mu), to_bigint(q.x0), to_bigint(q.x1)});
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& q = queries[i++ % queries.size()];
+    auto r = dsl_subsegment_exact(q[0], q[1], q[2], q[3], q[4], DslSubsegmentAlgorithm::smart_dss);
+    benchmark::DoNotOptimize(r);
+  }
+}
+BENCHMARK(BM_SubsegmentWidthExactSmart)->Apply(subsegment_widths);
 
 } // namespace
 

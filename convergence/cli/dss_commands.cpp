@@ -186,7 +186,7 @@ BigInt parse_arg(const std::string& text, const std::string& what) {
   }
 }
 
-void run_subsegment(const std::vector<std::string>& args, bool json) {
+void run_subsegment(const std::vector<std::string>& args, const std::string& algorithm, bool json) {
   BigInt a = parse_arg(args[0], "A"), b = parse_arg(args[1], "B"), mu = parse_arg(args[2], "MU"),
          x0 = parse_arg(args[3], "X0"), x1 = parse_arg(args[4], "X1");
   if (b <= 0) throw InvalidArgument("dss subsegment: B = " + b.str() + " must be > 0");
@@ -197,7 +197,9 @@ void run_subsegment(const std::vector<std::string>& args, bool json) {
   if (x1 < x0) {
     throw InvalidArgument("dss subsegment: X1 = " + x1.str() + " is smaller than X0 = " + x0.str());
   }
-  auto r = dsl_subsegment_exact(a, b, mu, x0, x1);
+  auto r = dsl_subsegment_exact(a, b, mu, x0, x1,
+                                algorithm == "smart" ? DslSubsegmentAlgorithm::smart_dss
+                                                     : DslSubsegmentAlgorithm::reversed_smart_dss);
   if (json) {
     print_json({{"a", r.value.a.str()}, {"b", r.value.b.str()}, {"mu", r.value.mu.str()}});
     return;
@@ -247,15 +249,20 @@ void add_dss_commands(CLI::App& app, Context& /*ctx*/) {
   {
     auto* cmd = dss->add_subcommand(
         "subsegment", "Minimal characteristics of the naive DSL 0 <= A x - B y - MU < B restricted "
-                      "to X0 <= x <= X1 (Stern-Brocot search, polylogarithmic time)");
+                      "to X0 <= x <= X1 (ReversedSmartDSS or SmartDSS, O(log B) time)");
     auto args = std::make_shared<std::vector<std::string>>();
+    auto algorithm = std::make_shared<std::string>("reversed");
     auto json = std::make_shared<bool>(false);
     cmd->add_option("A B MU X0 X1", *args, "0 <= A < B, any MU, X0 <= X1 (any size)")
         ->required()
         ->expected(5)
         ->allow_extra_args(false);
+    cmd->add_option("--algorithm", *algorithm,
+                    "reversed (bottom-up ReversedSmartDSS, default) or smart (top-down SmartDSS); "
+                    "same answer")
+        ->check(CLI::IsMember({"reversed", "smart"}));
     cmd->add_flag("--json", *json, "Machine-readable output");
-    cmd->callback([=] { run_subsegment(*args, *json); });
+    cmd->callback([=] { run_subsegment(*args, *algorithm, *json); });
   }
 }
 

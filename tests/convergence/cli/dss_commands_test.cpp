@@ -133,6 +133,18 @@ TEST(DssCli, Subsegment) {
                   .value;
   EXPECT_EQ(json::parse(r.out),
             (json{{"a", want.a.str()}, {"b", want.b.str()}, {"mu", want.mu.str()}}));
+  // SmartDSS gives the same output, JSON and text.
+  for (std::string args : {"3 7 0 0 3", "2305843009213706257 4611686018427387847 -123456789012345 "
+                                        "-4611686018427387000 -4611686018427380000"}) {
+    for (std::string fmt : {" --json", ""}) {
+      auto reversed = run_zdg("dss subsegment " + args + fmt);
+      auto smart = run_zdg("dss subsegment " + args + " --algorithm smart" + fmt);
+      ASSERT_EQ(smart.status, 0) << smart.err;
+      EXPECT_EQ(smart.out, reversed.out) << args << fmt;
+      EXPECT_EQ(run_zdg("dss subsegment " + args + " --algorithm reversed" + fmt).out,
+                reversed.out);
+    }
+  }
 }
 
 TEST(DssCli, ErrorsNameTheLineOrValueAndExitWithTwo) {
@@ -154,6 +166,7 @@ TEST(DssCli, ErrorsNameTheLineOrValueAndExitWithTwo) {
       {"dss subsegment 3 0 0 0 2", "B = 0 must be > 0"},
       {"dss subsegment 7 7 0 0 2", "0 <= A < B"},
       {"dss subsegment 1 2 z 0 2", "MU = 'z'"},
+      {"dss subsegment 1 2 0 0 2 --algorithm fast", "--algorithm"},
   };
   for (const auto& c : cases) {
     auto r = run_zdg(c.args);
