@@ -30,6 +30,24 @@ Box2 pixel_box(const std::vector<std::pair<double, double>>& box, double h) {
   return Box2{{lo(box[0].first), lo(box[1].first)}, {hi(box[0].second), hi(box[1].second)}};
 }
 
+namespace {
+
+bool certified_complete(const Digitized2& d, double h) {
+  const auto reach = d.shape->reach_lower_bound();
+  const auto bb = d.shape->bounding_box();
+  if (!reach || !(h <= *reach / 2) || !bb || bb->size() != 2) return false;
+  const double margin = 2 * h;
+  const auto& x = (*bb)[0];
+  const auto& y = (*bb)[1];
+  const bool inside = static_cast<double>(d.box.lo.x) * h < x.first + d.t.x - margin &&
+                      x.second + d.t.x + margin < static_cast<double>(d.box.hi.x) * h &&
+                      static_cast<double>(d.box.lo.y) * h < y.first + d.t.y - margin &&
+                      y.second + d.t.y + margin < static_cast<double>(d.box.hi.y) * h;
+  return inside && d.contours.size() == 1 && d.contours.front().twice_signed_area() > 0;
+}
+
+} // namespace
+
 Digitized2 digitize_2d(const RunInput& in) {
   Digitized2 d;
   d.shape = &as_2d(in.shape);
@@ -43,6 +61,7 @@ Digitized2 digitize_2d(const RunInput& in) {
     cols.push_back(d.box.lo.x + (d.box.hi.x - d.box.lo.x) * i / 10);
   }
   d.contours = digital_contours(*d.set, rows, cols);
+  d.complete = certified_complete(d, in.h);
   d.embed = ContourEmbedding{in.h};
   return d;
 }

@@ -12,7 +12,7 @@ namespace zdg {
 
 namespace {
 
-constexpr std::size_t kBlock = 32;
+constexpr std::size_t kBlock = 8;
 constexpr std::int64_t kLimit = std::int64_t{1} << 40;
 constexpr std::int64_t kEmptyLo = std::int64_t{1} << 50;
 constexpr std::int64_t kEmptyHi = -(std::int64_t{1} << 50);

@@ -18,7 +18,7 @@
 // the (b) part as a few differences of prefix sums around the boundary of D.
 // The (a) runs are found by descending a tree of bounding boxes over blocks of contour linels
 // (a box inside D is a whole run piece, a box missing D is skipped; only the blocks where the
-// contour crosses the boundary of D are scanned): O(log n + B) per run end, B = 32.
+// contour crosses the boundary of D are scanned): O(log n + B) per run end, B = 8.
 //
 // Precondition: `contours` are ALL the contours of the set met by the discs queried. A missing
 // contour of a component met by D gives a wrong count, which cannot be detected from the
