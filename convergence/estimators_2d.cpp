@@ -108,7 +108,7 @@ ErrorStats run_mlp_length(const RunInput& in) {
 template <bool Tangent>
 ErrorStats run_binomial(const RunInput& in) {
   Digitized2 d = digitize(in);
-  const long n = binomial_mask_order(in.h, in.k);
+  const long n = binomial_mask_order(in.h, in.k, in.alpha);
   ErrorAccumulator acc;
   for (const auto& c : d.contours) {
     // Contours shorter than the mask (specks) are skipped.
@@ -199,11 +199,11 @@ void register_2d_estimators(std::vector<Estimator>& out) {
                  "R = k h^alpha (defaults k = 3, alpha = 1/3)", "curvature", true, true, 3.0,
                  1.0 / 3.0, run_ii_curvature});
   out.push_back({"bc-tangent", 2, "binomial convolver tangent at every pointel",
-                 "mask order n = k h^(-4/3) (default k = 1)", "angle (rad)", true, false, 1.0, 0,
-                 run_binomial<true>});
+                 "mask order n = k h^(-alpha) (defaults k = 1, alpha = 4/3)", "angle (rad)", true,
+                 true, 1.0, 4.0 / 3.0, run_binomial<true>});
   out.push_back({"bc-curvature", 2, "binomial convolver curvature at every pointel",
-                 "mask order n = k h^(-4/3) (default k = 1)", "curvature", true, false, 1.0, 0,
-                 run_binomial<false>});
+                 "mask order n = k h^(-alpha) (defaults k = 1, alpha = 14/9)", "curvature", true,
+                 true, 1.0, 14.0 / 9.0, run_binomial<false>});
 }
 
 } // namespace detail

@@ -1,5 +1,6 @@
 #include "convergence/theory.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace zdg {
@@ -86,13 +87,22 @@ std::optional<TheoryRate> theory_rate(const std::string& estimator, const Shape&
     return TheoryRate{1.0, "O(h): at most sqrt(d) h / 2 for h < 2 rho / sqrt(d), reach > rho",
                       "Lachaud, Thibert, JMIV 2016"};
   }
-  if (estimator == "bc-tangent" && smooth) {
-    return TheoryRate{2.0 / 3.0, "O(h^{2/3}) with mask ~ h^{-4/3}, C^3 curves",
-                      "Esbelin, Malgouyres, Cartade 2011"};
+  // Binomial convolver with mask n = k h^{-alpha}: smoothing bias O(h^{2 - alpha}) against
+  // noise O(h^{alpha/2}) (tangent) or O(h^{alpha - 1}) (curvature); see
+  // estimators/binomial_convolver.hpp. alpha = 4/3 gives the tangent's 2/3, alpha = 14/9 the
+  // curvature's 4/9.
+  if (estimator == "bc-tangent" && smooth && alpha > 0 && alpha < 2) {
+    const double rate = std::min(2 - alpha, alpha / 2);
+    return TheoryRate{
+        rate, "O(h^{min(2 - a, a/2)}) with mask ~ h^{-a} (O(h^{2/3}) at a = 4/3), C^3 curves",
+        "Esbelin, Malgouyres, Cartade 2011"};
   }
-  if (estimator == "bc-curvature" && smooth) {
-    return TheoryRate{4.0 / 9.0, "O(h^{4/9}) with mask ~ h^{-4/3}, C^3 curves",
-                      "Esbelin, Malgouyres, Cartade 2011"};
+  if (estimator == "bc-curvature" && smooth && alpha > 1 && alpha < 2) {
+    const double rate = std::min(2 - alpha, alpha - 1);
+    return TheoryRate{rate,
+                      "O(h^{min(2 - a, a - 1)}) with mask ~ h^{-a} (O(h^{4/9}) at a = 14/9), C^3 "
+                      "curves",
+                      "Malgouyres, Brunet, Fourey 2008; Esbelin, Malgouyres, Cartade 2011"};
   }
   return std::nullopt;
 }

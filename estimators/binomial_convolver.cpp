@@ -7,9 +7,13 @@
 
 namespace zdg {
 
-long binomial_mask_order(double h, double k) {
+long binomial_mask_order(double h, double k, double exponent) {
   if (!(h > 0) || !(k > 0)) throw InvalidArgument("binomial convolver: h and k must be > 0");
-  double n = std::round(k * std::pow(h, -4.0 / 3.0));
+  if (!(exponent > 0) || exponent > 2) {
+    throw InvalidArgument("binomial convolver: mask exponent " + std::to_string(exponent) +
+                          " is not in (0, 2]");
+  }
+  double n = std::round(k * std::pow(h, -exponent));
   if (n > 1e9) throw InvalidArgument("binomial convolver: mask order too large");
   long m = std::max(2L, static_cast<long>(n));
   return m % 2 == 0 ? m : m + 1;

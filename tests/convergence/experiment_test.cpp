@@ -125,7 +125,12 @@ TEST(Theory, RatesOfTheRegistry) {
   auto e = zdg::parse_shape("ellipse:20,7");
   EXPECT_NEAR(zdg::theory_rate("ii-curvature", *e, 1.0 / 3)->slope, 1.0 / 3, 1e-15);
   EXPECT_FALSE(zdg::theory_rate("ii-curvature", *e, 0.5).has_value());
-  EXPECT_NEAR(zdg::theory_rate("bc-curvature", *e, 0)->slope, 4.0 / 9, 1e-15);
+  // Binomial convolver: bias h^{2-a} against noise h^{a/2} (tangent), h^{a-1} (curvature).
+  EXPECT_NEAR(zdg::theory_rate("bc-curvature", *e, 14.0 / 9)->slope, 4.0 / 9, 1e-15);
+  EXPECT_NEAR(zdg::theory_rate("bc-curvature", *e, 4.0 / 3)->slope, 1.0 / 3, 1e-15);
+  EXPECT_NEAR(zdg::theory_rate("bc-curvature", *e, 1.5)->slope, 0.5, 1e-15);
+  EXPECT_NEAR(zdg::theory_rate("bc-tangent", *e, 4.0 / 3)->slope, 2.0 / 3, 1e-15);
+  EXPECT_FALSE(zdg::theory_rate("bc-curvature", *e, 1.0).has_value());
   auto p = zdg::parse_shape("polygon:0,0,1,0,0,1");
   EXPECT_EQ(zdg::theory_rate("gauss-area", *p, 0)->slope, 1.0);
   EXPECT_FALSE(zdg::theory_rate("ii-curvature", *p, 1.0 / 3).has_value());

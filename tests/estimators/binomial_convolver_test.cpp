@@ -19,6 +19,8 @@ TEST(BinomialConvolver, MaskOrderFollowsTheLaw) {
   EXPECT_EQ(zdg::binomial_mask_order(0.001, 1.0), 10000);
   EXPECT_EQ(zdg::binomial_mask_order(0.01, 1.0) % 2, 0);
   EXPECT_THROW(zdg::binomial_mask_order(0.0, 1.0), zdg::InvalidArgument);
+  EXPECT_EQ(zdg::binomial_mask_order(0.001, 1.0, 14.0 / 9), 46416); // 10^{14/3}, made even
+  EXPECT_THROW(zdg::binomial_mask_order(0.01, 1.0, 2.5), zdg::InvalidArgument);
 }
 
 TEST(BinomialConvolver, UnitCircleTangentAndCurvature) {

@@ -53,7 +53,7 @@ TEST(ConvergeCli, JsonRunsAndFits) {
 
 TEST(ConvergeCli, FailedTheoryCheckExitsWithStatusOne) {
   // The binomial curvature on the six-petal flower at coarse steps is far from its rate.
-  auto r = run_zdg("converge --shape flower:20,7,6 --estimator bc-curvature --h 0.5:0.05:6 --json");
+  auto r = run_zdg("converge --shape flower:20,7,6 --estimator bc-curvature --h 1:0.2:5 --json");
   EXPECT_EQ(r.status, 1) << r.err;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_FALSE(j["fits"][0]["pass"].get<bool>());
