@@ -816,7 +816,8 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
                    }});
   kinds.push_back(
       {"accflower", 2, "accflower:R1,R2,P",
-       "accelerated flower r(t) = R1 + R2 cos(P t^3), t in [-pi, pi), |R2| < R1",
+       "accelerated flower r(t) = R1 + R2 cos(P t^3), t in [-pi, pi), |R2| < R1; P = 2K/pi^2 is "
+       "DGtal's AccFlower2D with K petals (smooth at t = +-pi)",
        [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
          auto v = rationals(args, spec);
          expect_count(v, 3, 3, spec, "accflower:R1,R2,P");
