@@ -1,10 +1,9 @@
-// Multigrid convergence benchmarks: integral-invariant curvature on the ellipse (20, 7) with
-// R = 5 h^{1/3} (issue target: h = 0.001 under 2 s on one core), contour tracking and the
-// binomial convolver; the ground truth: project vs project_chain (warm start with a reach
+// Multigrid convergence benchmarks: contour tracking and the binomial convolver on the
+// ellipse (20, 7) (the integral-invariant curvature, both counters, is in ii_2d_bench.cpp);
+// the ground truth: project vs project_chain (warm start with a reach
 // certificate) on 1e5 points near the boundary in chain order.
 #include "convergence/shape.hpp"
 #include "estimators/binomial_convolver.hpp"
-#include "estimators/ii_curvature.hpp"
 #include "kernel/digital_contour.hpp"
 
 #include <benchmark/benchmark.h>
@@ -30,19 +29,6 @@ Setup setup(const char* spec, double h) {
   s.contour = zdg::digital_contours(*s.set, {0}, {}).at(0);
   return s;
 }
-
-void BM_IICurvatureEllipse(benchmark::State& state) {
-  const double h = 1.0 / static_cast<double>(state.range(0));
-  Setup s = setup("ellipse:20,7", h);
-  const double radius = 5.0 * std::cbrt(h);
-  for (auto _ : state) {
-    auto k = zdg::ii_curvature(*s.set, s.contour, h, radius);
-    benchmark::DoNotOptimize(k.data());
-  }
-  state.counters["linels"] = static_cast<double>(s.contour.size());
-  state.counters["ball_radius_px"] = radius / h;
-}
-BENCHMARK(BM_IICurvatureEllipse)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 void BM_ContourTrackingEllipse(benchmark::State& state) {
   const double h = 1.0 / static_cast<double>(state.range(0));

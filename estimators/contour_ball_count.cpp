@@ -125,7 +125,7 @@ void ContourBallCounter::add_linels(std::size_t a, std::size_t b) {
   if (!runs_.empty() && runs_.back().end + 1 == a) {
     runs_.back().end = b;
   } else {
-    runs_.push_back(Run{a, b, false});
+    runs_.push_back(Run{a, b});
   }
 }
 

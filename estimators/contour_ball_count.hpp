@@ -66,7 +66,6 @@ private:
   };
   struct Run {
     std::size_t begin, end; // inclusive linel indices, end < begin when wrapping
-    bool closed;            // the whole contour
   };
 
   const GaussDigitization2& set_;
