@@ -1,4 +1,4 @@
-#include "arith/christoffel.hpp"
+#include <zdg/arith/christoffel.hpp>
 
 #include <algorithm>
 

@@ -16,8 +16,8 @@
 // Repetitions in Words (CRM 2008), chapters 1-3; Borel and Laubie (1993).
 #pragma once
 
-#include "arith/integer.hpp"
-#include "arith/stern_brocot.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/stern_brocot.hpp>
 
 #include <cstddef>
 #include <string>

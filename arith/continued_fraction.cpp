@@ -1,4 +1,4 @@
-#include "arith/continued_fraction.hpp"
+#include <zdg/arith/continued_fraction.hpp>
 
 namespace zdg {
 

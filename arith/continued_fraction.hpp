@@ -13,8 +13,8 @@
 // Mathematics, 6.7.
 #pragma once
 
-#include "arith/integer.hpp"
-#include "arith/rational.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/rational.hpp>
 
 #include <span>
 #include <utility>

@@ -1,6 +1,6 @@
-#include "arith/digital_straight_line.hpp"
+#include <zdg/arith/digital_straight_line.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -78,7 +78,7 @@ IntRange<I> DigitalStraightLine<I>::abscissas_at(const I& y) const {
 }
 
 template <TowerInt I>
-LatticePoint<I> DigitalStraightLine<I>::point_at_abscissa(const I& x) const {
+Point2<I> DigitalStraightLine<I>::point_at_abscissa(const I& x) const {
   if (kind_ != DslKind::naive || abs(a_) > abs(b_)) {
     throw InvalidArgument("point_at_abscissa needs a naive line with |a| <= |b|, not " +
                           dsl_name(a_, b_, mu_));
@@ -87,7 +87,7 @@ LatticePoint<I> DigitalStraightLine<I>::point_at_abscissa(const I& x) const {
 }
 
 template <TowerInt I>
-LatticePoint<I> DigitalStraightLine<I>::point_at_ordinate(const I& y) const {
+Point2<I> DigitalStraightLine<I>::point_at_ordinate(const I& y) const {
   if (kind_ != DslKind::naive || abs(a_) < abs(b_)) {
     throw InvalidArgument("point_at_ordinate needs a naive line with |a| >= |b|, not " +
                           dsl_name(a_, b_, mu_));
@@ -96,7 +96,7 @@ LatticePoint<I> DigitalStraightLine<I>::point_at_ordinate(const I& y) const {
 }
 
 template <TowerInt I>
-LatticePoint<I> DigitalStraightLine<I>::next(const Point& p) const {
+Point2<I> DigitalStraightLine<I>::next(const Point& p) const {
   I r = remainder(p);
   if (r < mu_ || r >= mu_ + omega_) {
     throw InvalidArgument("next: point (" + to_string(p.x) + ", " + to_string(p.y) +
@@ -107,8 +107,7 @@ LatticePoint<I> DigitalStraightLine<I>::next(const Point& p) const {
 }
 
 template <TowerInt I>
-std::vector<LatticePoint<I>> DigitalStraightLine<I>::points(const Point& start,
-                                                            std::size_t count) const {
+std::vector<Point2<I>> DigitalStraightLine<I>::points(const Point& start, std::size_t count) const {
   std::vector<Point> out;
   if (count == 0) return out;
   if (!contains(start)) next(start); // throws with the message
@@ -131,7 +130,7 @@ std::vector<LatticePoint<I>> DigitalStraightLine<I>::points(const Point& start,
 }
 
 template <TowerInt I>
-LatticePoint<I> DigitalStraightLine<I>::point_with_remainder(const I& r) const {
+Point2<I> DigitalStraightLine<I>::point_with_remainder(const I& r) const {
   // a u + b v = 1, so (x, y) = (r u, -r v) has a x - b y = r; then move by k (b, a).
   auto bz = ext_gcd(a_, b_);
   I x = r * bz.x, y = -(r * bz.y);

@@ -29,7 +29,8 @@
 // Debled-Rennesson and Reveilles, IJPRAI 9(4), 1995; Berstel et al., Christoffel words (2008).
 #pragma once
 
-#include "arith/integer.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/point.hpp>
 
 #include <cstddef>
 #include <ostream>
@@ -40,17 +41,6 @@
 namespace zdg {
 
 enum class DslKind { naive, standard };
-
-/// A point of Z^2 for the arithmetic layer (arith/ does not include kernel/; kernel/point.hpp's
-/// Point2 has the same layout and converts member-wise).
-template <class I>
-struct LatticePoint {
-  I x{}, y{};
-  friend bool operator==(const LatticePoint&, const LatticePoint&) = default;
-  friend std::ostream& operator<<(std::ostream& os, const LatticePoint& p) {
-    return os << '(' << p.x << ", " << p.y << ')';
-  }
-};
 
 /// An elementary step: a vector with coordinates in {-1, 0, 1}.
 struct Step {
@@ -68,7 +58,7 @@ struct IntRange {
 template <TowerInt I>
 class DigitalStraightLine {
 public:
-  using Point = LatticePoint<I>;
+  using Point = Point2<I>;
 
   /// Requires (a, b) != (0, 0) and gcd(a, b) = 1; InvalidArgument otherwise.
   DigitalStraightLine(I a, I b, I mu, DslKind kind = DslKind::naive);

@@ -1,7 +1,7 @@
-#include "arith/dsl_subsegment.hpp"
+#include <zdg/arith/dsl_subsegment.hpp>
 
-#include "arith/floor_sum.hpp"
-#include "arith/stern_brocot.hpp"
+#include <zdg/arith/floor_sum.hpp>
+#include <zdg/arith/stern_brocot.hpp>
 
 #include <algorithm>
 #include <optional>

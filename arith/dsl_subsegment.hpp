@@ -71,8 +71,8 @@
 // the update of SmartDSS).
 #pragma once
 
-#include "arith/escalate.hpp"
-#include "arith/integer.hpp"
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/integer.hpp>
 
 namespace zdg {
 

@@ -1,4 +1,4 @@
-#include "arith/dss_recognizer.hpp"
+#include <zdg/arith/dss_recognizer.hpp>
 
 #include <string>
 
@@ -20,7 +20,7 @@ BigInt big(const T& v) {
 }
 
 template <class T>
-Connectivity connectivity_of(std::span<const LatticePoint<T>> path) {
+Connectivity connectivity_of(std::span<const Point2<T>> path) {
   Connectivity c = Connectivity::four;
   for (std::size_t k = 1; k < path.size(); ++k) {
     BigInt dx = big(path[k].x) - big(path[k - 1].x), dy = big(path[k].y) - big(path[k - 1].y);
@@ -37,12 +37,12 @@ Connectivity connectivity_of(std::span<const LatticePoint<T>> path) {
 }
 
 template <TowerInt I, class T>
-LatticePoint<I> cast(const LatticePoint<T>& p) {
+Point2<I> cast(const Point2<T>& p) {
   return {int_cast<I>(p.x), int_cast<I>(p.y)};
 }
 
 template <TowerInt I, class T>
-DssRecognition run(std::span<const LatticePoint<T>> path, Connectivity c) {
+DssRecognition run(std::span<const Point2<T>> path, Connectivity c) {
   DssRecognizer<I> rec(cast<I>(path[0]), c);
   std::size_t k = 1;
   const std::size_t n = path.size();
@@ -58,7 +58,7 @@ DssRecognition run(std::span<const LatticePoint<T>> path, Connectivity c) {
 }
 
 template <class T>
-DssRecognition recognize(std::span<const LatticePoint<T>> path, Connectivity c) {
+DssRecognition recognize(std::span<const Point2<T>> path, Connectivity c) {
   if (path.empty()) throw InvalidArgument("DSS recognition: the path has no point");
   auto r = escalate([&]<class I>(std::type_identity<I>) { return run<I>(path, c); });
   r.value.served = r.served;
@@ -67,7 +67,7 @@ DssRecognition recognize(std::span<const LatticePoint<T>> path, Connectivity c) 
 
 } // namespace
 
-Connectivity path_connectivity(std::span<const LatticePoint<std::int64_t>> path) {
+Connectivity path_connectivity(std::span<const Point2<std::int64_t>> path) {
   // Fast path without BigInt: differences of int64 fit in __int128.
   Connectivity c = Connectivity::four;
   for (std::size_t k = 1; k < path.size(); ++k) {
@@ -80,15 +80,15 @@ Connectivity path_connectivity(std::span<const LatticePoint<std::int64_t>> path)
   return c;
 }
 
-Connectivity path_connectivity(std::span<const LatticePoint<BigInt>> path) {
+Connectivity path_connectivity(std::span<const Point2<BigInt>> path) {
   return connectivity_of(path);
 }
 
-DssRecognition recognize_dss(std::span<const LatticePoint<std::int64_t>> path, Connectivity c) {
+DssRecognition recognize_dss(std::span<const Point2<std::int64_t>> path, Connectivity c) {
   return recognize(path, c);
 }
 
-DssRecognition recognize_dss(std::span<const LatticePoint<BigInt>> path, Connectivity c) {
+DssRecognition recognize_dss(std::span<const Point2<BigInt>> path, Connectivity c) {
   return recognize(path, c);
 }
 

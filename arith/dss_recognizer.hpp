@@ -36,9 +36,9 @@
 // InvalidArgument: a DSS test only answers for paths.
 #pragma once
 
-#include "arith/digital_straight_line.hpp"
-#include "arith/escalate.hpp"
-#include "arith/integer.hpp"
+#include <zdg/arith/digital_straight_line.hpp>
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/integer.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -59,7 +59,7 @@ struct DssCharacteristics {
 template <TowerInt I>
 class DssRecognizer {
 public:
-  using Point = LatticePoint<I>;
+  using Point = Point2<I>;
 
   /// A segment of one point.
   explicit DssRecognizer(const Point& p, Connectivity c = Connectivity::eight)
@@ -147,14 +147,11 @@ private:
       return static_cast<int>(v.value());
     }
   }
-  Point local(const Point& p) const { return {p.x - origin_.x, p.y - origin_.y}; }
-  Point global(const Point& p) const { return {p.x + origin_.x, p.y + origin_.y}; }
+  Point local(const Point& p) const { return p - origin_; }
+  Point global(const Point& p) const { return p + origin_; }
   I rem(const Point& p) const { return a_ * p.x - b_ * p.y; }
   I rem(Step s) const { return a_ * I(s.x) - b_ * I(s.y); }
   static Point plus(const Point& p, Step s) { return {p.x + s.x, p.y + s.y}; }
-  static Point plus(const Point& p, const Point& v) { return {p.x + v.x, p.y + v.y}; }
-  static Point minus(const Point& p, const Point& v) { return {p.x - v.x, p.y - v.y}; }
-  static Point times(const Point& v, const I& k) { return {v.x * k, v.y * k}; }
   I norm(const Point& v) const {
     I ax = abs(v.x), ay = abs(v.y);
     if (conn_ == Connectivity::eight) return ax > ay ? ax : ay;
@@ -329,27 +326,27 @@ private:
     const Point period{b_, a_};
     if (F_ == Uf_) {
       if (Lf_ == Ll_) {
-        Point dir = minus(Lf_, plus(Uf_, shift_));
+        Point dir = Lf_ - plus(Uf_, shift_);
         I nd = norm(dir);
-        Uf_ = minus(Ul_, times(dir, I(norm(minus(Ul_, next)) / nd)));
-        Ll_ = plus(Lf_, times(dir, I(norm(minus(L_, Lf_)) / nd)));
+        Uf_ = Ul_ - dir * I(norm(Ul_ - next) / nd);
+        Ll_ = Lf_ + dir * I(norm(L_ - Lf_) / nd);
         a_ = dir.y;
         b_ = dir.x;
         changed = true;
       } else {
-        Uf_ = plus(Uf_, period);
+        Uf_ += period;
       }
     } else if (F_ == Lf_) { // (F cannot be both when omega > 1)
       if (Uf_ == Ul_) {
-        Point dir = minus(Uf_, minus(Lf_, Point{I(shift_.x), I(shift_.y)}));
+        Point dir = Uf_ - (Lf_ - Point{I(shift_.x), I(shift_.y)});
         I nd = norm(dir);
-        Lf_ = minus(Ll_, times(dir, I(norm(minus(Ll_, next)) / nd)));
-        Ul_ = plus(Uf_, times(dir, I(norm(minus(L_, Uf_)) / nd)));
+        Lf_ = Ll_ - dir * I(norm(Ll_ - next) / nd);
+        Ul_ = Uf_ + dir * I(norm(L_ - Uf_) / nd);
         a_ = dir.y;
         b_ = dir.x;
         changed = true;
       } else {
-        Lf_ = plus(Lf_, period);
+        Lf_ += period;
       }
     }
     F_ = next;
@@ -378,11 +375,11 @@ struct DssRecognition {
 
 /// 4 when every step of the path is an axis step, else 8; a step that is not 8-adjacent
 /// (or a repeated point) throws InvalidArgument naming its index.
-Connectivity path_connectivity(std::span<const LatticePoint<std::int64_t>> path);
-Connectivity path_connectivity(std::span<const LatticePoint<BigInt>> path);
+Connectivity path_connectivity(std::span<const Point2<std::int64_t>> path);
+Connectivity path_connectivity(std::span<const Point2<BigInt>> path);
 
 /// Recognizes the path (non-empty) with the given connectivity, exact by escalation.
-DssRecognition recognize_dss(std::span<const LatticePoint<std::int64_t>> path, Connectivity c);
-DssRecognition recognize_dss(std::span<const LatticePoint<BigInt>> path, Connectivity c);
+DssRecognition recognize_dss(std::span<const Point2<std::int64_t>> path, Connectivity c);
+DssRecognition recognize_dss(std::span<const Point2<BigInt>> path, Connectivity c);
 
 } // namespace zdg

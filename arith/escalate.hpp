@@ -10,8 +10,8 @@
 // can start there with escalate_from(IntKind::int128, f).
 #pragma once
 
-#include "arith/error.hpp"
-#include "arith/integer.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/integer.hpp>
 
 #include <string_view>
 #include <type_traits>

@@ -1,4 +1,4 @@
-#include "arith/floor_sum.hpp"
+#include <zdg/arith/floor_sum.hpp>
 
 #include <utility>
 

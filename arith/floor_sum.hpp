@@ -12,8 +12,8 @@
 // of the classical reciprocity of Dedekind-like sums; Knuth TAOCP vol. 1, 1.2.4 ex. 37.
 #pragma once
 
-#include "arith/escalate.hpp"
-#include "arith/integer.hpp"
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/integer.hpp>
 
 namespace zdg {
 

@@ -1,4 +1,4 @@
-#include "arith/integer.hpp"
+#include <zdg/arith/integer.hpp>
 
 #include <algorithm>
 #include <cctype>

@@ -16,7 +16,7 @@
 // parsing and printing.
 #pragma once
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <boost/multiprecision/gmp.hpp>
 

@@ -1,4 +1,4 @@
-#include "arith/rational.hpp"
+#include <zdg/arith/rational.hpp>
 
 namespace zdg {
 

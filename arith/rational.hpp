@@ -3,7 +3,7 @@
 // integer it is built on. Parsing accepts "7", "-3/4" and decimals "1000.5" / "-0.125".
 #pragma once
 
-#include "arith/integer.hpp"
+#include <zdg/arith/integer.hpp>
 
 #include <compare>
 #include <ostream>

@@ -1,6 +1,6 @@
-#include "arith/stern_brocot.hpp"
+#include <zdg/arith/stern_brocot.hpp>
 
-#include "arith/continued_fraction.hpp"
+#include <zdg/arith/continued_fraction.hpp>
 
 namespace zdg {
 

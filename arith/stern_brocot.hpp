@@ -12,7 +12,7 @@
 // Source: Graham, Knuth, Patashnik, Concrete Mathematics, 4.5; Stern (1858), Brocot (1861).
 #pragma once
 
-#include "arith/integer.hpp"
+#include <zdg/arith/integer.hpp>
 
 #include <string>
 #include <utility>

@@ -1,8 +1,8 @@
 // Speed of the arithmetic core: continued fractions, floor_sum, Christoffel generation
 // (letters per second), on each tower type.
-#include "arith/christoffel.hpp"
-#include "arith/continued_fraction.hpp"
-#include "arith/floor_sum.hpp"
+#include <zdg/arith/christoffel.hpp>
+#include <zdg/arith/continued_fraction.hpp>
+#include <zdg/arith/floor_sum.hpp>
 
 #include <benchmark/benchmark.h>
 

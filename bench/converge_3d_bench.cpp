@@ -2,8 +2,8 @@
 // (estimators/ii_3d.hpp has its own benchmark): exact membership of the polynomial shapes,
 // digitization with seeds and surface tracking, the ground truth (projection and curvatures)
 // per surfel, and one whole ii-mean run of the registry (sphere9, goursat).
-#include "convergence/digitized_3d.hpp"
-#include "convergence/estimator.hpp"
+#include <zdg/convergence/digitized_3d.hpp>
+#include <zdg/convergence/estimator.hpp>
 
 #include <benchmark/benchmark.h>
 

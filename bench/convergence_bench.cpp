@@ -2,9 +2,9 @@
 // ellipse (20, 7) (the integral-invariant curvature, both counters, is in ii_2d_bench.cpp);
 // the ground truth: project vs project_chain (warm start with a reach
 // certificate) on 1e5 points near the boundary in chain order.
-#include "convergence/shape.hpp"
-#include "estimators/binomial_convolver.hpp"
-#include "kernel/digital_contour.hpp"
+#include <zdg/convergence/shape.hpp>
+#include <zdg/estimators/binomial_convolver.hpp>
+#include <zdg/kernel/digital_contour.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -3,10 +3,10 @@
 // 10^5, and DSL subsegment queries with values near 2^62 (SmartDSS and ReversedSmartDSS).
 //
 //   build/bin/dss_bench --benchmark_filter=. --benchmark_min_time=1s
-#include "arith/dsl_subsegment.hpp"
-#include "arith/dss_recognizer.hpp"
-#include "kernel/maximal_segments.hpp"
 #include "tests/support/contours.hpp"
+#include <zdg/arith/dsl_subsegment.hpp>
+#include <zdg/arith/dss_recognizer.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -19,12 +19,11 @@ namespace {
 
 using namespace zdg;
 
-std::vector<LatticePoint<std::int64_t>> dss_points(std::size_t n, std::int64_t x0,
-                                                   std::int64_t y0) {
+std::vector<Point2<std::int64_t>> dss_points(std::size_t n, std::int64_t x0, std::int64_t y0) {
   // A naive line of slope 4142136/10000001 (period longer than the segment), shifted far away.
   DigitalStraightLine<Int64> line(4142136, 10000001, 0);
   auto pts = line.points(line.upper_leaning_point(), n);
-  std::vector<LatticePoint<std::int64_t>> out;
+  std::vector<Point2<std::int64_t>> out;
   out.reserve(n);
   for (const auto& p : pts) out.push_back({p.x.value() + x0, p.y.value() + y0});
   return out;

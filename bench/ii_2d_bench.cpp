@@ -3,9 +3,9 @@
 // (O(R/h) membership queries per linel) against the contour counter (Green's formula over the
 // complete boundary, O(log n) per linel, estimators/contour_ball_count.hpp). Same integers, so the
 // same curvatures.
-#include "convergence/shape.hpp"
-#include "estimators/ii_curvature.hpp"
-#include "kernel/digital_contour.hpp"
+#include <zdg/convergence/shape.hpp>
+#include <zdg/estimators/ii_curvature.hpp>
+#include <zdg/kernel/digital_contour.hpp>
 
 #include <benchmark/benchmark.h>
 

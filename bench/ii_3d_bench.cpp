@@ -2,7 +2,7 @@
 // [-1.25, 1.25]^3) at h = 0.025 with R = 3 h^{1/3} (R/h ~ 35 voxels, ~30,000 surfels).
 // The unit sphere at h = 1/40 is digitized exactly by the integer predicate |z|^2 <= 40^2.
 //   build/bin/ii_3d_bench --benchmark_counters_tabular=true
-#include "estimators/ii_3d.hpp"
+#include <zdg/estimators/ii_3d.hpp>
 
 #include <benchmark/benchmark.h>
 

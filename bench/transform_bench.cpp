@@ -3,10 +3,10 @@
 // and ns per voxel (counter "ns_per_voxel"). Peers: bench/compare_transforms.py.
 //
 //   build/bin/transform_bench --benchmark_filter='Dt3d/256/2/2'
-#include "kernel/distance_transform.hpp"
-#include "kernel/reduced_medial_axis.hpp"
-#include "kernel/reverse_distance_transform.hpp"
-#include "kernel/voronoi_map.hpp"
+#include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/reduced_medial_axis.hpp>
+#include <zdg/kernel/reverse_distance_transform.hpp>
+#include <zdg/kernel/voronoi_map.hpp>
 
 #include <benchmark/benchmark.h>
 

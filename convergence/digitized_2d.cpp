@@ -1,6 +1,6 @@
-#include "convergence/digitized_2d.hpp"
+#include <zdg/convergence/digitized_2d.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -13,9 +13,9 @@
 // (estimators/contour_ball_count.hpp).
 #pragma once
 
-#include "convergence/estimator.hpp"
-#include "convergence/shape.hpp"
-#include "kernel/digital_contour.hpp"
+#include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/shape.hpp>
+#include <zdg/kernel/digital_contour.hpp>
 
 #include <memory>
 #include <utility>

@@ -10,8 +10,8 @@
 // never clipped (voxels outside the box are outside the shape), so every surfel counts.
 #pragma once
 
-#include "convergence/estimator.hpp"
-#include "convergence/shapes_3d.hpp"
+#include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/shapes_3d.hpp>
 
 #include <vector>
 

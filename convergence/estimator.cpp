@@ -1,6 +1,6 @@
-#include "convergence/estimator.hpp"
+#include <zdg/convergence/estimator.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <cmath>
 

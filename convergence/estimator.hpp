@@ -9,7 +9,7 @@
 // the fit and the outputs never look inside an estimator.
 #pragma once
 
-#include "convergence/shape.hpp"
+#include <zdg/convergence/shape.hpp>
 
 #include <cstdint>
 #include <functional>

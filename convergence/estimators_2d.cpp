@@ -1,18 +1,18 @@
 // The 2D estimators of the registry: digitize the translated shape, extract its contours,
 // run the estimator of estimators/, and compare with the shape's ground truth at the
 // projection of each boundary element.
-#include "arith/error.hpp"
-#include "convergence/digitized_2d.hpp"
-#include "convergence/estimator.hpp"
-#include "estimators/binomial_convolver.hpp"
-#include "estimators/dss_length.hpp"
-#include "estimators/gauss_area.hpp"
-#include "estimators/ii_curvature.hpp"
-#include "estimators/lambda_mst.hpp"
-#include "estimators/mdss_curvature.hpp"
-#include "estimators/mlp_length.hpp"
-#include "estimators/moments.hpp"
-#include "kernel/digital_contour.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/digitized_2d.hpp>
+#include <zdg/convergence/estimator.hpp>
+#include <zdg/estimators/binomial_convolver.hpp>
+#include <zdg/estimators/dss_length.hpp>
+#include <zdg/estimators/gauss_area.hpp>
+#include <zdg/estimators/ii_curvature.hpp>
+#include <zdg/estimators/lambda_mst.hpp>
+#include <zdg/estimators/mdss_curvature.hpp>
+#include <zdg/estimators/mlp_length.hpp>
+#include <zdg/estimators/moments.hpp>
+#include <zdg/kernel/digital_contour.hpp>
 
 #include <algorithm>
 #include <cmath>

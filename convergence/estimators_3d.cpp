@@ -7,12 +7,12 @@
 // moments at every surfel (estimators/ii_3d.hpp) and the ground truth, kept in a small
 // cache (at most 512 MiB) so that a driver running several of them on the same
 // digitization counts the balls once.
-#include "arith/error.hpp"
-#include "convergence/digitized_3d.hpp"
-#include "convergence/estimator.hpp"
-#include "estimators/gauss_volume.hpp"
-#include "estimators/hausdorff.hpp"
-#include "estimators/ii_3d.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/digitized_3d.hpp>
+#include <zdg/convergence/estimator.hpp>
+#include <zdg/estimators/gauss_volume.hpp>
+#include <zdg/estimators/hausdorff.hpp>
+#include <zdg/estimators/ii_3d.hpp>
 
 #include <algorithm>
 #include <cmath>

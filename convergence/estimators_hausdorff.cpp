@@ -10,12 +10,12 @@
 //                  (for h < 2 rho / sqrt(d), rho the reach).
 // Boundary elements on the box (outer pixel or voxel outside it, for shapes the box clips)
 // carry no error. The 2D contours are found as in estimators_2d.cpp (9 rows and columns).
-#include "arith/error.hpp"
-#include "convergence/digitized_2d.hpp"
-#include "convergence/digitized_3d.hpp"
-#include "convergence/estimator.hpp"
-#include "estimators/hausdorff.hpp"
-#include "kernel/digital_contour.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/digitized_2d.hpp>
+#include <zdg/convergence/digitized_3d.hpp>
+#include <zdg/convergence/estimator.hpp>
+#include <zdg/estimators/hausdorff.hpp>
+#include <zdg/kernel/digital_contour.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,9 @@
-#include "convergence/experiment.hpp"
+#include <zdg/convergence/experiment.hpp>
 
-#include "arith/error.hpp"
-#include "arith/rational.hpp"
-#include "convergence/theory.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/rational.hpp>
+#include <zdg/convergence/theory.hpp>
+#include <zdg/kernel/parallel_for.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -13,7 +14,6 @@
 #include <mutex>
 #include <ostream>
 #include <sstream>
-#include <thread>
 
 namespace zdg {
 
@@ -155,18 +155,11 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
     }
   }
   std::vector<RunRecord> records(jobs.size());
-  std::atomic<std::size_t> next{0}, done{0};
+  std::atomic<std::size_t> done{0};
   std::mutex mutex;
-  std::exception_ptr failure;
-  auto worker = [&] {
-    for (;;) {
-      std::size_t i = next.fetch_add(1);
-      if (i >= jobs.size()) return;
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (failure) return;
-      }
-      try {
+  parallel_for(
+      std::int64_t(jobs.size()), unsigned(std::max(config.threads, 1)), [&](std::int64_t ji) {
+        const auto i = std::size_t(ji);
         const Job& job = jobs[i];
         const Shape& shape = *shapes[job.shape];
         const Estimator& est = *ests[job.est];
@@ -208,22 +201,7 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
           std::lock_guard<std::mutex> lock(mutex);
           progress(n, jobs.size(), records[i]);
         }
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(mutex);
-        if (!failure) failure = std::current_exception();
-        return;
-      }
-    }
-  };
-  const int nthreads = std::min<int>(config.threads, static_cast<int>(jobs.size()));
-  if (nthreads <= 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (int i = 0; i < nthreads; ++i) pool.emplace_back(worker);
-    for (auto& t : pool) t.join();
-  }
-  if (failure) std::rethrow_exception(failure);
+      });
 
   ExperimentResult result;
   // Rows in the order shape, estimator, h (decreasing), translation.

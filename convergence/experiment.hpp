@@ -11,9 +11,9 @@
 // over `threads` std::threads, finest grid steps first.
 #pragma once
 
-#include "convergence/estimator.hpp"
-#include "convergence/fit.hpp"
-#include "convergence/shape.hpp"
+#include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/fit.hpp>
+#include <zdg/convergence/shape.hpp>
 
 #include <cstdint>
 #include <functional>

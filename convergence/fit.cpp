@@ -1,4 +1,4 @@
-#include "convergence/fit.hpp"
+#include <zdg/convergence/fit.hpp>
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "convergence/polynomial.hpp"
+#include <zdg/convergence/polynomial.hpp>
 
 #include <algorithm>
 #include <cctype>

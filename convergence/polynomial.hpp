@@ -15,8 +15,8 @@
 // ch. 3), otherwise the sign is decided exactly.
 #pragma once
 
-#include "arith/integer.hpp"
-#include "arith/rational.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/rational.hpp>
 
 #include <array>
 #include <string>

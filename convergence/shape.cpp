@@ -1,8 +1,8 @@
-#include "convergence/shape.hpp"
+#include <zdg/convergence/shape.hpp>
 
-#include "arith/error.hpp"
-#include "arith/rational.hpp"
-#include "convergence/shapes_3d.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/rational.hpp>
+#include <zdg/convergence/shapes_3d.hpp>
 
 #include <random>
 

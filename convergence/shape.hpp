@@ -18,8 +18,8 @@
 // on). Flowers are transcendental: membership is decided in double (r(theta) vs |p|).
 #pragma once
 
-#include "kernel/gauss_digitization.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/point.hpp>
+#include <zdg/kernel/gauss_digitization.hpp>
 
 #include <array>
 #include <cstdint>

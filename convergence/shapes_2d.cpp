@@ -1,7 +1,7 @@
-#include "convergence/shapes_2d.hpp"
+#include <zdg/convergence/shapes_2d.hpp>
 
-#include "arith/error.hpp"
-#include "convergence/polynomial.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/polynomial.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -45,7 +45,7 @@
 // with curvature (Fy^2 Fxx - 2 Fx Fy Fxy + Fx^2 Fyy) / |grad F|^3; no area or perimeter.
 #pragma once
 
-#include "convergence/shape.hpp"
+#include <zdg/convergence/shape.hpp>
 
 namespace zdg {
 

@@ -1,6 +1,6 @@
-#include "convergence/shapes_3d.hpp"
+#include <zdg/convergence/shapes_3d.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <array>
 #include <cmath>
@@ -15,26 +15,11 @@ namespace {
 
 using P3 = Point3<double>;
 
-P3 sub(P3 a, P3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-P3 add(P3 a, P3 b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-P3 scale(double s, P3 a) {
-  return {s * a.x, s * a.y, s * a.z};
-}
-double dot(P3 a, P3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
 double norm(P3 a) {
   return std::sqrt(dot(a, a));
 }
-P3 cross(P3 a, P3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
 P3 unit(P3 a) {
-  return scale(1.0 / norm(a), a);
+  return (1.0 / norm(a)) * a;
 }
 
 // Damped Newton towards F = 0 from q (the 2D `poly:` scheme, in three variables).
@@ -174,8 +159,8 @@ P3 tangential_part(const Polynomial& f, P3 p, P3 q) {
   const P3 gv{g[0], g[1], g[2]};
   const double gn = norm(gv);
   if (!(gn > 0)) return {0, 0, 0};
-  const P3 n = scale(1.0 / gn, gv), w = sub(p, q);
-  return sub(w, scale(dot(w, n), n));
+  const P3 n = (1.0 / gn) * gv, w = p - q;
+  return w - dot(w, n) * n;
 }
 
 double tangential_residual(const Polynomial& f, P3 p, P3 q) {
@@ -236,7 +221,7 @@ SurfacePoint3 implicit_surface_geometry(const Polynomial& f, P3 q) {
   }
   SurfacePoint3 s;
   s.point = q;
-  s.normal = scale(1.0 / gn, gv);
+  s.normal = (1.0 / gn) * gv;
   auto mv = [&](P3 a) {
     return P3{m[0] * a.x + m[1] * a.y + m[2] * a.z, m[3] * a.x + m[4] * a.y + m[5] * a.z,
               m[6] * a.x + m[7] * a.y + m[8] * a.z};
@@ -270,7 +255,7 @@ SurfacePoint3 implicit_surface_geometry(const Polynomial& f, P3 q) {
     u = 1;
     v = 0;
   }
-  s.d1 = unit(add(scale(u, t1), scale(v, t2)));
+  s.d1 = unit(u * t1 + v * t2);
   s.d2 = cross(n, s.d1);
   return s;
 }
@@ -278,9 +263,9 @@ SurfacePoint3 implicit_surface_geometry(const Polynomial& f, P3 q) {
 SurfacePoint3 project_implicit_surface(const Polynomial& f, P3 p) {
   P3 q = newton(f, p);
   double residual = tangential_residual(f, p, q);
-  for (int round = 0; round < 8 && residual > kFootTolerance * (1 + norm(sub(p, q)) + norm(q));
+  for (int round = 0; round < 8 && residual > kFootTolerance * (1 + norm((p - q)) + norm(q));
        ++round) {
-    const P3 next = newton(f, add(q, tangential_part(f, p, q)));
+    const P3 next = newton(f, (q + tangential_part(f, p, q)));
     const double r = tangential_residual(f, p, next);
     if (!(r < residual)) break;
     q = next;
@@ -288,7 +273,7 @@ SurfacePoint3 project_implicit_surface(const Polynomial& f, P3 p) {
   }
   // Polish by Newton on the Lagrange system when the tangential rounds converge slowly
   // (points far from the surface compared with its curvature radius).
-  for (int it = 0; it < 12 && residual > kFootTolerance * (1 + norm(sub(p, q)) + norm(q)); ++it) {
+  for (int it = 0; it < 12 && residual > kFootTolerance * (1 + norm((p - q)) + norm(q)); ++it) {
     P3 next;
     if (!lagrange_step(f, p, q, next)) break;
     next = newton(f, next);

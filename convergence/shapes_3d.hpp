@@ -30,9 +30,9 @@
 // returned by digitize is safe to call from several threads.
 #pragma once
 
-#include "convergence/polynomial.hpp"
-#include "convergence/shape.hpp"
-#include "kernel/digital_surface.hpp"
+#include <zdg/convergence/polynomial.hpp>
+#include <zdg/convergence/shape.hpp>
+#include <zdg/kernel/digital_surface.hpp>
 
 #include <optional>
 #include <string>

@@ -1,4 +1,4 @@
-#include "convergence/theory.hpp"
+#include <zdg/convergence/theory.hpp>
 
 #include <algorithm>
 #include <cmath>

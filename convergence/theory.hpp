@@ -4,7 +4,7 @@
 // levels (published experiments observe slopes at or above the proven rates).
 #pragma once
 
-#include "convergence/shape.hpp"
+#include <zdg/convergence/shape.hpp>
 
 #include <optional>
 #include <string>

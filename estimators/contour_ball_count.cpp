@@ -1,6 +1,6 @@
-#include "estimators/contour_ball_count.hpp"
+#include <zdg/estimators/contour_ball_count.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <algorithm>
 #include <cstdlib>

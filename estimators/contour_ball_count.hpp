@@ -36,9 +36,9 @@
 // 2014), where the count is queried at every linel of the boundary.
 #pragma once
 
-#include "arith/integer.hpp"
-#include "kernel/digital_contour.hpp"
-#include "kernel/digital_disc.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/digital_disc.hpp>
 
 #include <cstdint>
 #include <span>

@@ -1,7 +1,7 @@
-#include "estimators/dss_length.hpp"
+#include <zdg/estimators/dss_length.hpp>
 
-#include "arith/error.hpp"
-#include "kernel/maximal_segments.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
 
 #include <cmath>
 #include <string>

@@ -11,7 +11,7 @@
 // A comparative evaluation of length estimators of digital curves, IEEE TPAMI 26(2), 2004.
 #pragma once
 
-#include "kernel/point.hpp"
+#include <zdg/arith/point.hpp>
 
 #include <cstdint>
 #include <span>

@@ -1,6 +1,6 @@
-#include "estimators/gauss_area.hpp"
+#include <zdg/estimators/gauss_area.hpp>
 
-#include "arith/integer.hpp"
+#include <zdg/arith/integer.hpp>
 
 namespace zdg {
 

@@ -7,7 +7,7 @@
 // (Huxley 1990); see THEORY.md.
 #pragma once
 
-#include "kernel/digital_contour.hpp"
+#include <zdg/kernel/digital_contour.hpp>
 
 #include <cstdint>
 #include <vector>

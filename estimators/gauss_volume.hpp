@@ -7,7 +7,7 @@
 // nothing stored), the z-slices being shared among `threads` threads.
 #pragma once
 
-#include "kernel/digital_surface.hpp"
+#include <zdg/kernel/digital_surface.hpp>
 
 #include <cstdint>
 

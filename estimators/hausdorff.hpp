@@ -10,7 +10,7 @@
 // rational (xi is the root of a polynomial system); xi comes from the shape.
 #pragma once
 
-#include "kernel/point.hpp"
+#include <zdg/arith/point.hpp>
 
 #include <functional>
 #include <span>

@@ -1,6 +1,7 @@
-#include "estimators/ii_3d.hpp"
+#include <zdg/estimators/ii_3d.hpp>
 
-#include "arith/integer.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/parallel_for.hpp>
 
 #include <Eigen/Eigenvalues>
 
@@ -8,9 +9,9 @@
 #include <atomic>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <numbers>
 #include <string>
-#include <thread>
 #include <tuple>
 #include <unordered_map>
 
@@ -38,7 +39,7 @@ void check_radius2(std::int64_t r2) {
 int threads_or_default(int threads) {
   if (threads < 0)
     throw InvalidArgument("integral invariants: threads = " + std::to_string(threads));
-  return threads == 0 ? int(std::max(1u, std::thread::hardware_concurrency())) : threads;
+  return int(worker_count(unsigned(threads), std::numeric_limits<std::int64_t>::max()));
 }
 
 /// One row of the ball along an axis a: the offsets t e_a + u e_b + v e_c, |t| <= w, where
@@ -418,32 +419,19 @@ IISurfelMoments detail::ii_surfel_moments(const VoxelPredicate& inside, const Vo
   const Cache* shared = whole_data.empty() ? nullptr : &whole;
 
   std::vector<BallMoments> at_voxel(voxels.size());
-  std::atomic<std::size_t> next{0}, full_counts{0}, unit_moves{0}, evaluations{0};
-  std::atomic<bool> failed{false};
-  std::exception_ptr error;
-  auto work = [&] {
-    try {
-      for (std::size_t c = next++; c < chunks.size() && !failed; c = next++) {
-        const auto span =
-            std::span(walk).subspan(chunks[c].first, chunks[c].second - chunks[c].first);
-        const ChunkStats st = second_order
-                                  ? run_chunk<true>(inside, box, voxels, span, rows, r, max_jump,
-                                                    shared, whole_data.data(), at_voxel)
-                                  : run_chunk<false>(inside, box, voxels, span, rows, r, max_jump,
-                                                     shared, whole_data.data(), at_voxel);
-        full_counts += st.full_counts;
-        unit_moves += st.unit_moves;
-        evaluations += st.evaluations;
-      }
-    } catch (...) {
-      if (!failed.exchange(true)) error = std::current_exception();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::min<int>(threads, int(chunks.size())); ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
+  std::atomic<std::size_t> full_counts{0}, unit_moves{0}, evaluations{0};
+  parallel_for(std::int64_t(chunks.size()), unsigned(threads), [&](std::int64_t c) {
+    const auto& chunk = chunks[std::size_t(c)];
+    const auto span = std::span(walk).subspan(chunk.first, chunk.second - chunk.first);
+    const ChunkStats st = second_order
+                              ? run_chunk<true>(inside, box, voxels, span, rows, r, max_jump,
+                                                shared, whole_data.data(), at_voxel)
+                              : run_chunk<false>(inside, box, voxels, span, rows, r, max_jump,
+                                                 shared, whole_data.data(), at_voxel);
+    full_counts += st.full_counts;
+    unit_moves += st.unit_moves;
+    evaluations += st.evaluations;
+  });
 
   result.moments.reserve(surfels.size());
   for (const auto& ids : of_surfel) result.moments.push_back({at_voxel[ids[0]], at_voxel[ids[1]]});

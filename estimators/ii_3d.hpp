@@ -32,7 +32,7 @@
 // < 2^48, and the combination about the surfel centre uses int128_t.
 #pragma once
 
-#include "kernel/digital_surface.hpp"
+#include <zdg/kernel/digital_surface.hpp>
 
 #include <array>
 #include <cstddef>

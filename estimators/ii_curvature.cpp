@@ -1,6 +1,6 @@
-#include "estimators/ii_curvature.hpp"
+#include <zdg/estimators/ii_curvature.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <cmath>
 #include <cstdlib>

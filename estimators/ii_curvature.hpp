@@ -19,10 +19,10 @@
 // O(log n) per linel, independent of R/h, and the same integers.
 #pragma once
 
-#include "estimators/contour_ball_count.hpp"
-#include "kernel/digital_contour.hpp"
-#include "kernel/digital_disc.hpp"
-#include "kernel/gauss_digitization.hpp"
+#include <zdg/estimators/contour_ball_count.hpp>
+#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/digital_disc.hpp>
+#include <zdg/kernel/gauss_digitization.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,7 @@
-#include "estimators/lambda_mst.hpp"
+#include <zdg/estimators/lambda_mst.hpp>
 
-#include "arith/error.hpp"
-#include "kernel/maximal_segments.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
 
 #include <cmath>
 #include <limits>

@@ -17,7 +17,7 @@
 // estimation on digital contours, Image Vis. Comput. 25(10), 2007.
 #pragma once
 
-#include "kernel/point.hpp"
+#include <zdg/arith/point.hpp>
 
 #include <cstdint>
 #include <span>

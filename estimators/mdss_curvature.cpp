@@ -1,7 +1,7 @@
-#include "estimators/mdss_curvature.hpp"
+#include <zdg/estimators/mdss_curvature.hpp>
 
-#include "arith/error.hpp"
-#include "kernel/maximal_segments.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -14,7 +14,7 @@
 // estimation, IWVF 2001, LNCS 2059.
 #pragma once
 
-#include "kernel/point.hpp"
+#include <zdg/arith/point.hpp>
 
 #include <cstdint>
 #include <span>

@@ -1,6 +1,6 @@
-#include "estimators/mlp_length.hpp"
+#include <zdg/estimators/mlp_length.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <cmath>
 #include <cstdlib>

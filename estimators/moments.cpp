@@ -1,6 +1,6 @@
-#include "estimators/moments.hpp"
+#include <zdg/estimators/moments.hpp>
 
-#include "arith/escalate.hpp"
+#include <zdg/arith/escalate.hpp>
 
 namespace zdg {
 

@@ -9,8 +9,8 @@
 // type, run by escalation (Int64, then Int128, then BigInt); the result is a BigInt.
 #pragma once
 
-#include "arith/integer.hpp"
-#include "kernel/digital_contour.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/digital_contour.hpp>
 
 #include <array>
 #include <vector>

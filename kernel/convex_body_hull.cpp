@@ -1,7 +1,7 @@
-#include "kernel/convex_body_hull.hpp"
+#include <zdg/kernel/convex_body_hull.hpp>
 
-#include "arith/error.hpp"
-#include "kernel/lattice_polygon.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/lattice_polygon.hpp>
 
 #include <boost/multiprecision/gmp.hpp>
 
@@ -51,18 +51,9 @@ I floor_sqrt(const I& n) {
 
 namespace {
 
-template <TowerInt I>
-Point2<I> add(const Point2<I>& a, const Point2<I>& b) {
-  return {a.x + b.x, a.y + b.y};
-}
-template <TowerInt I>
-Point2<I> add_scaled(const Point2<I>& a, const I& k, const Point2<I>& b) {
-  return {a.x + k * b.x, a.y + k * b.y};
-}
-
 // Integers k with A k^2 + 2 B k + C <= 0, A > 0.
 template <TowerInt I>
-IntRange<I> quadratic_range(const I& A, const I& B, const I& C) {
+LineRange<I> quadratic_range(const I& A, const I& B, const I& C) {
   I delta = B * B - A * C;
   if (delta < 0) return std::nullopt;
   I s = floor_sqrt(delta);
@@ -89,7 +80,7 @@ bool QuadraticBody<I>::contains(const Point2<I>& p) const {
 }
 
 template <TowerInt I>
-IntRange<I> QuadraticBody<I>::line_range(const Point2<I>& q, const Point2<I>& v) const {
+LineRange<I> QuadraticBody<I>::line_range(const Point2<I>& q, const Point2<I>& v) const {
   I ux = D * q.x - Cx, uy = D * q.y - Cy, vx = D * v.x, vy = D * v.y;
   I A = alpha * vx * vx + beta * vy * vy;
   if (A == 0) throw InvalidArgument("line_range: zero direction");
@@ -182,7 +173,7 @@ bool PolygonBody<I>::contains(const Point2<I>& p) const {
 }
 
 template <TowerInt I>
-IntRange<I> PolygonBody<I>::line_range(const Point2<I>& q, const Point2<I>& v) const {
+LineRange<I> PolygonBody<I>::line_range(const Point2<I>& q, const Point2<I>& v) const {
   std::optional<I> lo, hi;
   for (const auto& [a, b, c] : rows) {
     I s = a * v.x + b * v.y;
@@ -349,13 +340,13 @@ template <TowerInt I, class Body>
 std::pair<Point2<I>, Point2<I>> descend(const Body& K, const Point2<I>& P, Point2<I> din,
                                         Point2<I> dout) {
   for (;;) {
-    din = add_scaled(din, K.last_inside(add(P, din), dout), dout);
-    Point2<I> m = add(din, dout);
-    auto r2 = K.first_inside(add(P, m), din);
+    din = din + K.last_inside(P + din, dout) * dout;
+    Point2<I> m = din + dout;
+    auto r2 = K.first_inside(P + m, din);
     if (!r2) return {din, dout};
     I ks = *r2;
-    dout = add_scaled(m, I(ks - 1), din);
-    din = add_scaled(m, ks, din);
+    dout = m + I(ks - 1) * din;
+    din = m + ks * din;
   }
 }
 
@@ -365,10 +356,10 @@ std::pair<Point2<I>, Point2<I>> descend(const Body& K, const Point2<I>& P, Point
 template <TowerInt I, class Body>
 std::optional<std::pair<Point2<I>, Point2<I>>>
 next_direction(const Body& K, const Point2<I>& P, const Point2<I>& d, const Point2<I>& w) {
-  auto r = K.line_range(add(P, w), d);
+  auto r = K.line_range(P + w, d);
   if (!r) return std::nullopt;
-  Point2<I> din = add_scaled(w, r->second, d);
-  auto [e, dout] = descend(K, P, din, add(din, d));
+  Point2<I> din = w + r->second * d;
+  auto [e, dout] = descend(K, P, din, din + d);
   return std::pair<Point2<I>, Point2<I>>{e, Point2<I>{I(-dout.x), I(-dout.y)}};
 }
 
@@ -399,9 +390,9 @@ ScanFrame<I> scan_frame(const Point2<I>& u) {
 template <TowerInt I, class Body>
 std::optional<Point2<I>> first_direction(const Body& K, const ScanFrame<I>& F, const Point2<I>& P0,
                                          const I& t0) {
-  if (auto r = K.line_range(add(P0, F.w), F.v)) {
-    Point2<I> din = add_scaled(F.w, r->second, F.v);
-    return descend(K, P0, din, add(din, F.v)).first;
+  if (auto r = K.line_range(P0 + F.w, F.v)) {
+    Point2<I> din = F.w + r->second * F.v;
+    return descend(K, P0, din, din + F.v).first;
   }
   // The next scan line misses the lattice: scan the lines beyond (thin bodies only).
   std::optional<Point2<I>> best;
@@ -412,7 +403,7 @@ std::optional<Point2<I>> first_direction(const Body& K, const ScanFrame<I>& F, c
       if (++empty > kMaxEmptyRows) throw_thin(to_string(I(t0 + 2)));
       continue;
     }
-    Point2<I> q = add_scaled(F.origin(t), r->second, F.v);
+    Point2<I> q = F.origin(t) + r->second * F.v;
     Point2<I> e{I(q.x - P0.x), I(q.y - P0.y)};
     if (!best || e.x * best->y - e.y * best->x > 0) best = e;
   }
@@ -436,7 +427,7 @@ std::vector<Point2<I>> convex_body_hull(const Body& K) {
   long empty = 0;
   for (I t = K.tlo; t <= K.thi; ++t) {
     if (auto r = K.line_range(F.origin(t), F.v)) {
-      p0 = add_scaled(F.origin(t), r->first, F.v);
+      p0 = F.origin(t) + r->first * F.v;
       kr = r->second - r->first;
       t0 = t;
       break;
@@ -447,12 +438,12 @@ std::vector<Point2<I>> convex_body_hull(const Body& K) {
   out.push_back(*p0);
   Point2<I> P, d;
   if (kr > 0) {
-    P = add_scaled(*p0, kr, F.v);
+    P = *p0 + kr * F.v;
     d = F.v;
   } else {
     auto e = detail::first_direction(K, F, *p0, t0);
     if (!e) return out;
-    P = add_scaled(*p0, K.last_inside(*p0, *e), *e);
+    P = *p0 + K.last_inside(*p0, *e) * *e;
     d = *e;
   }
   out.push_back(P);
@@ -462,7 +453,7 @@ std::vector<Point2<I>> convex_body_hull(const Body& K) {
     if (!e) break;
     d = e->first;
     w = e->second;
-    Point2<I> Q = add_scaled(P, K.last_inside(P, d), d);
+    Point2<I> Q = P + K.last_inside(P, d) * d;
     if (Q == *p0) break;
     out.push_back(Q);
     P = Q;

@@ -38,10 +38,10 @@
 // *_exact entry points escalate Int64 -> Int128 -> BigInt on OverflowError.
 #pragma once
 
-#include "arith/escalate.hpp"
-#include "arith/integer.hpp"
-#include "arith/rational.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/point.hpp>
+#include <zdg/arith/rational.hpp>
 
 #include <array>
 #include <optional>
@@ -51,9 +51,9 @@
 
 namespace zdg {
 
-/// Integer interval [lo, hi] (nonempty when present).
+/// The integers k of a line q + k v inside a body: [first, second] (nonempty when present).
 template <TowerInt I>
-using IntRange = std::optional<std::pair<I, I>>;
+using LineRange = std::optional<std::pair<I, I>>;
 
 /// The body alpha (D x - Cx)^2 + beta (D y - Cy)^2 <= gamma (all integers, alpha, beta > 0),
 /// with an integer box [xlo, xhi] x [ylo, yhi] containing its lattice points.
@@ -65,7 +65,7 @@ struct QuadraticBody {
   Point2<I> u{I(0), I(1)};
   I tlo{0}, thi{-1};
   bool contains(const Point2<I>& p) const;
-  IntRange<I> line_range(const Point2<I>& q, const Point2<I>& v) const;
+  LineRange<I> line_range(const Point2<I>& q, const Point2<I>& v) const;
   /// For q in K: the largest k >= 0 with q + k v in K.
   I last_inside(const Point2<I>& q, const Point2<I>& v) const;
   /// For q not in K: the least k >= 1 with q + k v in K, if any.
@@ -101,7 +101,7 @@ struct PolygonBody {
   Point2<I> u{I(0), I(1)};
   I tlo{0}, thi{-1};
   bool contains(const Point2<I>& p) const;
-  IntRange<I> line_range(const Point2<I>& q, const Point2<I>& v) const;
+  LineRange<I> line_range(const Point2<I>& q, const Point2<I>& v) const;
   I last_inside(const Point2<I>& q, const Point2<I>& v) const { return line_range(q, v)->second; }
   std::optional<I> first_inside(const Point2<I>& q, const Point2<I>& v) const {
     auto r = line_range(q, v);

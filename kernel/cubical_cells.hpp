@@ -19,8 +19,8 @@
 // entry that the Khalimsky coordinates of their box fit (|z| <= kMaxVoxelCoordinate).
 #pragma once
 
-#include "arith/error.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/box.hpp>
 
 #include <array>
 #include <cstddef>
@@ -33,7 +33,6 @@ namespace zdg {
 /// A point of Z^3 in Khalimsky coordinates (a cell of any dimension).
 using KPoint = Point3<std::int64_t>;
 /// A digital point of Z^3 (a voxel in ordinary coordinates).
-using Voxel = Point3<std::int64_t>;
 
 /// Largest absolute voxel coordinate accepted by the cell algorithms (2 z + 1 and the
 /// offsets added to it then stay far inside int64).

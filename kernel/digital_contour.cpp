@@ -1,7 +1,7 @@
-#include "kernel/digital_contour.hpp"
+#include <zdg/kernel/digital_contour.hpp>
 
-#include "arith/error.hpp"
-#include "arith/integer.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/integer.hpp>
 
 #include <algorithm>
 #include <set>

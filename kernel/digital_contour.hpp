@@ -17,8 +17,8 @@
 // Integer width: coordinates are int64_t; the shoelace sums use checked Int128.
 #pragma once
 
-#include "kernel/gauss_digitization.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/point.hpp>
+#include <zdg/kernel/gauss_digitization.hpp>
 
 #include <cstdint>
 #include <vector>

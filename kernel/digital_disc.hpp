@@ -8,8 +8,8 @@
 // so they are exact for rho <= 1e8 (dy^2 + dx^2 < 2^63); larger radii are refused.
 #pragma once
 
-#include "arith/error.hpp"
-#include "kernel/gauss_digitization.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/gauss_digitization.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "kernel/digital_surface.hpp"
+#include <zdg/kernel/digital_surface.hpp>
 
 #include <algorithm>
 #include <string>

@@ -24,7 +24,7 @@
 // at entry (|coordinate| <= 2^40, InvalidArgument past it).
 #pragma once
 
-#include "kernel/cubical_cells.hpp"
+#include <zdg/kernel/cubical_cells.hpp>
 
 #include <array>
 #include <cstddef>

@@ -10,11 +10,11 @@
 // bounds; results are on Int64.
 #pragma once
 
-#include "arith/error.hpp"
-#include "arith/integer.hpp"
-#include "kernel/lattice_hull_2d.hpp"
-#include "kernel/lattice_hull_3d.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/box.hpp>
+#include <zdg/kernel/lattice_hull_2d.hpp>
+#include <zdg/kernel/lattice_hull_3d.hpp>
 
 #include <cstdint>
 #include <string>
@@ -22,24 +22,17 @@
 
 namespace zdg {
 
-struct Box2 {
-  std::int64_t x0, y0, x1, y1; // inclusive
-};
-struct Box3 {
-  std::int64_t x0, y0, z0, x1, y1, z1; // inclusive
-};
-
 /// Hull vertices (counterclockwise from the lowest-then-leftmost) of the points (x, y) of the
 /// box with inside(x, y) true.
 template <class Inside>
 std::vector<Point2<Int64>> digitized_shape_hull_2d(const Box2& box, Inside&& inside) {
-  if (box.x0 > box.x1 || box.y0 > box.y1) return {};
+  if (box.lo.x > box.hi.x || box.lo.y > box.hi.y) return {};
   std::vector<Point2<Int64>> ext;
-  for (std::int64_t x = box.x0; x <= box.x1; ++x) {
-    std::int64_t lo = box.y0;
-    while (lo <= box.y1 && !inside(x, lo)) ++lo;
-    if (lo > box.y1) continue;
-    std::int64_t hi = box.y1;
+  for (std::int64_t x = box.lo.x; x <= box.hi.x; ++x) {
+    std::int64_t lo = box.lo.y;
+    while (lo <= box.hi.y && !inside(x, lo)) ++lo;
+    if (lo > box.hi.y) continue;
+    std::int64_t hi = box.hi.y;
     while (hi > lo && !inside(x, hi)) --hi;
     ext.push_back({x, lo});
     if (hi != lo) ext.push_back({x, hi});
@@ -51,13 +44,13 @@ std::vector<Point2<Int64>> digitized_shape_hull_2d(const Box2& box, Inside&& ins
 template <class Inside>
 LatticeHull3d<Int64> digitized_shape_hull_3d(const Box3& box, Inside&& inside) {
   std::vector<Point3<Int64>> ext;
-  if (box.x0 <= box.x1 && box.y0 <= box.y1 && box.z0 <= box.z1) {
-    for (std::int64_t x = box.x0; x <= box.x1; ++x) {
-      for (std::int64_t y = box.y0; y <= box.y1; ++y) {
-        std::int64_t lo = box.z0;
-        while (lo <= box.z1 && !inside(x, y, lo)) ++lo;
-        if (lo > box.z1) continue;
-        std::int64_t hi = box.z1;
+  if (box.lo.x <= box.hi.x && box.lo.y <= box.hi.y && box.lo.z <= box.hi.z) {
+    for (std::int64_t x = box.lo.x; x <= box.hi.x; ++x) {
+      for (std::int64_t y = box.lo.y; y <= box.hi.y; ++y) {
+        std::int64_t lo = box.lo.z;
+        while (lo <= box.hi.z && !inside(x, y, lo)) ++lo;
+        if (lo > box.hi.z) continue;
+        std::int64_t hi = box.hi.z;
         while (hi > lo && !inside(x, y, hi)) --hi;
         ext.push_back({x, y, lo});
         if (hi != lo) ext.push_back({x, y, hi});

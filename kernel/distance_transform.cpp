@@ -1,6 +1,6 @@
-#include "kernel/distance_transform.hpp"
+#include <zdg/kernel/distance_transform.hpp>
 
-#include "kernel/separable_engine.hpp"
+#include <zdg/kernel/separable_engine.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -73,10 +73,10 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
     detail::separable_envelope<V>(dom, opt, shape.values().data(), f.data(), inf, nullptr);
     T* o = out.values().data();
     const V* fp = f.data();
-    detail::parallel_chunks(dom.size(), detail::resolve_threads(opt.threads, dom.size()),
-                            [&](std::int64_t b, std::int64_t e) {
-                              for (std::int64_t i = b; i < e; ++i) o[i] = convert_value<T>(fp[i]);
-                            });
+    parallel_chunks(dom.size(), detail::resolve_threads(opt.threads, dom.size()),
+                    [&](std::int64_t b, std::int64_t e) {
+                      for (std::int64_t i = b; i < e; ++i) o[i] = convert_value<T>(fp[i]);
+                    });
   });
   return out;
 }

@@ -16,9 +16,9 @@
 // intermediates need. An image without background is an InvalidArgument.
 #pragma once
 
-#include "arith/integer.hpp"
-#include "kernel/image.hpp"
-#include "kernel/lp_metric.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/lp_metric.hpp>
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
-#include "kernel/freeman_chain.hpp"
+#include <zdg/kernel/freeman_chain.hpp>
 
-#include "arith/error.hpp"
-#include "arith/integer.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/integer.hpp>
 
 #include <cctype>
 #include <sstream>

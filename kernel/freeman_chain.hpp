@@ -7,7 +7,7 @@
 // Source: Freeman, On the encoding of arbitrary geometric configurations, IRE Trans. 1961.
 #pragma once
 
-#include "kernel/point.hpp"
+#include <zdg/arith/point.hpp>
 
 #include <cstdint>
 #include <span>

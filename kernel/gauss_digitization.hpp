@@ -9,22 +9,12 @@
 // of queries behind one virtual call (the integral-invariant hot loop).
 #pragma once
 
-#include "kernel/point.hpp"
+#include <zdg/kernel/box.hpp>
 
 #include <cstdint>
 #include <span>
 
 namespace zdg {
-
-using Pixel = Point2<std::int64_t>;
-
-/// Inclusive box [lo, hi] of Z^2.
-struct Box2 {
-  Pixel lo, hi;
-  bool contains(const Pixel& p) const {
-    return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y;
-  }
-};
 
 class GaussDigitization2 {
 public:

@@ -9,7 +9,7 @@
 // Image<T> is a Domain plus one value of type T per point (a std::vector<T> in C order).
 #pragma once
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <cstdint>
 #include <span>

@@ -1,4 +1,4 @@
-#include "kernel/lattice_hull_2d.hpp"
+#include <zdg/kernel/lattice_hull_2d.hpp>
 
 #include <algorithm>
 #include <array>

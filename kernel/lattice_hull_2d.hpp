@@ -15,9 +15,9 @@
 // (Int64 -> Int128 -> BigInt on OverflowError), so every coordinate size works.
 #pragma once
 
-#include "arith/escalate.hpp"
-#include "arith/integer.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/point.hpp>
 
 #include <cstddef>
 #include <span>

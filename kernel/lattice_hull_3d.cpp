@@ -1,6 +1,6 @@
-#include "kernel/lattice_hull_3d.hpp"
+#include <zdg/kernel/lattice_hull_3d.hpp>
 
-#include "kernel/lattice_hull_2d.hpp"
+#include <zdg/kernel/lattice_hull_2d.hpp>
 
 #include <algorithm>
 #include <array>
@@ -12,18 +12,6 @@ namespace zdg {
 
 namespace {
 
-template <TowerInt I>
-Point3<I> sub(const Point3<I>& a, const Point3<I>& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-template <TowerInt I>
-Point3<I> cross(const Point3<I>& a, const Point3<I>& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-template <TowerInt I>
-I dot(const Point3<I>& a, const Point3<I>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
 template <TowerInt I>
 bool is_zero(const Point3<I>& a) {
   return a.x == 0 && a.y == 0 && a.z == 0;
@@ -105,7 +93,7 @@ public:
     if (i1 < 0) return finish_point(out);
     Point3<I> nrm;
     for (int i = 1; i < n && i2 < 0; ++i) {
-      auto c = cross(sub(p_[i1], p_[0]), sub(p_[i], p_[0]));
+      auto c = cross((p_[i1] - p_[0]), (p_[i] - p_[0]));
       if (!is_zero(c)) {
         i2 = i;
         nrm = c;
@@ -113,7 +101,7 @@ public:
     }
     if (i2 < 0) return finish_segment(out);
     for (int i = 1; i < n && i3 < 0; ++i) {
-      if (dot(nrm, sub(p_[i], p_[0])) != 0) i3 = i;
+      if (dot(nrm, (p_[i] - p_[0])) != 0) i3 = i;
     }
     if (i3 < 0) return finish_planar(out, nrm);
     build({0, i1, i2, i3});
@@ -130,7 +118,7 @@ private:
     Face<I> f;
     f.v = {a, b, c};
     f.nb = {-1, -1, -1};
-    f.n = cross(sub(p_[b], p_[a]), sub(p_[c], p_[a]));
+    f.n = cross((p_[b] - p_[a]), (p_[c] - p_[a]));
     f.off = dot(f.n, p_[a]);
     f_.push_back(std::move(f));
     mark_.push_back(0);
@@ -141,7 +129,7 @@ private:
   void build(std::array<int, 4> s) {
     // Orient the tetrahedron so that the fourth point is below the first face.
     auto [a, b, c, d] = s;
-    if (dot(cross(sub(p_[b], p_[a]), sub(p_[c], p_[a])), sub(p_[d], p_[a])) > 0) std::swap(b, c);
+    if (dot(cross((p_[b] - p_[a]), (p_[c] - p_[a])), (p_[d] - p_[a])) > 0) std::swap(b, c);
     int f0 = add_face(a, b, c), f1 = add_face(a, d, b), f2 = add_face(b, d, c),
         f3 = add_face(c, d, a);
     link_all({f0, f1, f2, f3});
@@ -365,7 +353,7 @@ private:
         const auto& a = p_[cyc[(i + k - 1) % k]];
         const auto& b = p_[cyc[i]];
         const auto& c = p_[cyc[(i + 1) % k]];
-        if (!is_zero(cross(sub(b, a), sub(c, b)))) poly.push_back(cyc[i]);
+        if (!is_zero(cross((b - a), (c - b)))) poly.push_back(cyc[i]);
       }
       polys.push_back(poly);
       norms.push_back(primitive(f_[r].n));
@@ -386,7 +374,7 @@ private:
       }
       const auto& poly = polys[fi];
       for (std::size_t j = 1; j + 1 < poly.size(); ++j) {
-        vol += dot(sub(p_[poly[0]], o), cross(sub(p_[poly[j]], o), sub(p_[poly[j + 1]], o)));
+        vol += dot((p_[poly[0]] - o), cross((p_[poly[j]] - o), (p_[poly[j + 1]] - o)));
       }
       out.facets.push_back(std::move(f));
       out.normals.push_back(norms[fi]);
@@ -449,7 +437,7 @@ I lattice_points_in_hull_3d(const LatticeHull3d<I>& h) {
   if (h.dimension < 0) return I(0);
   if (h.dimension == 0) return I(1);
   if (h.dimension == 1) {
-    auto d = sub(h.vertices[1], h.vertices[0]);
+    auto d = (h.vertices[1] - h.vertices[0]);
     return gcd(gcd(d.x, d.y), d.z) + 1;
   }
   I lo_x = h.vertices[0].x, hi_x = lo_x, lo_y = h.vertices[0].y, hi_y = lo_y;
@@ -476,7 +464,7 @@ I lattice_points_in_hull_3d(const LatticeHull3d<I>& h) {
       for (std::size_t i = 0; i < f.size(); ++i) {
         const auto& a = h.vertices[f[i]];
         const auto& b = h.vertices[f[(i + 1) % f.size()]];
-        if (dot(cross(sub(b, a), sub(p, a)), n) < 0) return false;
+        if (dot(cross((b - a), (p - a)), n) < 0) return false;
       }
       return true;
     };

@@ -22,9 +22,9 @@
 //   The lattice point count scans the xy-columns of the bounding box: O(X Y F).
 #pragma once
 
-#include "arith/escalate.hpp"
-#include "arith/integer.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/point.hpp>
 
 #include <cstddef>
 #include <span>

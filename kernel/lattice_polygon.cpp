@@ -1,6 +1,6 @@
-#include "kernel/lattice_polygon.hpp"
+#include <zdg/kernel/lattice_polygon.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <utility>
 

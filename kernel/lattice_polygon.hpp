@@ -16,9 +16,9 @@
 // 2^30; lattice_polygon_measures_exact() escalates to Int128 and BigInt on overflow.
 #pragma once
 
-#include "arith/escalate.hpp"
-#include "arith/integer.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/point.hpp>
 
 #include <span>
 

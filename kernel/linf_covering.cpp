@@ -1,6 +1,6 @@
-#include "kernel/linf_covering.hpp"
+#include <zdg/kernel/linf_covering.hpp>
 
-#include "kernel/separable_engine.hpp"
+#include <zdg/kernel/separable_engine.hpp>
 
 #include <deque>
 

@@ -12,8 +12,8 @@
 // reverse_distance_transform (union of the cubes: R > 0) and reduced_medial_axis for l_inf.
 #pragma once
 
-#include "kernel/image.hpp"
-#include "kernel/lp_metric.hpp"
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/lp_metric.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -6,8 +6,8 @@
 // extent n the coordinate difference is the periodic one, min(|t| mod n, n - |t| mod n).
 #pragma once
 
-#include "arith/error.hpp"
-#include "arith/integer.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/integer.hpp>
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
-#include "kernel/maximal_segments.hpp"
+#include <zdg/kernel/maximal_segments.hpp>
 
-#include "arith/escalate.hpp"
+#include <zdg/arith/escalate.hpp>
 
 #include <sstream>
 
@@ -42,7 +42,7 @@ public:
   Walker(std::span<const P> pts, Connectivity c)
       : pts_(pts), n_(static_cast<std::int64_t>(pts.size())), rec_(at(0), c) {}
 
-  LatticePoint<I> at(std::int64_t k) const {
+  Point2<I> at(std::int64_t k) const {
     std::int64_t m = k % n_;
     if (m < 0) m += n_;
     const P& p = pts_[static_cast<std::size_t>(m)];

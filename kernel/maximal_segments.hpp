@@ -42,9 +42,9 @@
 // estimation on digital contours, Image Vis. Comput. 25(10), 2007.
 #pragma once
 
-#include "arith/dss_recognizer.hpp"
-#include "arith/integer.hpp"
-#include "kernel/point.hpp"
+#include <zdg/arith/dss_recognizer.hpp>
+#include <zdg/arith/integer.hpp>
+#include <zdg/arith/point.hpp>
 
 #include <cstddef>
 #include <cstdint>

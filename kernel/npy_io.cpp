@@ -1,6 +1,6 @@
-#include "kernel/npy_io.hpp"
+#include <zdg/kernel/npy_io.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <cstdio>
 #include <cstring>

@@ -6,7 +6,7 @@
 // goes to a temporary file in the same directory, then renamed over the target.
 #pragma once
 
-#include "kernel/image.hpp"
+#include <zdg/kernel/image.hpp>
 
 #include <cstdint>
 #include <string>

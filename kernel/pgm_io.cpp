@@ -1,6 +1,6 @@
-#include "kernel/pgm_io.hpp"
+#include <zdg/kernel/pgm_io.hpp>
 
-#include "kernel/npy_io.hpp"
+#include <zdg/kernel/npy_io.hpp>
 
 #include <algorithm>
 #include <fstream>

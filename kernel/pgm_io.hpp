@@ -5,7 +5,7 @@
 // above 65535 are InvalidArgument.
 #pragma once
 
-#include "kernel/image.hpp"
+#include <zdg/kernel/image.hpp>
 
 #include <cstdint>
 #include <string>

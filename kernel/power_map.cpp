@@ -1,6 +1,6 @@
-#include "kernel/power_map.hpp"
+#include <zdg/kernel/power_map.hpp>
 
-#include "kernel/separable_engine.hpp"
+#include <zdg/kernel/separable_engine.hpp>
 
 #include <string>
 

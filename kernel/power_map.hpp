@@ -15,9 +15,9 @@
 // InvalidArgument.
 #pragma once
 
-#include "arith/integer.hpp"
-#include "kernel/image.hpp"
-#include "kernel/lp_metric.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/lp_metric.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -1,9 +1,9 @@
-#include "kernel/reduced_medial_axis.hpp"
+#include <zdg/kernel/reduced_medial_axis.hpp>
 
-#include "kernel/distance_transform.hpp"
-#include "kernel/linf_covering.hpp"
-#include "kernel/power_map.hpp"
-#include "kernel/separable_engine.hpp"
+#include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/linf_covering.hpp>
+#include <zdg/kernel/power_map.hpp>
+#include <zdg/kernel/separable_engine.hpp>
 
 namespace zdg {
 

@@ -16,8 +16,8 @@
 // (p huge) is an OverflowError.
 #pragma once
 
-#include "kernel/image.hpp"
-#include "kernel/lp_metric.hpp"
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/lp_metric.hpp>
 
 #include <cstdint>
 #include <vector>

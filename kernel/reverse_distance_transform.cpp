@@ -1,8 +1,8 @@
-#include "kernel/reverse_distance_transform.hpp"
+#include <zdg/kernel/reverse_distance_transform.hpp>
 
-#include "kernel/linf_covering.hpp"
-#include "kernel/power_map.hpp"
-#include "kernel/separable_engine.hpp"
+#include <zdg/kernel/linf_covering.hpp>
+#include <zdg/kernel/power_map.hpp>
+#include <zdg/kernel/separable_engine.hpp>
 
 #include <algorithm>
 

@@ -12,8 +12,8 @@
 // Negative values: InvalidArgument; an image without any ball gives the empty set.
 #pragma once
 
-#include "kernel/image.hpp"
-#include "kernel/lp_metric.hpp"
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/lp_metric.hpp>
 
 #include <cstdint>
 

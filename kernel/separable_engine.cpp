@@ -1,4 +1,4 @@
-#include "kernel/separable_engine.hpp"
+#include <zdg/kernel/separable_engine.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -373,10 +373,8 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
 } // namespace
 
 unsigned resolve_threads(unsigned requested, std::int64_t n) {
-  unsigned t = requested;
-  if (t == 0) t = std::max(1u, std::thread::hardware_concurrency());
-  if (n < (std::int64_t{1} << 15)) t = 1;
-  return t;
+  // Below 2^15 points a thread costs more than it saves.
+  return n < (std::int64_t{1} << 15) ? 1u : worker_count(requested, n);
 }
 
 EnvelopeBounds envelope_bounds(const Domain& dom, const TransformOptions& opt,

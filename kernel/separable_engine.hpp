@@ -28,9 +28,10 @@
 // when need < 2^31, int64, __int128, and GMP integers past that: exact for every input.
 #pragma once
 
-#include "arith/integer.hpp"
-#include "kernel/image.hpp"
-#include "kernel/lp_metric.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/lp_metric.hpp>
+#include <zdg/kernel/parallel_for.hpp>
 
 #include <cstdint>
 #include <type_traits>
@@ -90,10 +91,6 @@ BigInt engine_to_bigint(const V& v) {
   }
 }
 
-/// Splits [0, n) into contiguous chunks over `threads` workers: fn(begin, end).
-template <class Fn>
-void parallel_chunks(std::int64_t n, unsigned threads, Fn&& fn);
-
 #define ZDG_ENGINE_EXTERN(V)                                                                       \
   extern template V envelope_infinity<V>(const EnvelopeBounds&);                                   \
   extern template void separable_envelope<V>(const Domain&, const TransformOptions&,               \
@@ -104,28 +101,5 @@ ZDG_ENGINE_EXTERN(std::int64_t)
 ZDG_ENGINE_EXTERN(int128_t)
 ZDG_ENGINE_EXTERN(BigInt)
 #undef ZDG_ENGINE_EXTERN
-
-} // namespace zdg::detail
-
-#include <thread>
-
-namespace zdg::detail {
-
-template <class Fn>
-void parallel_chunks(std::int64_t n, unsigned threads, Fn&& fn) {
-  if (n <= 0) return;
-  std::int64_t t = std::min<std::int64_t>(threads == 0 ? 1 : threads, n);
-  if (t <= 1) {
-    fn(std::int64_t{0}, n);
-    return;
-  }
-  std::vector<std::thread> pool;
-  pool.reserve(static_cast<std::size_t>(t - 1));
-  for (std::int64_t k = 1; k < t; ++k) {
-    pool.emplace_back([&, k] { fn(n * k / t, n * (k + 1) / t); });
-  }
-  fn(std::int64_t{0}, n / t);
-  for (auto& th : pool) th.join();
-}
 
 } // namespace zdg::detail

@@ -1,6 +1,6 @@
-#include "kernel/vol_io.hpp"
+#include <zdg/kernel/vol_io.hpp>
 
-#include "kernel/npy_io.hpp"
+#include <zdg/kernel/npy_io.hpp>
 
 #include <fstream>
 #include <iterator>

@@ -6,7 +6,7 @@
 // truncated or malformed files are IoError naming the file and the line; writing is atomic.
 #pragma once
 
-#include "kernel/image.hpp"
+#include <zdg/kernel/image.hpp>
 
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
-#include "kernel/voronoi_map.hpp"
+#include <zdg/kernel/voronoi_map.hpp>
 
-#include "kernel/distance_transform.hpp"
-#include "kernel/separable_engine.hpp"
+#include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/separable_engine.hpp>
 
 namespace zdg {
 

@@ -12,8 +12,8 @@
 // transform. No background: InvalidArgument.
 #pragma once
 
-#include "kernel/image.hpp"
-#include "kernel/lp_metric.hpp"
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/lp_metric.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -1,11 +1,11 @@
 // zdg cf, zdg christoffel, zdg floor-sum: the arithmetic core on the command line. Every
 // number is read as a BigInt and the work is done "exact by escalation" (int64 first).
-#include "arith/christoffel.hpp"
-#include "arith/continued_fraction.hpp"
-#include "arith/escalate.hpp"
-#include "arith/floor_sum.hpp"
-#include "arith/stern_brocot.hpp"
-#include "convergence/cli/commands.hpp"
+#include <zdg/arith/christoffel.hpp>
+#include <zdg/arith/continued_fraction.hpp>
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/floor_sum.hpp>
+#include <zdg/arith/stern_brocot.hpp>
+#include <zdg/convergence/cli/commands.hpp>
 
 #include <iostream>
 #include <string>

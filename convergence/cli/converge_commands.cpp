@@ -10,11 +10,11 @@
 // Outputs in DIR: results.csv, summary.json (fits, verdicts, provenance), convergence.png
 // and .svg (papers/plot_convergence.py, run with /usr/bin/python3). Exit status 1 when a
 // theory check fails, 2 for bad input.
-#include "arith/error.hpp"
-#include "convergence/cli/commands.hpp"
-#include "convergence/estimator.hpp"
-#include "convergence/experiment.hpp"
-#include "convergence/shape.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/cli/commands.hpp>
+#include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/experiment.hpp>
+#include <zdg/convergence/shape.hpp>
 
 #include <toml++/toml.h>
 

@@ -2,12 +2,12 @@
 // Input files hold one point "x y" per line (blank lines and lines starting with '#' are
 // skipped) or, on their first data line, a Freeman chain "x0 y0 0123...". Integers are read
 // exactly; errors name the file and line and exit with status 2.
-#include "arith/dsl_subsegment.hpp"
-#include "arith/dss_recognizer.hpp"
-#include "arith/escalate.hpp"
-#include "convergence/cli/commands.hpp"
-#include "kernel/freeman_chain.hpp"
-#include "kernel/maximal_segments.hpp"
+#include <zdg/arith/dsl_subsegment.hpp>
+#include <zdg/arith/dss_recognizer.hpp>
+#include <zdg/arith/escalate.hpp>
+#include <zdg/convergence/cli/commands.hpp>
+#include <zdg/kernel/freeman_chain.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
 
 #include <fstream>
 #include <iostream>
@@ -21,7 +21,7 @@ namespace zdg::cli {
 namespace {
 
 struct PointFile {
-  std::vector<LatticePoint<BigInt>> pts;
+  std::vector<Point2<BigInt>> pts;
   std::vector<std::size_t> lines; // line number of each point (the chain's line for all)
   bool freeman = false;
 };
@@ -63,7 +63,7 @@ PointFile read_points(const std::string& path) {
     if (t.size() != 2) {
       throw InvalidArgument(where + "expected a point 'x y', got '" + line + "'");
     }
-    LatticePoint<BigInt> p;
+    Point2<BigInt> p;
     try {
       p = {parse_integer<BigInt>(t[0]), parse_integer<BigInt>(t[1])};
     } catch (const Error&) {
@@ -76,7 +76,7 @@ PointFile read_points(const std::string& path) {
   return f;
 }
 
-std::string show(const LatticePoint<BigInt>& p) {
+std::string show(const Point2<BigInt>& p) {
   return "(" + p.x.str() + ", " + p.y.str() + ")";
 }
 

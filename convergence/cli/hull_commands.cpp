@@ -1,13 +1,13 @@
 // zdg hull points|disc|ellipse|halfplanes: lattice convex hulls on the command line.
 // Numbers are read as BigInt (integers) or BigInt rationals ("7", "-3/4", "1000.5") and the
 // work runs exact by escalation (int64 first).
-#include "arith/escalate.hpp"
-#include "arith/rational.hpp"
-#include "convergence/cli/commands.hpp"
-#include "kernel/convex_body_hull.hpp"
-#include "kernel/lattice_hull_2d.hpp"
-#include "kernel/lattice_hull_3d.hpp"
-#include "kernel/lattice_polygon.hpp"
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/rational.hpp>
+#include <zdg/convergence/cli/commands.hpp>
+#include <zdg/kernel/convex_body_hull.hpp>
+#include <zdg/kernel/lattice_hull_2d.hpp>
+#include <zdg/kernel/lattice_hull_3d.hpp>
+#include <zdg/kernel/lattice_polygon.hpp>
 
 #include <fstream>
 #include <iostream>

@@ -1,6 +1,6 @@
 // zdg: the command line of the zdg kernel. See convergence/cli/commands.hpp.
-#include "arith/error.hpp"
-#include "convergence/cli/commands.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/cli/commands.hpp>
 
 #include <fmt/core.h>
 

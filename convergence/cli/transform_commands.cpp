@@ -1,17 +1,17 @@
 // zdg transform dt|voronoi|power|rdt|rma: the separable exact l_p transforms on images read
 // from .npy (any dimension), .pgm (2D) or .vol (3D); results written atomically (temporary
 // file, then rename), never over the input.
-#include "arith/error.hpp"
-#include "convergence/cli/commands.hpp"
-#include "kernel/distance_transform.hpp"
-#include "kernel/npy_io.hpp"
-#include "kernel/pgm_io.hpp"
-#include "kernel/power_map.hpp"
-#include "kernel/reduced_medial_axis.hpp"
-#include "kernel/reverse_distance_transform.hpp"
-#include "kernel/separable_engine.hpp"
-#include "kernel/vol_io.hpp"
-#include "kernel/voronoi_map.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/cli/commands.hpp>
+#include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/npy_io.hpp>
+#include <zdg/kernel/pgm_io.hpp>
+#include <zdg/kernel/power_map.hpp>
+#include <zdg/kernel/reduced_medial_axis.hpp>
+#include <zdg/kernel/reverse_distance_transform.hpp>
+#include <zdg/kernel/separable_engine.hpp>
+#include <zdg/kernel/vol_io.hpp>
+#include <zdg/kernel/voronoi_map.hpp>
 
 #include <chrono>
 #include <filesystem>

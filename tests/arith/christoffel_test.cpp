@@ -1,7 +1,7 @@
 // Christoffel words: the prefix-count convention, palindromic centre, reverse, balance,
 // Lyndon property, standard factorization, conjugates.
-#include "arith/christoffel.hpp"
-#include "arith/escalate.hpp"
+#include <zdg/arith/christoffel.hpp>
+#include <zdg/arith/escalate.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,5 +1,5 @@
 // Continued fractions: round trip, canonical form, convergent determinants, worked examples.
-#include "arith/continued_fraction.hpp"
+#include <zdg/arith/continued_fraction.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,11 +1,11 @@
 // Digital straight lines: membership and the point queries against the definition
 // mu <= a x - b y < mu + omega, iteration, leaning points, the Christoffel word of a period,
 // and the recognizer's minimal characteristics of a full period (every tower type).
-#include "arith/digital_straight_line.hpp"
+#include <zdg/arith/digital_straight_line.hpp>
 
-#include "arith/christoffel.hpp"
-#include "arith/dss_recognizer.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/arith/christoffel.hpp>
+#include <zdg/arith/dss_recognizer.hpp>
 
 #include <cstdint>
 #include <numeric>
@@ -91,7 +91,7 @@ TYPED_TEST(DigitalStraightLineTest, IterationLeaningPointsAndChristoffelWord) {
       }
     }
     // One period brings the upper leaning point to the next one: u + (b, a).
-    RC_ASSERT(pts.back() == (LatticePoint<I>{u.x + line.b(), u.y + line.a()}));
+    RC_ASSERT(pts.back() == (Point2<I>{u.x + line.b(), u.y + line.a()}));
     I p = line.remainder({I(s0.x), I(s0.y)}), q = -line.remainder({I(s1.x), I(s1.y)});
     RC_ASSERT(p >= 0 && q >= 0 && p + q == line.omega());
     std::string w = line.period_word();
@@ -118,7 +118,7 @@ TEST(DigitalStraightLine, FirstQuadrantWordsAreChristoffelWordsOfTheSlope) {
   EXPECT_EQ(standard.period_word(), lower_christoffel_word(Int64(3), Int64(8)));
   EXPECT_EQ(naive.period_word(), lower_christoffel_word(Int64(3), Int64(5)));
   EXPECT_EQ(naive.period_word(), "00100101");
-  EXPECT_EQ(naive.point_at_abscissa(5), (LatticePoint<Int64>{5, 1}));
+  EXPECT_EQ(naive.point_at_abscissa(5), (Point2<Int64>{5, 1}));
 }
 
 TEST(DigitalStraightLine, RejectsBadParameters) {

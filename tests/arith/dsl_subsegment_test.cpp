@@ -2,10 +2,10 @@
 // floor-sum searches agree with each other and with DSS recognition of the enumerated points
 // (itself checked against brute force), on every tower type, for small values and for values
 // near 2^62; the answer does not depend on how the line is written (non-reduced a, b).
-#include "arith/dsl_subsegment.hpp"
+#include <zdg/arith/dsl_subsegment.hpp>
 
-#include "arith/dss_recognizer.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/arith/dss_recognizer.hpp>
 
 #include <algorithm>
 #include <cstdint>

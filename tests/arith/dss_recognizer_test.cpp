@@ -1,9 +1,9 @@
 // Online DSS recognition (Debled-Rennesson and Reveilles 1995) against the brute-force oracle
 // of tests/support/dss_oracle.hpp, on every tower type: front and back extension, retraction
 // at both ends, translation invariance (huge offsets), octant symmetries, escalation.
-#include "arith/dss_recognizer.hpp"
+#include <zdg/arith/dss_recognizer.hpp>
 
-#include "arith/christoffel.hpp"
+#include <zdg/arith/christoffel.hpp>
 
 #include "tests/support/dss_oracle.hpp"
 #include "tests/support/tower.hpp"
@@ -17,7 +17,7 @@ namespace {
 
 using namespace zdg;
 using test::check_property;
-using BigPath = std::vector<LatticePoint<BigInt>>;
+using BigPath = std::vector<Point2<BigInt>>;
 
 struct RandomPath {
   Connectivity c;
@@ -67,7 +67,7 @@ RandomPath random_dss(std::int64_t offset_x, std::int64_t offset_y) {
 }
 
 template <TowerInt I>
-LatticePoint<I> to(const LatticePoint<BigInt>& p) {
+Point2<I> to(const Point2<BigInt>& p) {
   return {int_cast<I>(p.x), int_cast<I>(p.y)};
 }
 
@@ -240,7 +240,7 @@ TYPED_TEST(DssRecognizerTest, CharacteristicsFollowTheOctantSymmetries) {
         if (sym & 4) std::swap(x, y);
         if (sym & 1) x = -x;
         if (sym & 2) y = -y;
-        return LatticePoint<BigInt>{x, y};
+        return Point2<BigInt>{x, y};
       };
       DssRecognizer<I> r(to<I>(map(p.pts[0].x, p.pts[0].y)), p.c);
       for (std::size_t k = 1; k < p.pts.size(); ++k) {
@@ -261,7 +261,7 @@ TYPED_TEST(DssRecognizerTest, CharacteristicsFollowTheOctantSymmetries) {
 
 TEST(DssRecognizer, WorkedExampleSlopeThreeSevenths) {
   // y = floor(3 x / 7) for x = 0..19: the naive line 0 <= 3x - 7y < 7.
-  std::vector<LatticePoint<std::int64_t>> pts;
+  std::vector<Point2<std::int64_t>> pts;
   for (std::int64_t x = 0; x < 20; ++x) pts.push_back({x, (3 * x) / 7});
   auto r = recognize_dss(pts, Connectivity::eight);
   EXPECT_TRUE(r.is_dss);
@@ -275,12 +275,12 @@ TEST(DssRecognizer, WorkedExampleSlopeThreeSevenths) {
 
 TEST(DssRecognizer, StandardStaircase) {
   // Two periods of the lower Christoffel path of 2/5: the standard line 0 <= 2x - 5y < 7.
-  std::vector<LatticePoint<std::int64_t>> pts{{0, 0}};
+  std::vector<Point2<std::int64_t>> pts{{0, 0}};
   for (char ch :
        lower_christoffel_word(Int64(2), Int64(5)) + lower_christoffel_word(Int64(2), Int64(5))) {
     auto p = pts.back();
-    pts.push_back(ch == '0' ? LatticePoint<std::int64_t>{p.x + 1, p.y}
-                            : LatticePoint<std::int64_t>{p.x, p.y + 1});
+    pts.push_back(ch == '0' ? Point2<std::int64_t>{p.x + 1, p.y}
+                            : Point2<std::int64_t>{p.x, p.y + 1});
   }
   EXPECT_EQ(path_connectivity(pts), Connectivity::four);
   auto r = recognize_dss(pts, Connectivity::four);
@@ -295,14 +295,14 @@ TEST(DssRecognizer, NonAdjacentPointsAreRejected) {
   DssRecognizer<Int64> four({0, 0}, Connectivity::four);
   EXPECT_THROW(four.extend_front({1, 1}), InvalidArgument);
   EXPECT_EQ(four.size(), 1u);
-  std::vector<LatticePoint<std::int64_t>> bad{{0, 0}, {1, 0}, {3, 0}};
+  std::vector<Point2<std::int64_t>> bad{{0, 0}, {1, 0}, {3, 0}};
   EXPECT_THROW(path_connectivity(bad), InvalidArgument);
 }
 
 // Coordinates near 2^62 stay on int64 (local coordinates); mu itself needs 128 bits.
 TEST(DssRecognizer, HugeCoordinatesServeOnInt64) {
   const std::int64_t big = std::int64_t{1} << 62;
-  std::vector<LatticePoint<std::int64_t>> pts;
+  std::vector<Point2<std::int64_t>> pts;
   for (std::int64_t x = 0; x < 50; ++x) pts.push_back({big + x, big - 3 + (5 * x) / 11});
   auto r = recognize_dss(pts, Connectivity::eight);
   EXPECT_TRUE(r.is_dss);
@@ -313,7 +313,7 @@ TEST(DssRecognizer, HugeCoordinatesServeOnInt64) {
   // 5x - 11y is 0.
   EXPECT_EQ(r.characteristics.mu, BigInt(-6) * BigInt(big) + 33);
   // Points beyond int64 escalate.
-  std::vector<LatticePoint<BigInt>> huge;
+  std::vector<Point2<BigInt>> huge;
   BigInt h = BigInt(1) << 100;
   for (int x = 0; x < 10; ++x) huge.push_back({h + x, -h + x / 3});
   auto rh = recognize_dss(huge, Connectivity::eight);

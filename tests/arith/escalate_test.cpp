@@ -1,4 +1,4 @@
-#include "arith/escalate.hpp"
+#include <zdg/arith/escalate.hpp>
 
 #include "tests/support/tower.hpp"
 

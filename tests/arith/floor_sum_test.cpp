@@ -1,5 +1,5 @@
 // floor_sum against the brute-force sum, for every sign, and at the int64 boundary.
-#include "arith/floor_sum.hpp"
+#include <zdg/arith/floor_sum.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,6 +1,6 @@
 // Checked arithmetic of the integer tower against BigInt, floor/ceil division, modulo,
 // gcd and Bezout, on every tower type.
-#include "arith/integer.hpp"
+#include <zdg/arith/integer.hpp>
 
 #include "tests/support/tower.hpp"
 

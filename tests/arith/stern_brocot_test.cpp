@@ -1,5 +1,5 @@
 // The Stern-Brocot tree: parents, depth, path, following a path.
-#include "arith/stern_brocot.hpp"
+#include <zdg/arith/stern_brocot.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,7 +1,7 @@
 // Uses the installed zdg: a continued fraction computed exactly by escalation.
-#include <arith/continued_fraction.hpp>
-#include <arith/escalate.hpp>
-#include <arith/floor_sum.hpp>
+#include <zdg/arith/continued_fraction.hpp>
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/floor_sum.hpp>
 
 #include <iostream>
 

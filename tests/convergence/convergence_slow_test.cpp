@@ -1,7 +1,7 @@
 // Slow sweeps (label "slow"): the fitted l_inf slopes of the 2D estimators over finer grid
 // steps and random translations meet their proven rates (THEORY.md) on the finest levels.
-#include "convergence/experiment.hpp"
 #include "tests/support/experiments.hpp"
+#include <zdg/convergence/experiment.hpp>
 
 #include <gtest/gtest.h>
 

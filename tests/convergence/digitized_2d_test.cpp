@@ -1,7 +1,7 @@
-#include "convergence/digitized_2d.hpp"
+#include <zdg/convergence/digitized_2d.hpp>
 
-#include "convergence/shape.hpp"
-#include "estimators/ii_curvature.hpp"
+#include <zdg/convergence/shape.hpp>
+#include <zdg/estimators/ii_curvature.hpp>
 
 #include <gtest/gtest.h>
 

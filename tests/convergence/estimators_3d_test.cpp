@@ -1,9 +1,9 @@
 // The 3D estimators of the registry and the Hausdorff estimators, through the driver.
-#include "arith/error.hpp"
-#include "convergence/digitized_3d.hpp"
-#include "convergence/experiment.hpp"
-#include "convergence/theory.hpp"
-#include "estimators/hausdorff.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/digitized_3d.hpp>
+#include <zdg/convergence/experiment.hpp>
+#include <zdg/convergence/theory.hpp>
+#include <zdg/estimators/hausdorff.hpp>
 
 #include "tests/support/experiments.hpp"
 

@@ -1,8 +1,8 @@
-#include "convergence/experiment.hpp"
+#include <zdg/convergence/experiment.hpp>
 
-#include "arith/error.hpp"
-#include "convergence/theory.hpp"
 #include "tests/support/experiments.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/convergence/theory.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "convergence/shapes_2d.hpp"
+#include <zdg/convergence/shapes_2d.hpp>
 
-#include "arith/error.hpp"
-#include "kernel/digital_contour.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/digital_contour.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "convergence/shapes_3d.hpp"
+#include <zdg/convergence/shapes_3d.hpp>
 
-#include "arith/error.hpp"
-#include "estimators/gauss_volume.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/estimators/gauss_volume.hpp>
 
 #include <gtest/gtest.h>
 
@@ -23,9 +23,6 @@ std::unique_ptr<Shape3> shape3(const std::string& spec) {
   return std::unique_ptr<Shape3>(p);
 }
 
-double dot(P3 a, P3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
 double norm(P3 a) {
   return std::sqrt(dot(a, a));
 }

@@ -1,6 +1,6 @@
-#include "estimators/binomial_convolver.hpp"
+#include <zdg/estimators/binomial_convolver.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include "tests/support/digital_sets.hpp"
 

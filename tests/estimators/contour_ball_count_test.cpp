@@ -1,8 +1,8 @@
-#include "estimators/contour_ball_count.hpp"
+#include <zdg/estimators/contour_ball_count.hpp>
 
-#include "estimators/ii_curvature.hpp"
 #include "tests/support/digital_sets.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/estimators/ii_curvature.hpp>
 
 #include <gtest/gtest.h>
 

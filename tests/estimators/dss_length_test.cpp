@@ -1,9 +1,9 @@
 // DSS length: exact on digitized straight segments and lattice rectangles; O(h) on a convex
 // polygon.
-#include "estimators/dss_length.hpp"
+#include <zdg/estimators/dss_length.hpp>
 
-#include "arith/error.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <cmath>
 #include <numeric>

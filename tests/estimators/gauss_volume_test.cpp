@@ -1,4 +1,4 @@
-#include "estimators/gauss_volume.hpp"
+#include <zdg/estimators/gauss_volume.hpp>
 
 #include "tests/support/tower.hpp"
 

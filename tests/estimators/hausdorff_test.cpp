@@ -1,6 +1,6 @@
-#include "estimators/hausdorff.hpp"
+#include <zdg/estimators/hausdorff.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <gtest/gtest.h>
 

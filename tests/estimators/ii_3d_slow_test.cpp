@@ -1,6 +1,6 @@
 // The target case of the issue (sphere1 at h = 0.025, R = 3 h^{1/3}, r ~ 35 voxels, ~30,000
 // surfels), checked for accuracy and against the brute-force kernel on sampled surfels.
-#include "estimators/ii_3d.hpp"
+#include <zdg/estimators/ii_3d.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "estimators/ii_3d.hpp"
+#include <zdg/estimators/ii_3d.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,4 +1,4 @@
-#include "estimators/ii_curvature.hpp"
+#include <zdg/estimators/ii_curvature.hpp>
 
 #include "tests/support/tower.hpp"
 

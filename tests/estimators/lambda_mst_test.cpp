@@ -1,6 +1,6 @@
 // lambda-MST tangents: exact on digital straight lines, the weight function, convergence on
 // a digitized circle.
-#include "estimators/lambda_mst.hpp"
+#include <zdg/estimators/lambda_mst.hpp>
 
 #include "tests/support/contours.hpp"
 #include "tests/support/tower.hpp"

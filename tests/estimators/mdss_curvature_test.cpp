@@ -1,9 +1,9 @@
 // MDSS curvature: sign and order of magnitude on digitized circles, and the reason it is a
 // negative control: its error does not vanish as the resolution grows.
-#include "estimators/mdss_curvature.hpp"
+#include <zdg/estimators/mdss_curvature.hpp>
 
-#include "arith/error.hpp"
 #include "tests/support/contours.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "estimators/moments.hpp"
+#include <zdg/estimators/moments.hpp>
 
-#include "estimators/gauss_area.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/estimators/gauss_area.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // The long sweeps (label "slow"): the disc hull against enumeration for every radius up to
 // 400 at the origin and at the centre (1/2, 1/3), and every radius up to 40 in steps of 1/7
 // for a centre (2/7, -3/5); the count of vertices grows like r^{2/3} (Balog-Barany 1991).
-#include "kernel/convex_body_hull.hpp"
+#include <zdg/kernel/convex_body_hull.hpp>
 
-#include "kernel/lattice_hull_2d.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/kernel/lattice_hull_2d.hpp>
 
 #include <vector>
 

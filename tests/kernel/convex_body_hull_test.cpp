@@ -1,11 +1,11 @@
 // Output-sensitive hulls of Z^2 inside a disc, an ellipse and a polygon, against brute force:
 // enumerate the lattice points of the body's box with the body's own exact membership test,
 // then take their monotone-chain hull. Vertex lists must agree exactly (same order).
-#include "kernel/convex_body_hull.hpp"
+#include <zdg/kernel/convex_body_hull.hpp>
 
-#include "kernel/lattice_hull_2d.hpp"
-#include "kernel/lattice_polygon.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/kernel/lattice_hull_2d.hpp>
+#include <zdg/kernel/lattice_polygon.hpp>
 
 #include <cstdlib>
 #include <vector>

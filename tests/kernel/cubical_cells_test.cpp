@@ -1,4 +1,4 @@
-#include "kernel/cubical_cells.hpp"
+#include <zdg/kernel/cubical_cells.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,6 +1,6 @@
-#include "kernel/digital_contour.hpp"
+#include <zdg/kernel/digital_contour.hpp>
 
-#include "arith/error.hpp"
+#include <zdg/arith/error.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,4 +1,4 @@
-#include "kernel/digital_disc.hpp"
+#include <zdg/kernel/digital_disc.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,10 +1,10 @@
 // Hulls of digitized shapes: the Gauss digitization of a disc gives the output-sensitive disc
 // hull; of a ball, the hull of all its lattice points; of a non-convex shape (an annulus),
 // the hull of the brute-force point list.
-#include "kernel/digitized_shape_hull.hpp"
+#include <zdg/kernel/digitized_shape_hull.hpp>
 
-#include "kernel/convex_body_hull.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/kernel/convex_body_hull.hpp>
 
 #include <vector>
 
@@ -23,7 +23,7 @@ TEST(DigitizedShapeHull, DiscDigitizationMatchesTheDiscHull) {
       std::int64_t u = q * x - cx, v = q * y - cy;
       return u * u + v * v <= r * r;
     };
-    auto h = digitized_shape_hull_2d(Box2{-80, -80, 80, 80}, inside);
+    auto h = digitized_shape_hull_2d(Box2{{-80, -80}, {80, 80}}, inside);
     auto want =
         disc_hull<Int64>(Rational<Int64>(Int64(cx), Int64(q)), Rational<Int64>(Int64(cy), Int64(q)),
                          Rational<Int64>(Int64(r), Int64(q)));
@@ -42,9 +42,9 @@ TEST(DigitizedShapeHull, AnnulusHasTheHullOfItsPoints) {
       if (inside(x, y)) all.push_back({x, y});
     }
   }
-  EXPECT_EQ(digitized_shape_hull_2d(Box2{-12, -12, 12, 12}, inside),
+  EXPECT_EQ(digitized_shape_hull_2d(Box2{{-12, -12}, {12, 12}}, inside),
             lattice_hull_2d<Int64>(std::span<const Point2<Int64>>(all)));
-  EXPECT_TRUE(digitized_shape_hull_2d(Box2{0, 0, 3, 3}, [](std::int64_t, std::int64_t) {
+  EXPECT_TRUE(digitized_shape_hull_2d(Box2{{0, 0}, {3, 3}}, [](std::int64_t, std::int64_t) {
                 return false;
               }).empty());
 }
@@ -62,7 +62,7 @@ TEST(DigitizedShapeHull, BallDigitizationMatchesTheHullOfAllItsPoints) {
         }
       }
     }
-    auto a = digitized_shape_hull_3d(Box3{-8, -8, -8, 8, 8, 8}, inside);
+    auto a = digitized_shape_hull_3d(Box3{{-8, -8, -8}, {8, 8, 8}}, inside);
     auto b = lattice_hull_3d<Int64>(std::span<const Point3<Int64>>(all));
     EXPECT_EQ(a.vertices, b.vertices);
     EXPECT_EQ(a.facets, b.facets);

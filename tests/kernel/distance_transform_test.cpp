@@ -1,4 +1,4 @@
-#include "kernel/distance_transform.hpp"
+#include <zdg/kernel/distance_transform.hpp>
 
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"

@@ -1,8 +1,8 @@
 // Freeman chains: parsing with clear errors, points, round trip with freeman_chain_of.
-#include "kernel/freeman_chain.hpp"
+#include <zdg/kernel/freeman_chain.hpp>
 
-#include "arith/error.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/arith/error.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 // The exact 2D hull against gift wrapping (Jarvis march, an independent algorithm written
 // here on BigInt), degenerate sets, and coordinates near 2^62 (exact by escalation).
-#include "kernel/lattice_hull_2d.hpp"
+#include <zdg/kernel/lattice_hull_2d.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -4,7 +4,7 @@
 // degenerate sets, the lattice point count against "q in conv(S) iff adding q keeps the
 // volume", and coordinates near 2^62 by escalation. CGAL's hull is the oracle in
 // lattice_hull_cgal_test.cpp.
-#include "kernel/lattice_hull_3d.hpp"
+#include <zdg/kernel/lattice_hull_3d.hpp>
 
 #include "tests/support/tower.hpp"
 
@@ -14,19 +14,6 @@
 namespace {
 
 using namespace zdg;
-
-template <TowerInt I>
-Point3<I> sub3(const Point3<I>& a, const Point3<I>& b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-template <TowerInt I>
-Point3<I> cross3(const Point3<I>& a, const Point3<I>& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-template <TowerInt I>
-I dot3(const Point3<I>& a, const Point3<I>& b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
 
 template <TowerInt I>
 void check_supporting(const LatticeHull3d<I>& hi, const std::vector<Point3<I>>& ptsi) {
@@ -49,15 +36,15 @@ void check_supporting(const LatticeHull3d<I>& hi, const std::vector<Point3<I>>& 
     const auto& n = h.normals[f];
     RC_ASSERT(poly.size() >= 3);
     edges += poly.size();
-    B c = dot3(n, h.vertices[poly[0]]);
-    for (auto i : poly) RC_ASSERT(dot3(n, h.vertices[i]) == c);
-    for (const auto& p : pts) RC_ASSERT(dot3(n, p) <= c);
+    B c = dot(n, h.vertices[poly[0]]);
+    for (auto i : poly) RC_ASSERT(dot(n, h.vertices[i]) == c);
+    for (const auto& p : pts) RC_ASSERT(dot(n, p) <= c);
     // Strictly convex, counterclockwise about n.
     for (std::size_t i = 0; i < poly.size(); ++i) {
       const auto& a = h.vertices[poly[i]];
       const auto& b = h.vertices[poly[(i + 1) % poly.size()]];
       const auto& c2 = h.vertices[poly[(i + 2) % poly.size()]];
-      RC_ASSERT(dot3(cross3(sub3(b, a), sub3(c2, b)), n) > 0);
+      RC_ASSERT(dot(cross((b - a), (c2 - b)), n) > 0);
     }
   }
   // Euler: V - E + F = 2 (each edge in two facets).

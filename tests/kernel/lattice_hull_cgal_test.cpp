@@ -1,8 +1,8 @@
 // CGAL's exact hulls as the oracle for lattice_hull_2d and lattice_hull_3d (the one test file
 // that includes CGAL): random integer point sets, degenerate ones included (all collinear,
 // all coplanar, duplicates), compared on Exact_predicates_exact_constructions_kernel.
-#include "kernel/lattice_hull_2d.hpp"
-#include "kernel/lattice_hull_3d.hpp"
+#include <zdg/kernel/lattice_hull_2d.hpp>
+#include <zdg/kernel/lattice_hull_3d.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,10 +1,10 @@
 // Lattice polygon measures: Pick's theorem checked against brute-force counts of the
 // boundary and interior lattice points, the shoelace area against a known example, and the
 // lattice width against a search over all small primitive directions.
-#include "kernel/lattice_polygon.hpp"
+#include <zdg/kernel/lattice_polygon.hpp>
 
-#include "kernel/lattice_hull_2d.hpp"
 #include "tests/support/tower.hpp"
+#include <zdg/kernel/lattice_hull_2d.hpp>
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include "kernel/linf_covering.hpp"
+#include <zdg/kernel/linf_covering.hpp>
 
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"

@@ -2,7 +2,7 @@
 // afresh with the recognizer, itself checked against the exhaustive oracle in
 // tests/arith/dss_recognizer_test.cpp), on open paths and closed contours of digital discs;
 // the structure of the cover on convex curves; huge translations.
-#include "kernel/maximal_segments.hpp"
+#include <zdg/kernel/maximal_segments.hpp>
 
 #include "tests/support/contours.hpp"
 #include "tests/support/dss_oracle.hpp"
@@ -23,7 +23,7 @@ std::optional<MaximalSegment> fresh(const Curve& c, std::int64_t i, std::int64_t
   const std::int64_t n = static_cast<std::int64_t>(c.size());
   auto at = [&](std::int64_t k) {
     const auto& p = c[static_cast<std::size_t>(((k % n) + n) % n)];
-    return LatticePoint<BigInt>{BigInt(p.x), BigInt(p.y)};
+    return Point2<BigInt>{BigInt(p.x), BigInt(p.y)};
   };
   DssRecognizer<BigInt> rec(at(i), conn);
   for (std::int64_t k = i + 1; k <= j; ++k) {

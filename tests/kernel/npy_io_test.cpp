@@ -1,4 +1,4 @@
-#include "kernel/npy_io.hpp"
+#include <zdg/kernel/npy_io.hpp>
 
 #include "tests/support/cli.hpp"
 

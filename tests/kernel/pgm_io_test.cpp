@@ -1,4 +1,4 @@
-#include "kernel/pgm_io.hpp"
+#include <zdg/kernel/pgm_io.hpp>
 
 #include "tests/support/cli.hpp"
 

@@ -1,4 +1,4 @@
-#include "kernel/power_map.hpp"
+#include <zdg/kernel/power_map.hpp>
 
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"

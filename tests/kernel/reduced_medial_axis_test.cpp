@@ -1,9 +1,9 @@
-#include "kernel/reduced_medial_axis.hpp"
+#include <zdg/kernel/reduced_medial_axis.hpp>
 
-#include "kernel/distance_transform.hpp"
-#include "kernel/reverse_distance_transform.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"
+#include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/reverse_distance_transform.hpp>
 
 #include <gtest/gtest.h>
 

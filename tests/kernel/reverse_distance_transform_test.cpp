@@ -1,8 +1,8 @@
-#include "kernel/reverse_distance_transform.hpp"
+#include <zdg/kernel/reverse_distance_transform.hpp>
 
-#include "kernel/distance_transform.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"
+#include <zdg/kernel/distance_transform.hpp>
 
 #include <gtest/gtest.h>
 

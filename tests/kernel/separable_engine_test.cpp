@@ -2,7 +2,7 @@
 // need = 2 (sum_k m_k^p + w_max + L^p) + 2 L, and the narrowest engine integer that holds it.
 // The transforms' own tests check the results against brute force on every width; these
 // pin the bound itself and the metric parsing (kernel/lp_metric.hpp).
-#include "kernel/separable_engine.hpp"
+#include <zdg/kernel/separable_engine.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -1,4 +1,4 @@
-#include "kernel/vol_io.hpp"
+#include <zdg/kernel/vol_io.hpp>
 
 #include "tests/support/cli.hpp"
 

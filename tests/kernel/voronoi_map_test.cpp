@@ -1,8 +1,8 @@
-#include "kernel/voronoi_map.hpp"
+#include <zdg/kernel/voronoi_map.hpp>
 
-#include "kernel/distance_transform.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"
+#include <zdg/kernel/distance_transform.hpp>
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // (X - 1/2, Y - 1/2): pixel x spans X in [x, x + 1].
 #pragma once
 
-#include "kernel/point.hpp"
+#include <zdg/arith/point.hpp>
 
 #include <cmath>
 #include <cstdint>

@@ -6,7 +6,7 @@
 // points present). Exponential in nothing but slow (O(n omega^2) per period): short paths only.
 #pragma once
 
-#include "arith/dss_recognizer.hpp"
+#include <zdg/arith/dss_recognizer.hpp>
 
 #include <gtest/gtest.h>
 
@@ -27,8 +27,7 @@ struct OracleDss {
 
 /// Minimal characteristics of the path (as a set of distinct points, in order), or nullopt when
 /// it is not a DSS (repeated points included).
-inline std::optional<OracleDss> oracle_dss(const std::vector<LatticePoint<BigInt>>& pts,
-                                           Connectivity c) {
+inline std::optional<OracleDss> oracle_dss(const std::vector<Point2<BigInt>>& pts, Connectivity c) {
   std::set<std::pair<BigInt, BigInt>> seen;
   for (const auto& p : pts) {
     if (!seen.insert({p.x, p.y}).second) return std::nullopt;

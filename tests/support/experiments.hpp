@@ -2,7 +2,7 @@
 // check that every l_inf verdict passes.
 #pragma once
 
-#include "convergence/experiment.hpp"
+#include <zdg/convergence/experiment.hpp>
 
 #include <gtest/gtest.h>
 

@@ -12,7 +12,7 @@
 // Shrunk counterexamples are kept as plain TEST()s named Regression* next to the property.
 #pragma once
 
-#include "arith/integer.hpp"
+#include <zdg/arith/integer.hpp>
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>

@@ -3,9 +3,9 @@
 // oracles (every pair of points).
 #pragma once
 
-#include "arith/integer.hpp"
-#include "kernel/image.hpp"
-#include "kernel/lp_metric.hpp"
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/lp_metric.hpp>
 
 #include <rapidcheck.h>
 

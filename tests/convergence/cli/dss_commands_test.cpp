@@ -1,9 +1,9 @@
 // zdg dss recognize | cover | subsegment: JSON formats, agreement with the library, errors with
 // line numbers and exit status 2.
-#include "arith/dsl_subsegment.hpp"
-#include "kernel/maximal_segments.hpp"
 #include "tests/support/cli.hpp"
 #include "tests/support/contours.hpp"
+#include <zdg/arith/dsl_subsegment.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
 
 #include <nlohmann/json.hpp>
 

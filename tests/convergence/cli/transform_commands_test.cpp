@@ -1,8 +1,8 @@
 // zdg transform: JSON summaries, outputs checked against the kernel, error exits.
-#include "kernel/distance_transform.hpp"
-#include "kernel/npy_io.hpp"
-#include "kernel/reverse_distance_transform.hpp"
 #include "tests/support/cli.hpp"
+#include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/npy_io.hpp>
+#include <zdg/kernel/reverse_distance_transform.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
