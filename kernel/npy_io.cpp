@@ -1,5 +1,7 @@
 #include <zdg/kernel/npy_io.hpp>
 
+#include <zdg/kernel/output_files.hpp>
+
 #include <zdg/arith/error.hpp>
 
 #include <cstdio>
@@ -200,32 +202,6 @@ NpyArray read_npy(const std::string& path) {
   if (have > need) fail(path, "trailing bytes after the array data");
   a.bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(hstart + hlen), data.end());
   return a;
-}
-
-void write_file_atomically(const std::string& path, const std::string& bytes) {
-  namespace fs = std::filesystem;
-  fs::path target(path);
-  fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  fs::path tmp =
-      dir / (".zdg_tmp_" + std::to_string(::getpid()) + "_" + target.filename().string());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError(path + ": cannot open " + tmp.string() + " for writing");
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) {
-      out.close();
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw IoError(path + ": write failed (disk full?)");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw IoError(path + ": cannot rename the temporary file onto it");
-  }
 }
 
 void write_npy(const std::string& path, const NpyArray& a) {

@@ -48,8 +48,4 @@ Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_
 /// The array as int64 values.
 Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64_t>& lower = {});
 
-/// Writes `bytes` to path through a temporary file in the same directory and a rename, so
-/// that the target is never half-written (used by every writer of zdg images).
-void write_file_atomically(const std::string& path, const std::string& bytes);
-
 } // namespace zdg

@@ -1,6 +1,6 @@
 #include <zdg/kernel/pgm_io.hpp>
 
-#include <zdg/kernel/npy_io.hpp>
+#include <zdg/kernel/output_files.hpp>
 
 #include <algorithm>
 #include <fstream>

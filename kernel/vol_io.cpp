@@ -1,6 +1,6 @@
 #include <zdg/kernel/vol_io.hpp>
 
-#include <zdg/kernel/npy_io.hpp>
+#include <zdg/kernel/output_files.hpp>
 
 #include <fstream>
 #include <iterator>
