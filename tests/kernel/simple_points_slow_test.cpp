@@ -58,9 +58,9 @@ TEST_P(SimplePointTableExhaustive, EveryConfigurationAgreesWithTheDefinitionAndT
 INSTANTIATE_TEST_SUITE_P(AllPairs, SimplePointTableExhaustive,
                          ::testing::Values(AdjacencyPair{3, 26, 6}, AdjacencyPair{3, 6, 26},
                                            AdjacencyPair{3, 18, 6}, AdjacencyPair{3, 6, 18}),
-                         [](const auto& info) {
-                           return "Pair" + std::to_string(info.param.object) + "_" +
-                                  std::to_string(info.param.background);
+                         [](const auto& param_info) {
+                           return "Pair" + std::to_string(param_info.param.object) + "_" +
+                                  std::to_string(param_info.param.background);
                          });
 
 } // namespace

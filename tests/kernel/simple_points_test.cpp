@@ -59,21 +59,6 @@ TEST(SimplePoints, DefinitionAgreesWithIndependentCharacterizations3D) {
   });
 }
 
-// The image with one more layer of background around it, complemented: the background of the
-// image as an object (of the complementary pair).
-Image<std::uint8_t> padded_complement(const Image<std::uint8_t>& img) {
-  const Domain& d = img.domain();
-  std::vector<std::int64_t> ext;
-  for (int k = 0; k < d.dim(); ++k) ext.push_back(d.extent(k) + 2);
-  Image<std::uint8_t> out{Domain(ext), std::uint8_t{1}};
-  for (std::int64_t i = 0; i < d.size(); ++i) {
-    auto p = d.point(i);
-    for (auto& v : p) ++v;
-    out.at(p) = img[i] != 0 ? 0 : 1;
-  }
-  return out;
-}
-
 // Theorem (Kong-Rosenfeld; the point of simple points): deleting a simple point keeps every
 // Betti number of the object and of the background. Oracle: brute-force homology over Z/2 of
 // the cell complexes (tests/support/cubical_homology.hpp), the background as the object of
@@ -92,10 +77,10 @@ TEST(SimplePoints, DeletingASimplePointKeepsTheBettiNumbersOfObjectAndBackground
     const std::int64_t x = *rc::gen::elementOf(object);
     const bool simple = is_simple_by_definition(pair, neighbourhood_configuration(img, x));
     const auto before = test::object_homology(img, pair);
-    const auto before_bg = test::object_homology(padded_complement(img), pair.complement());
+    const auto before_bg = test::object_homology(test::padded_complement(img), pair.complement());
     img[x] = 0;
     const auto after = test::object_homology(img, pair);
-    const auto after_bg = test::object_homology(padded_complement(img), pair.complement());
+    const auto after_bg = test::object_homology(test::padded_complement(img), pair.complement());
     RC_CLASSIFY(simple);
     // (The converse fails: a point that is not simple can change the topology without
     // changing any Betti number, so only this direction is a theorem.)

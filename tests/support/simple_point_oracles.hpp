@@ -24,7 +24,6 @@
 #include <cstdint>
 #include <cstdlib>
 
-
 namespace zdg::test {
 
 /// The offset of bit j of a configuration (3D: 26 bits; 2D: 8 bits, third entry 0).
