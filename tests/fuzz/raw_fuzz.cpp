@@ -13,10 +13,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size < 4) return 0;
   std::vector<std::int64_t> shape{1 + data[0] % 16, 1 + data[1] % 16};
   if (data[2] != 0) shape.push_back(1 + data[2] % 16);
-  const zdg::DType types[] = {zdg::DType::Bool, zdg::DType::U8,  zdg::DType::I8,
-                              zdg::DType::U16,  zdg::DType::I16, zdg::DType::U32,
-                              zdg::DType::I32,  zdg::DType::U64, zdg::DType::I64,
-                              zdg::DType::F32,  zdg::DType::F64};
+  const zdg::DType types[] = {zdg::DType::Bool, zdg::DType::U8,  zdg::DType::I8,  zdg::DType::U16,
+                              zdg::DType::I16,  zdg::DType::U32, zdg::DType::I32, zdg::DType::U64,
+                              zdg::DType::I64,  zdg::DType::F32, zdg::DType::F64};
   const zdg::DType t = types[data[3] % 11];
   try {
     const auto v = zdg::read_raw_bytes(
