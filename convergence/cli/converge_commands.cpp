@@ -334,6 +334,7 @@ void run_converge(ConvergeOptions o, Context& ctx) {
         {"integer_types", {"int64 (checked)", "int128 (checked)", "bigint (GMP mpz)"}},
         {"grid_step", "the double nearest to each h, used as an exact dyadic rational"},
         {"seed", config.seed}}}};
+  bool plotted = false; // the plot line is printed only for a plot that was drawn
   if (!o.output.empty()) {
     std::ostringstream csv;
     write_results_csv(result, csv);
@@ -342,7 +343,9 @@ void run_converge(ConvergeOptions o, Context& ctx) {
     if (!o.no_plot) {
       std::string script = source_dir() + "/papers/plot_convergence.py";
       std::string cmd = "/usr/bin/python3 '" + script + "' '" + dir.string() + "' >/dev/null 2>&1";
-      if (!fs::exists(script) || std::system(cmd.c_str()) != 0) {
+      if (fs::exists(script) && std::system(cmd.c_str()) == 0) {
+        plotted = true;
+      } else {
         std::cerr << "zdg: warning: the plot could not be drawn (" << script
                   << " with /usr/bin/python3 and matplotlib)\n";
       }
@@ -367,8 +370,8 @@ void run_converge(ConvergeOptions o, Context& ctx) {
     }
     if (!o.output.empty()) {
       std::cout << "results: " << (dir / "results.csv").string()
-                << "\nsummary: " << (dir / "summary.json").string()
-                << "\nplot:    " << (dir / "convergence.png").string() << '\n';
+                << "\nsummary: " << (dir / "summary.json").string() << '\n';
+      if (plotted) std::cout << "plot:    " << (dir / "convergence.png").string() << '\n';
     }
   }
   if (!result.all_pass) ctx.exit_code = 1;

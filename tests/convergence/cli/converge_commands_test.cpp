@@ -93,6 +93,19 @@ TEST(ConvergeCli, TomlConfigWritesResultsAndRefusesToOverwrite) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(ConvergeCli, NoPlotNamesNoPlotFile) {
+  auto dir = zdg::test::scratch_dir("converge");
+  auto r = run_zdg(
+      "converge --shape ball:10 --estimator gauss-area --h 0.5:0.25:2 --tolerance 10 --quiet -o '" +
+      dir.string() + "' --no-plot");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("results.csv"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("convergence.png"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("plot:"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "convergence.png"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ConvergeCli, UnknownPaperIsAnError) {
   auto r = run_zdg("paper no-such-paper -o /tmp/zdg-never-written");
   EXPECT_EQ(r.status, 2);
