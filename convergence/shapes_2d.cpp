@@ -1,7 +1,8 @@
 #include <zdg/convergence/shapes_2d.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/convergence/polynomial.hpp>
+#include <zdg/kernel/polynomial.hpp>
+#include <zdg/kernel/polynomial_sign.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,83 +20,34 @@ constexpr double kPi = std::numbers::pi;
 
 // --- exact digitization of F <= 0 for polynomials F --------------------------------------
 
-// One polynomial with a fast double path for degree <= 2 and the exact fallback.
-class PolyPredicate {
-public:
-  explicit PolyPredicate(Polynomial f) : f_(std::move(f)) {
-    quadratic_ = f_.degree() <= 2;
-    for (const auto& m : f_.terms()) {
-      int ex = m.exponent[0], ey = m.exponent[1];
-      int idx = ex == 2 ? 0 : ex == 1 && ey == 1 ? 1 : ey == 2 ? 2 : ex == 1 ? 3 : ey == 1 ? 4 : 5;
-      q_[idx] = m.coefficient_double;
-      aq_[idx] = std::abs(m.coefficient_double);
-    }
-    gamma_ = 8.0 * (f_.degree() + static_cast<double>(f_.terms().size()) + 2.0) *
-             std::numeric_limits<double>::epsilon();
-  }
-  const Polynomial& polynomial() const { return f_; }
-  bool is_quadratic() const { return quadratic_; }
-  /// Coefficients of x^2, xy, y^2, x, y, 1 (degree <= 2).
-  const double (&coefficients() const)[6] { return q_; }
-  /// Filter bound of the quadratic for |x| <= mx, |y| <= my (including rounding of x, y).
-  double bound(double mx, double my) const {
-    return gamma_ *
-           (((aq_[0] * mx + aq_[1] * my + aq_[3]) * mx + (aq_[2] * my + aq_[4]) * my) + aq_[5]);
-  }
-
-  // Sign of F(x, y) with x = H zx - Tx exactly; xd, yd the doubles, mx, my magnitude bounds.
-  // Returns -1, 0 or 1; `exact` gives the rational point when needed.
-  template <class Exact>
-  int sign(double xd, double yd, double mx, double my, Exact&& exact) const {
-    double v, bound;
-    if (quadratic_) {
-      v = ((q_[0] * xd + q_[1] * yd + q_[3]) * xd + (q_[2] * yd + q_[4]) * yd) + q_[5];
-      bound = gamma_ *
-              (((aq_[0] * mx + aq_[1] * my + aq_[3]) * mx + (aq_[2] * my + aq_[4]) * my) + aq_[5]);
-    } else {
-      double p[2] = {xd, yd}, m[2] = {mx, my};
-      v = f_.value_with_bound(p, m, bound);
-    }
-    if (v > bound) return 1;
-    if (v < -bound) return -1;
-    auto pt = exact();
-    return f_.sign_exact(pt.data());
-  }
-
-private:
-  Polynomial f_;
-  bool quadratic_ = false;
-  double q_[6] = {0, 0, 0, 0, 0, 0}, aq_[6] = {0, 0, 0, 0, 0, 0}; // x^2 xy y^2 x y 1
-  double gamma_ = 0;
-};
-
-// G_h(X + t) for X = { F_i <= 0 for all i }.
+// G_h(X + t) for X = { F_i <= 0 for all i }: each sign by the filtered predicate of
+// kernel/polynomial_sign.hpp at the grid point h z - t.
 class PolyDigitization final : public GaussDigitization2 {
 public:
-  PolyDigitization(const std::vector<PolyPredicate>* preds, double h, P2 t, Box2 box)
-      : GaussDigitization2(box), preds_(preds), h_(h), t_(t), hx_(exact_rational(h)),
-        tx_(exact_rational(t.x)), ty_(exact_rational(t.y)) {
-    if (preds_->size() == 1 && preds_->front().is_quadratic()) {
+  PolyDigitization(const std::vector<PolynomialSign>* preds, double h, P2 t, Box2 box)
+      : GaussDigitization2(box), preds_(preds), h_(h), t_(t),
+        frame_(h, std::array<double, 2>{t.x, t.y}) {
+    if (preds_->size() == 1 && preds_->front().is_quadric()) {
       auto mag = [&](std::int64_t a, std::int64_t b, double off) {
         return 2.0 * (std::max(std::abs(h * static_cast<double>(a)),
                                std::abs(h * static_cast<double>(b))) +
                       std::abs(off));
       };
-      box_bound_ =
-          preds_->front().bound(mag(box.lo.x, box.hi.x, t.x), mag(box.lo.y, box.hi.y, t.y));
+      const double m[2] = {mag(box.lo.x, box.hi.x, t.x), mag(box.lo.y, box.hi.y, t.y)};
+      box_bound_ = preds_->front().error_bound(m);
     }
   }
 
-  // Hot loop of the integral invariants. One quadratic (ball, ellipse): a branch-free pass
-  // compares F with a bound valid for the whole box (gamma times the magnitude sum at the
-  // box corners); the few pixels it does not certify go through test().
+  // Hot loop of the integral invariants. One quadric (ball, ellipse): a branch-free pass
+  // compares F with the filter bound valid for the whole box (the magnitudes at the box
+  // corners); the few pixels it does not certify go through test().
   std::int64_t count(std::span<const Pixel> zs) const override {
-    if (preds_->size() != 1 || !preds_->front().is_quadratic()) {
+    if (preds_->size() != 1 || !preds_->front().is_quadric()) {
       std::int64_t n = 0;
       for (const auto& z : zs) n += (box().contains(z) && test(z)) ? 1 : 0;
       return n;
     }
-    const auto& q = preds_->front().coefficients();
+    const auto& q = preds_->front().quadric();
     const Box2& b = box();
     std::int64_t n = 0, unsure = 0;
     for (const auto& z : zs) {
@@ -104,7 +56,7 @@ public:
       const double v = ((q[0] * x + q[1] * y + q[3]) * x + (q[2] * y + q[4]) * y) + q[5];
       const bool in_box = (b.lo.x <= z.x) & (z.x <= b.hi.x) & (b.lo.y <= z.y) & (z.y <= b.hi.y);
       n += static_cast<std::int64_t>(in_box & (v < -box_bound_));
-      unsure += static_cast<std::int64_t>(in_box & (std::abs(v) <= box_bound_));
+      unsure += static_cast<std::int64_t>(in_box & !(std::abs(v) > box_bound_));
     }
     if (unsure > 0) {
       for (const auto& z : zs) {
@@ -112,7 +64,7 @@ public:
         const double x = h_ * static_cast<double>(z.x) - t_.x,
                      y = h_ * static_cast<double>(z.y) - t_.y;
         const double v = ((q[0] * x + q[1] * y + q[3]) * x + (q[2] * y + q[4]) * y) + q[5];
-        if (std::abs(v) <= box_bound_ && test(z)) ++n;
+        if (!(std::abs(v) > box_bound_) && test(z)) ++n;
       }
     }
     return n;
@@ -122,23 +74,18 @@ protected:
   bool inside(const Pixel& z) const override { return test(z); }
 
 private:
-  const std::vector<PolyPredicate>* preds_;
+  const std::vector<PolynomialSign>* preds_;
   double box_bound_ = 0;
   double h_;
   P2 t_;
-  BigRational hx_, tx_, ty_;
+  GridFrame frame_;
 
   bool test(const Pixel& z) const {
-    const double hzx = h_ * static_cast<double>(z.x), hzy = h_ * static_cast<double>(z.y);
-    const double x = hzx - t_.x, y = hzy - t_.y;
-    const double mx = 2.0 * (std::abs(hzx) + std::abs(t_.x)),
-                 my = 2.0 * (std::abs(hzy) + std::abs(t_.y));
-    auto exact = [&] {
-      return std::array<BigRational, 2>{hx_ * BigRational(BigInt(z.x)) - tx_,
-                                        hx_ * BigRational(BigInt(z.y)) - ty_};
-    };
-    for (const auto& p : *preds_) {
-      if (p.sign(x, y, mx, my, exact) > 0) return false;
+    const std::int64_t zz[2] = {z.x, z.y};
+    double p[2], m[2];
+    frame_.approximate(zz, p, m);
+    for (const auto& f : *preds_) {
+      if (f.sign(p, m, [&] { return frame_.exact(zz); }) > 0) return false;
     }
     return true;
   }
@@ -560,7 +507,7 @@ public:
 private:
   std::string spec_;
   double a_, b_, c_, s_, theta_;
-  std::vector<PolyPredicate> preds_;
+  std::vector<PolynomialSign> preds_;
 };
 
 // Convex polygon, counter-clockwise, rational vertices.
@@ -646,7 +593,7 @@ public:
 
 private:
   std::string spec_;
-  std::vector<PolyPredicate> preds_;
+  std::vector<PolynomialSign> preds_;
   std::vector<P2> vd_;
 };
 
@@ -693,7 +640,7 @@ public:
 
 private:
   std::string spec_;
-  std::vector<PolyPredicate> preds_;
+  std::vector<PolynomialSign> preds_;
 };
 
 // --- parsing --------------------------------------------------------------------------------

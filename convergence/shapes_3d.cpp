@@ -1,6 +1,7 @@
 #include <zdg/convergence/shapes_3d.hpp>
 
 #include <zdg/arith/error.hpp>
+#include <zdg/kernel/polynomial_sign.hpp>
 
 #include <array>
 #include <cmath>
@@ -45,53 +46,24 @@ P3 newton(const Polynomial& f, P3 q) {
   return {p[0], p[1], p[2]};
 }
 
-// Exact membership of h z - t in { F <= 0 }: double filter, exact fallback.
-class PolyVoxelPredicate {
-public:
-  PolyVoxelPredicate(const Polynomial* f, double h, P3 t)
-      : f_(f), h_(h), t_{t.x, t.y, t.z},
-        hx_(exact_rational(h)), tx_{exact_rational(t.x), exact_rational(t.y), exact_rational(t.z)} {
-  }
-
-  bool operator()(const Voxel& z) const {
-    const double hz[3] = {h_ * double(z.x), h_ * double(z.y), h_ * double(z.z)};
-    double p[3], m[3];
-    for (int i = 0; i < 3; ++i) {
-      p[i] = hz[i] - t_[i];
-      m[i] = 2.0 * (std::abs(hz[i]) + std::abs(t_[i])); // >= |p| + its rounding error
-    }
-    double bound = 0;
-    const double v = f_->value_with_bound(p, m, bound);
-    if (v > bound) return false;
-    if (v < -bound) return true;
-    const std::array<BigRational, 3> q{hx_ * BigRational(BigInt(z.x)) - tx_[0],
-                                       hx_ * BigRational(BigInt(z.y)) - tx_[1],
-                                       hx_ * BigRational(BigInt(z.z)) - tx_[2]};
-    return f_->sign_exact(q.data()) <= 0;
-  }
-
-private:
-  const Polynomial* f_;
-  double h_;
-  double t_[3];
-  BigRational hx_;
-  std::array<BigRational, 3> tx_;
-};
-
 class PolyShape3 final : public Shape3 {
 public:
   PolyShape3(std::string spec, Polynomial f, double lo, double hi, std::optional<double> volume)
-      : spec_(std::move(spec)), f_(std::make_shared<const Polynomial>(std::move(f))), lo_(lo),
-        hi_(hi), volume_(volume) {}
+      : spec_(std::move(spec)), sign_(std::make_shared<const PolynomialSign>(std::move(f))),
+        f_(&sign_->polynomial()), lo_(lo), hi_(hi), volume_(volume) {}
   std::string spec() const override { return spec_; }
   std::optional<std::vector<std::pair<double, double>>> bounding_box() const override {
     return std::vector<std::pair<double, double>>(3, {lo_, hi_});
   }
+  // Exact membership of h z - t in { F <= 0 } (kernel/polynomial_sign.hpp). The predicate
+  // shares the polynomial, so it may outlive the shape.
   VoxelPredicate digitize(double h, P3 t) const override {
-    // The predicate shares the polynomial, so it may outlive the shape.
-    auto f = f_;
-    PolyVoxelPredicate pred(f.get(), h, t);
-    return [f, pred](const Voxel& z) { return pred(z); };
+    auto f = sign_;
+    auto frame = std::make_shared<const GridFrame>(h, std::array<double, 3>{t.x, t.y, t.z});
+    return [f, frame](const Voxel& z) {
+      const std::int64_t zz[3] = {z.x, z.y, z.z};
+      return frame->sign(*f, zz) <= 0;
+    };
   }
   bool contains(P3 p) const override {
     const double q[3] = {p.x, p.y, p.z};
@@ -102,7 +74,8 @@ public:
 
 private:
   std::string spec_;
-  std::shared_ptr<const Polynomial> f_;
+  std::shared_ptr<const PolynomialSign> sign_;
+  const Polynomial* f_; // sign_->polynomial()
   double lo_, hi_;
   std::optional<double> volume_;
 };
