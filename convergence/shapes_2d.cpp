@@ -400,6 +400,9 @@ public:
     return rho * rk <= r0_ * rk + a_ * (cp_ * re - sp_ * im);
   }
   double max_dr() const override { return std::abs(a_ * k_); }
+  // r = R0 + A cos(K t + PHI) is analytic and |A| < R0: a C^infinity boundary (convex only
+  // for small A, not claimed).
+  ShapeClass shape_class() const override { return {.c3 = true}; }
 
   Flower(std::string spec, double r0, double a, double k, double phi)
       : spec_(std::move(spec)), r0_(r0), a_(a), k_(k), phi_(phi), cp_(std::cos(phi)),
@@ -441,6 +444,9 @@ public:
   double r_min() const override { return r1_ - std::abs(r2_); }
   double r_max() const override { return r1_ + std::abs(r2_); }
   int quadrature_samples() const override { return 1 << 20; }
+  // C^2 at t = +-pi at best (the third derivative of r jumps there; a corner unless
+  // P = m / pi^2): not C^3, so no theory check applies.
+  ShapeClass shape_class() const override { return {}; }
   double max_dr() const override { return std::abs(r2_ * p_) * 3 * kPi * kPi; }
 
 private:
@@ -474,6 +480,10 @@ public:
     return std::atan2(y / b_, x / a_);
   }
   double min_speed() const override { return std::min(a_, b_); }
+  // Ball and ellipse: convex, analytic boundary, curvature >= b / a^2 > 0.
+  ShapeClass shape_class() const override {
+    return {.convex = true, .c3 = true, .positive_curvature = true};
+  }
   // The reach of an ellipse is its minimal radius of curvature b^2/a (b <= a), at the
   // ends of the major axis: the medial axis of the inside is the segment between the two
   // centres of curvature (+-(a - b^2/a), 0), at distance >= b^2/a from the boundary; the
@@ -557,6 +567,7 @@ public:
   }
   // Corners: the medial axis of the inside reaches the vertices.
   std::optional<double> reach_lower_bound() const override { return 0.0; }
+  ShapeClass shape_class() const override { return {.convex = true, .polygon = true}; }
   std::optional<double> area() const override { return moments()->at(0); }
   std::optional<double> perimeter() const override {
     double s = 0;
@@ -605,6 +616,9 @@ public:
   }
   std::string spec() const override { return spec_; }
   const Polynomial& f() const { return preds_[0].polynomial(); }
+  // Assumed C^3 with positive reach (the user's polynomial; no check that grad F != 0 on the
+  // curve): the theory checks apply as for a smooth shape.
+  ShapeClass shape_class() const override { return {.c3 = true}; }
   bool contains(P2 p) const override {
     double q[2] = {p.x, p.y};
     return f().value(q) <= 0;
@@ -645,20 +659,43 @@ private:
 
 // --- parsing --------------------------------------------------------------------------------
 
+// Parameters are finite and in a range where the shapes' double computations (projection,
+// quadrature, sector tables) are meaningful: 0 or 1e-9 <= |value| <= 1e9, at most
+// kMaxShapeParameters of them.
+constexpr double kMaxShapeMagnitude = 1e9, kMinShapeMagnitude = 1e-9;
+constexpr std::size_t kMaxShapeParameters = 20000;
+
+std::string shown_spec(std::string_view spec) {
+  return "shape '" +
+         (spec.size() <= 60 ? std::string(spec) : std::string(spec.substr(0, 57)) + "...") + "'";
+}
+
 std::vector<BigRational> rationals(std::string_view args, std::string_view spec) {
   std::vector<BigRational> out;
-  if (args.empty()) throw InvalidArgument("shape '" + std::string(spec) + "': missing parameters");
+  if (args.empty()) throw InvalidArgument(shown_spec(spec) + ": missing parameters");
   std::size_t start = 0;
   for (;;) {
     auto comma = args.find(',', start);
     std::string_view item =
         args.substr(start, comma == std::string_view::npos ? args.npos : comma - start);
+    const std::string shown_item =
+        item.size() <= 30 ? std::string(item) : std::string(item.substr(0, 27)) + "...";
+    const std::string which =
+        "parameter " + std::to_string(out.size() + 1) + " '" + shown_item + "'";
+    if (out.size() == kMaxShapeParameters) {
+      throw InvalidArgument(shown_spec(spec) + ": more than " +
+                            std::to_string(kMaxShapeParameters) + " parameters");
+    }
     try {
       out.push_back(parse_rational<BigInt>(item));
     } catch (const InvalidArgument&) {
-      throw InvalidArgument("shape '" + std::string(spec) + "': parameter " +
-                            std::to_string(out.size() + 1) + " '" + std::string(item) +
-                            "' is not a number");
+      throw InvalidArgument(shown_spec(spec) + ": " + which + " is not a number");
+    }
+    const double d = out.back().to_double();
+    if (!std::isfinite(d) || std::abs(d) > kMaxShapeMagnitude ||
+        (out.back() != BigRational(0) && std::abs(d) < kMinShapeMagnitude)) {
+      throw InvalidArgument(shown_spec(spec) + ": " + which +
+                            " is out of range (0, or 1e-9 <= |value| <= 1e9)");
     }
     if (comma == std::string_view::npos) break;
     start = comma + 1;
@@ -669,15 +706,15 @@ std::vector<BigRational> rationals(std::string_view args, std::string_view spec)
 void expect_count(const std::vector<BigRational>& v, std::size_t lo, std::size_t hi,
                   std::string_view spec, std::string_view syntax) {
   if (v.size() < lo || v.size() > hi) {
-    throw InvalidArgument("shape '" + std::string(spec) + "': expected " + std::string(syntax) +
-                          ", got " + std::to_string(v.size()) + " parameters");
+    throw InvalidArgument(shown_spec(spec) + ": expected " + std::string(syntax) + ", got " +
+                          std::to_string(v.size()) + " parameters");
   }
 }
 
 void expect_positive(const BigRational& v, std::string_view name, std::string_view spec) {
   if (v <= BigRational(0)) {
-    throw InvalidArgument("shape '" + std::string(spec) + "': " + std::string(name) + " = " +
-                          v.str() + " must be > 0");
+    throw InvalidArgument(shown_spec(spec) + ": " + std::string(name) + " = " + v.str() +
+                          " must be > 0");
   }
 }
 
@@ -751,12 +788,12 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
                      expect_count(v, 3, 4, spec, "flower:R0,A,K[,PHI]");
                      expect_positive(v[0], "R0", spec);
                      double r0 = v[0].to_double(), a = v[1].to_double(), k = v[2].to_double();
-                     if (v[2].den() != 1) {
-                       throw InvalidArgument("shape '" + std::string(spec) +
-                                             "': K = " + v[2].str() + " must be an integer");
+                     if (v[2].den() != 1 || std::abs(k) > 1000) {
+                       throw InvalidArgument(shown_spec(spec) + ": K = " + v[2].str() +
+                                             " must be an integer in -1000..1000");
                      }
                      if (std::abs(a) >= r0) {
-                       throw InvalidArgument("shape '" + std::string(spec) + "': |A| must be < R0");
+                       throw InvalidArgument(shown_spec(spec) + ": |A| must be < R0");
                      }
                      return std::make_unique<Flower>(std::string(spec), r0, a, k,
                                                      v.size() > 3 ? v[3].to_double() : 0.0);
@@ -771,7 +808,7 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
          expect_positive(v[0], "R1", spec);
          double r1 = v[0].to_double(), r2 = v[1].to_double();
          if (std::abs(r2) >= r1) {
-           throw InvalidArgument("shape '" + std::string(spec) + "': |R2| must be < R1");
+           throw InvalidArgument(shown_spec(spec) + ": |R2| must be < R1");
          }
          return std::make_unique<AccFlower>(std::string(spec), r1, r2, v[2].to_double());
        }});
@@ -781,8 +818,8 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
        [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
          auto v = rationals(args, spec);
          if (v.size() < 6 || v.size() % 2 != 0) {
-           throw InvalidArgument("shape '" + std::string(spec) +
-                                 "': expected polygon:X1,Y1,X2,Y2,X3,Y3,... (at least 3 vertices)");
+           throw InvalidArgument(shown_spec(spec) +
+                                 ": expected polygon:X1,Y1,X2,Y2,X3,Y3,... (at least 3 vertices)");
          }
          std::vector<std::array<BigRational, 2>> pts;
          for (std::size_t i = 0; i < v.size(); i += 2) pts.push_back({v[i], v[i + 1]});
@@ -799,28 +836,27 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
            area2 += a[0] * b[1] - b[0] * a[1];
          }
          if (area2 == BigRational(0)) {
-           throw InvalidArgument("shape '" + std::string(spec) + "': degenerate polygon");
+           throw InvalidArgument(shown_spec(spec) + ": degenerate polygon");
          }
          if (area2 < BigRational(0)) std::reverse(pts.begin(), pts.end());
          for (std::size_t i = 0; i < pts.size(); ++i) {
            if (cross(i) <= BigRational(0)) {
-             throw InvalidArgument("shape '" + std::string(spec) +
-                                   "': not strictly convex at vertex " + std::to_string(i + 2));
+             throw InvalidArgument(shown_spec(spec) + ": not strictly convex at vertex " +
+                                   std::to_string(i + 2));
            }
          }
          return std::make_unique<Polygon>(std::string(spec), std::move(pts));
        }});
-  kinds.push_back({"poly", 2, "poly:EXPR",
-                   "F(x, y) <= 0, F a polynomial with rational coefficients (exact)",
-                   [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
-                     if (args.find('z') != std::string_view::npos) return nullptr; // 3D
-                     Polynomial f = Polynomial::parse(args, 2);
-                     if (f.degree() < 1) {
-                       throw InvalidArgument("shape '" + std::string(spec) +
-                                             "': the polynomial must not be constant");
-                     }
-                     return std::make_unique<PolyShape>(std::string(spec), std::move(f));
-                   }});
+  kinds.push_back(
+      {"poly", 2, "poly:EXPR", "F(x, y) <= 0, F a polynomial with rational coefficients (exact)",
+       [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
+         if (args.find('z') != std::string_view::npos) return nullptr; // 3D
+         Polynomial f = Polynomial::parse(args, 2);
+         if (f.degree() < 1) {
+           throw InvalidArgument(shown_spec(spec) + ": the polynomial must not be constant");
+         }
+         return std::make_unique<PolyShape>(std::string(spec), std::move(f));
+       }});
 }
 
 } // namespace detail

@@ -6,7 +6,6 @@
 #include <cctype>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace zdg {
@@ -295,15 +294,28 @@ Polynomial Polynomial::variable(int index, int nvars) {
   return p;
 }
 
+// Sorts the terms by exponent and merges equal exponents in place (moves, no copies of the
+// coefficients): O(n log n) for n terms.
 void Polynomial::normalize() {
-  std::map<std::array<int, 3>, BigRational> acc;
-  for (const auto& m : terms_) acc[m.exponent] += m.coefficient;
-  terms_.clear();
+  std::sort(terms_.begin(), terms_.end(),
+            [](const Monomial& a, const Monomial& b) { return a.exponent < b.exponent; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < terms_.size();) {
+    std::size_t j = i + 1;
+    for (; j < terms_.size() && terms_[j].exponent == terms_[i].exponent; ++j) {
+      terms_[i].coefficient += terms_[j].coefficient;
+    }
+    if (!(terms_[i].coefficient == BigRational(0))) {
+      if (out != i) terms_[out] = std::move(terms_[i]);
+      ++out;
+    }
+    i = j;
+  }
+  terms_.resize(out);
   degree_ = 0;
-  for (const auto& [e, c] : acc) {
-    if (c == BigRational(0)) continue;
-    terms_.push_back(Monomial{e, c, c.to_double()});
-    degree_ = std::max(degree_, e[0] + e[1] + e[2]);
+  for (auto& m : terms_) {
+    m.coefficient_double = m.coefficient.to_double();
+    degree_ = std::max(degree_, m.degree());
   }
 }
 
@@ -325,12 +337,12 @@ Polynomial operator-(const Polynomial& a, const Polynomial& b) {
 Polynomial operator*(const Polynomial& a, const Polynomial& b) {
   Polynomial r;
   r.nvars_ = std::max(a.nvars_, b.nvars_);
+  r.terms_.reserve(a.terms_.size() * b.terms_.size());
   for (const auto& ma : a.terms_) {
     for (const auto& mb : b.terms_) {
-      Monomial m;
+      Monomial& m = r.terms_.emplace_back();
       for (std::size_t i = 0; i < 3; ++i) m.exponent[i] = ma.exponent[i] + mb.exponent[i];
       m.coefficient = ma.coefficient * mb.coefficient;
-      r.terms_.push_back(m);
     }
   }
   r.normalize();

@@ -9,10 +9,11 @@
 //
 // Limits (small text must not mean unbounded work): parentheses and unary signs nest at most
 // kPolynomialMaxNesting = 200 deep; every intermediate result of the expansion has total
-// degree at most kPolynomialMaxDegree = 64 (checked before a product or a power is expanded,
-// so `(x+y+1)^64*(x+y+1)^64` is refused at once); the whole expansion performs at most
-// kPolynomialMaxWork = 2^18 products and sums of terms (a quarter of a second); a coefficient must
-// be finite as a double. Beyond a limit: InvalidArgument saying which.
+// degree at most kPolynomialMaxDegree = 64, checked before a product or a power is expanded
+// (`(x+y)^40*(x-y)^40` is refused before the second power is expanded); the whole expansion
+// performs at most kPolynomialMaxWork = 2^14 products and sums of terms (about 20 ms; enough
+// for (x+y+1)^20 or (x+y+z+1)^14, refusing (x+y+1)^64*(x+y+1)^64*... within that time); a
+// coefficient must be finite as a double. Beyond a limit: InvalidArgument saying which.
 //
 // Evaluation: exact value and sign at a rational point (Rational<BigInt>), double value,
 // gradient and Hessian. The exact sign with a floating-point filter, which the digitizations
@@ -34,7 +35,7 @@ using BigRational = Rational<BigInt>;
 
 inline constexpr int kPolynomialMaxNesting = 200;
 inline constexpr int kPolynomialMaxDegree = 64;
-inline constexpr long kPolynomialMaxWork = 1L << 18;
+inline constexpr long kPolynomialMaxWork = 1L << 14;
 
 struct Monomial {
   std::array<int, 3> exponent{}; // powers of x, y, z
