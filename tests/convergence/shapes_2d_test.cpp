@@ -28,7 +28,7 @@ std::unique_ptr<Shape2> shape2(const char* spec) {
 }
 
 TEST(Shapes2d, EllipsePerimeterSeriesAndQuadratureMatchThePublishedValue) {
-  // THEORY.md: a = 20, b = 7 gives 89.8147914563.
+  // papers/THEORY.md: a = 20, b = 7 gives 89.8147914563.
   EXPECT_NEAR(zdg::ellipse_perimeter(20, 7), 89.8147914563, 1e-9);
   auto e = shape2("ellipse:20,7");
   EXPECT_NEAR(*e->perimeter(), 89.8147914563, 1e-9);
