@@ -31,7 +31,6 @@
 
 #include <zdg/convergence/shape.hpp>
 #include <zdg/kernel/digital_surface.hpp>
-#include <zdg/kernel/polynomial.hpp>
 
 #include <optional>
 #include <string>
@@ -39,6 +38,9 @@
 #include <vector>
 
 namespace zdg {
+
+// kernel/polynomial.hpp (its Rational<BigInt> coefficients are not needed here).
+class Polynomial;
 
 /// A point of the true surface with its differential geometry (outward normal).
 struct SurfacePoint3 {
