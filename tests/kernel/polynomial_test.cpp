@@ -95,8 +95,7 @@ TEST(Polynomial, LimitsRefuseUnboundedInputQuickly) {
   // expanded.
   EXPECT_EQ(message("(x+y+1)^16*(x-y)^16"), "no error");
   EXPECT_EQ(message("x^64 + y^64 - 1"), "no error");
-  EXPECT_NE(message("(x+y)^40*(x-y)^40").find("total degree 80 larger than 64"),
-            std::string::npos);
+  EXPECT_NE(message("(x+y)^40*(x-y)^40").find("total degree 80 larger than 64"), std::string::npos);
   EXPECT_NE(message("x^30*((x+y)^20*(x+y+1)^20)").find("total degree 70"), std::string::npos);
   // The reproducer of issue #18: refused at once (by the work bound: (x+y+1)^64 alone has 2145
   // terms), not after minutes.
