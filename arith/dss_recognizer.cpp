@@ -58,11 +58,9 @@ DssRecognition run(std::span<const Point2<T>> path, Connectivity c) {
 }
 
 template <class T>
-DssRecognition recognize(std::span<const Point2<T>> path, Connectivity c) {
+Escalated<DssRecognition> recognize(std::span<const Point2<T>> path, Connectivity c) {
   if (path.empty()) throw InvalidArgument("DSS recognition: the path has no point");
-  auto r = escalate([&]<class I>(std::type_identity<I>) { return run<I>(path, c); });
-  r.value.served = r.served;
-  return r.value;
+  return escalate([&]<class I>(std::type_identity<I>) { return run<I>(path, c); });
 }
 
 } // namespace
@@ -84,11 +82,23 @@ Connectivity path_connectivity(std::span<const Point2<BigInt>> path) {
   return connectivity_of(path);
 }
 
-DssRecognition recognize_dss(std::span<const Point2<std::int64_t>> path, Connectivity c) {
+template <TowerInt I>
+DssRecognition recognize_dss(std::span<const Point2<I>> path, Connectivity c) {
+  if (path.empty()) throw InvalidArgument("DSS recognition: the path has no point");
+  return run<I>(path, c);
+}
+
+template DssRecognition recognize_dss<Int64>(std::span<const Point2<Int64>>, Connectivity);
+template DssRecognition recognize_dss<Int128>(std::span<const Point2<Int128>>, Connectivity);
+template DssRecognition recognize_dss<BigInt>(std::span<const Point2<BigInt>>, Connectivity);
+
+Escalated<DssRecognition> recognize_dss_exact(std::span<const Point2<std::int64_t>> path,
+                                              Connectivity c) {
   return recognize(path, c);
 }
 
-DssRecognition recognize_dss(std::span<const Point2<BigInt>> path, Connectivity c) {
+Escalated<DssRecognition> recognize_dss_exact(std::span<const Point2<BigInt>> path,
+                                              Connectivity c) {
   return recognize(path, c);
 }
 

@@ -24,9 +24,10 @@
 // involves |a|, |b| <= n and local coordinates <= n: Int64 serves any path shorter than about
 // 2^31 points whatever the coordinates (near 2^62 included) as long as the local differences
 // fit. Only mu in absolute coordinates needs a x0 - b y0: mu() computes it in I (it may throw
-// OverflowError), characteristics() in BigInt. recognize_dss() escalates Int64 -> Int128 ->
-// BigInt when checked arithmetic overflows (re-feeding the points). After an OverflowError a
-// recognizer's state is unspecified: discard it and re-run on a wider type.
+// OverflowError), characteristics() in BigInt. recognize_dss<I>() runs on I (OverflowError when a
+// point or a local quantity leaves I); recognize_dss_exact() escalates Int64 -> Int128 -> BigInt
+// when checked arithmetic overflows (re-feeding the points) and says which type served. After an
+// OverflowError a recognizer's state is unspecified: discard it and re-run on a wider type.
 //
 // Sources: Debled-Rennesson and Reveilles, A linear algorithm for segmentation of digital
 // curves, IJPRAI 9(4), 1995 (extension, minimality by leaning points); Lachaud, Vialard and de
@@ -370,7 +371,6 @@ struct DssRecognition {
   std::size_t longest_prefix = 0;
   Connectivity connectivity = Connectivity::eight;
   DssCharacteristics characteristics;
-  IntKind served = IntKind::int64;
 };
 
 /// 4 when every step of the path is an axis step, else 8; a step that is not 8-adjacent
@@ -378,8 +378,13 @@ struct DssRecognition {
 Connectivity path_connectivity(std::span<const Point2<std::int64_t>> path);
 Connectivity path_connectivity(std::span<const Point2<BigInt>> path);
 
-/// Recognizes the path (non-empty) with the given connectivity, exact by escalation.
-DssRecognition recognize_dss(std::span<const Point2<std::int64_t>> path, Connectivity c);
-DssRecognition recognize_dss(std::span<const Point2<BigInt>> path, Connectivity c);
+/// Recognizes the path (non-empty) with the given connectivity, computed on I (throws
+/// OverflowError when I is too narrow).
+template <TowerInt I>
+DssRecognition recognize_dss(std::span<const Point2<I>> path, Connectivity c);
+/// The same, exact by escalation (Int64 -> Int128 -> BigInt), with the type that served.
+Escalated<DssRecognition> recognize_dss_exact(std::span<const Point2<std::int64_t>> path,
+                                              Connectivity c);
+Escalated<DssRecognition> recognize_dss_exact(std::span<const Point2<BigInt>> path, Connectivity c);
 
 } // namespace zdg

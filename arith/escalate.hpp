@@ -1,6 +1,18 @@
 // Exact by escalation: run an algorithm on Int64; when checked arithmetic reports an
 // overflow, run it again on Int128, then on BigInt, and say which type served.
 //
+// The naming rule (one rule for every function of zdg that involves the integer tower):
+//   f<I>(...)      computes on the tower type I; throws OverflowError when an intermediate
+//                  leaves I (never a wrong answer, never a silent wrap).
+//   f_exact(...)   escalates Int64 -> Int128 -> BigInt (the inputs converted with int_cast,
+//                  which throws OverflowError when they do not fit: the next type is tried) and
+//                  returns Escalated<R>: the value and the type that served.
+// No other function escalates. Examples: floor_sum<I> / floor_sum_exact,
+// recognize_dss<I> / recognize_dss_exact, lattice_hull_2d<I> / lattice_hull_2d_exact,
+// lattice_hull_3d<I> / lattice_hull_3d_exact, maximal_segments<I> / maximal_segments_exact,
+// digital_moments<I> / digital_moments_exact, disc_hull<I> / disc_hull_exact.
+//
+// Writing an _exact function:
 //   auto r = zdg::escalate([&]<class I>(std::type_identity<I>) { return f<I>(...); });
 //   r.value  the result (its type must not depend on I: convert with to_bigint/to_string)
 //   r.served IntKind::int64, int128 or bigint

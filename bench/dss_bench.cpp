@@ -33,8 +33,8 @@ void BM_RecognizeDss(benchmark::State& state) {
   const std::int64_t off = state.range(1) != 0 ? (std::int64_t{1} << 62) : 0;
   auto pts = dss_points(static_cast<std::size_t>(state.range(0)), off, -off);
   for (auto _ : state) {
-    auto r = recognize_dss(pts, Connectivity::eight);
-    if (!r.is_dss) state.SkipWithError("not a DSS");
+    auto r = recognize_dss_exact(pts, Connectivity::eight);
+    if (!r.value.is_dss) state.SkipWithError("not a DSS");
     benchmark::DoNotOptimize(r);
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
@@ -59,7 +59,7 @@ void BM_TangentialCoverDisc(benchmark::State& state) {
   auto c = test::disc_contour(0, 0, r * r);
   std::size_t segments = 0;
   for (auto _ : state) {
-    auto s = maximal_segments(c, true);
+    auto s = maximal_segments_exact(c, true).value;
     segments = s.size();
     benchmark::DoNotOptimize(s);
   }

@@ -28,7 +28,7 @@ void BM_DiscHull(benchmark::State& state) {
   std::size_t v = 0;
   for (auto _ : state) {
     auto h = disc_hull_exact(Rational<BigInt>(0), Rational<BigInt>(0), Rational<BigInt>(r));
-    v = h.vertices.size();
+    v = h.value.vertices.size();
     benchmark::DoNotOptimize(h);
   }
   state.counters["vertices"] = static_cast<double>(v);

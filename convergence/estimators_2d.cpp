@@ -168,42 +168,178 @@ ErrorStats run_maximal_segment_estimator(const RunInput& in) {
   return acc.stats();
 }
 
+// --- theory (papers/THEORY.md, "Rates") -----------------------------------------------------
+
+ProvenRate rate(double slope, std::string statement, std::string hypotheses, std::string source) {
+  return {slope, std::move(statement), std::move(hypotheses), std::move(source)};
+}
+
+bool smooth_strictly_convex(const ShapeClass& c) {
+  return c.c3 && c.convex && c.positive_curvature;
+}
+
+const char* const kEMC = "Esbelin, Malgouyres, Cartade 2011";
+const char* const kLVV = "Lachaud, Vialard, de Vieilleville 2007";
+
 } // namespace
 
 namespace detail {
 
 void register_2d_estimators(std::vector<Estimator>& out) {
-  out.push_back({"gauss-area", 2, "h^2 times the number of digitized pixels (from the contours)",
-                 "none", "area", false, false, 0, 0, run_gauss_area});
-  out.push_back({"moments", 2,
-                 "moments m00, m10, m01, m20, m11, m02 of the digitization (6 errors per run)",
-                 "none", "moment", false, false, 0, 0, run_moments});
-  out.push_back({"mlp-length", 2, "perimeter by the minimum length polygon of the contour", "none",
-                 "length", false, false, 0, 0, run_mlp_length});
-  out.push_back({"dss-length", 2,
-                 "perimeter by the polygon through the ends of the greedy DSS segmentation", "none",
-                 "length", false, false, 0, 0, run_dss_length});
-  out.push_back({"lmst-length", 2, "perimeter from the lambda-MST tangents of every linel",
-                 "none (parameter-free)", "length", false, false, 0, 0, run_lmst_length});
-  out.push_back({"lmst-tangent", 2,
+  out.push_back(
+      {"gauss-area",
+       2,
+       "h^2 times the number of digitized pixels (from the contours)",
+       "area",
+       {},
+       {"O(h^{15/11} log^{47/22}(1/h)) on C^3 strictly convex shapes (Huxley 1990), O(h) on convex "
+        "shapes (Gauss, Dirichlet)",
+        [](const ShapeClass& c, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          if (smooth_strictly_convex(c)) {
+            return rate(15.0 / 11.0, "O(h^{15/11} log^{47/22}(1/h))",
+                        "X convex with C^3 boundary of positive curvature", "Huxley 1990");
+          }
+          if (c.convex) return rate(1.0, "O(h)", "X convex", "Gauss, Dirichlet");
+          return std::nullopt;
+        }},
+       run_gauss_area});
+  out.push_back(
+      {"moments",
+       2,
+       "moments m00, m10, m01, m20, m11, m02 of the digitization (6 errors per run)",
+       "moment",
+       {},
+       {"O(h) on C^3 piecewise strictly convex shapes (Coeurjolly, Lachaud, Roussillon 2012)",
+        [](const ShapeClass& c, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          if (smooth_strictly_convex(c) || (c.convex && c.polygon)) {
+            return rate(1.0, "O(h)", "X convex, boundary C^3 piecewise with positive curvature",
+                        "Coeurjolly, Lachaud, Roussillon 2012");
+          }
+          return std::nullopt;
+        }},
+       run_moments});
+  out.push_back({"mlp-length",
+                 2,
+                 "perimeter by the minimum length polygon of the contour",
+                 "length",
+                 {},
+                 {"O(h) on convex shapes (Klette, Rosenfeld 2004; DGA 2012 survey)",
+                  [](const ShapeClass& c, const EstimatorParameters&) -> std::optional<ProvenRate> {
+                    if (c.convex) {
+                      return rate(1.0, "O(h)", "X convex",
+                                  "Klette, Rosenfeld 2004; DGA 2012 survey");
+                    }
+                    return std::nullopt;
+                  }},
+                 run_mlp_length});
+  out.push_back({"dss-length",
+                 2,
+                 "perimeter by the polygon through the ends of the greedy DSS segmentation",
+                 "length",
+                 {},
+                 {"O(h) on convex polygons (DGA 2012 survey)",
+                  [](const ShapeClass& c, const EstimatorParameters&) -> std::optional<ProvenRate> {
+                    if (c.convex && c.polygon) {
+                      return rate(1.0, "O(h)", "X a convex polygon", "DGA 2012 survey");
+                    }
+                    return std::nullopt;
+                  }},
+                 run_dss_length});
+  out.push_back(
+      {"lmst-length",
+       2,
+       "perimeter from the lambda-MST tangents of every linel",
+       "length",
+       {},
+       {"O(h^{1/3}) on C^3 strictly convex curves, parameter-free (observed ~h^{4/3}; LVV 2007)",
+        [](const ShapeClass& c, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          if (smooth_strictly_convex(c)) {
+            return rate(1.0 / 3.0, "O(h^{1/3})",
+                        "X convex with C^3 boundary of positive curvature (piecewise allowed)",
+                        kLVV);
+          }
+          return std::nullopt;
+        }},
+       run_lmst_length});
+  out.push_back({"lmst-tangent",
+                 2,
                  "lambda-MST tangent at every pointel (weighted pencil of maximal segments)",
-                 "none (parameter-free)", "angle (rad)", false, false, 0, 0,
+                 "angle (rad)",
+                 {},
+                 {"O(h^{1/3}) on C^3 convex curves, parameter-free (observed ~h^{2/3}; LVV 2007)",
+                  [](const ShapeClass& c, const EstimatorParameters&) -> std::optional<ProvenRate> {
+                    if (smooth_strictly_convex(c)) {
+                      return rate(1.0 / 3.0, "O(h^{1/3})",
+                                  "X convex with C^3 boundary of positive curvature", kLVV);
+                    }
+                    return std::nullopt;
+                  }},
                  run_maximal_segment_estimator<true>});
-  out.push_back({"mdss-curvature", 2,
+  out.push_back({"mdss-curvature",
+                 2,
                  "curvature of the circle through the ends of the half-tangents (maximal DSS); "
                  "not convergent: a negative control",
-                 "none", "curvature", false, false, 0, 0, run_maximal_segment_estimator<false>});
-  out.push_back({"ii-curvature", 2,
-                 "integral-invariant curvature 3pi/(2R) - 3A/R^3 at every linel (inner/outer "
-                 "pixel average)",
-                 "R = k h^alpha (defaults k = 3, alpha = 1/3)", "curvature", true, true, 3.0,
-                 1.0 / 3.0, run_ii_curvature});
-  out.push_back({"bc-tangent", 2, "binomial convolver tangent at every pointel",
-                 "mask order n = k h^(-alpha) (defaults k = 1, alpha = 4/3)", "angle (rad)", true,
-                 true, 1.0, 4.0 / 3.0, run_binomial<true>});
-  out.push_back({"bc-curvature", 2, "binomial convolver curvature at every pointel",
-                 "mask order n = k h^(-alpha) (defaults k = 1, alpha = 14/9)", "curvature", true,
-                 true, 1.0, 14.0 / 9.0, run_binomial<false>});
+                 "curvature",
+                 {},
+                 {"none: not convergent (a negative control, DGA 2012 survey)", {}},
+                 run_maximal_segment_estimator<false>});
+  out.push_back(
+      {"ii-curvature",
+       2,
+       "integral-invariant curvature 3pi/(2R) - 3A/R^3 at every linel (inner/outer pixel "
+       "average)",
+       "curvature",
+       radius_law_parameters(),
+       {"O(h^{1/3}) with R = k h^{1/3} on C^3 boundaries with positive reach (Coeurjolly, "
+        "Lachaud, Levallois DGCI 2013, CVIU 2014)",
+        [](const ShapeClass& c, const EstimatorParameters& p) -> std::optional<ProvenRate> {
+          if (c.c3 && is_one_third(p.alpha)) {
+            return rate(1.0 / 3.0, "O(h^{1/3})",
+                        "C^3 boundary with positive reach, R = k h^{1/3} (R below half the reach)",
+                        "Coeurjolly, Lachaud, Levallois, DGCI 2013 / CVIU 2014");
+          }
+          return std::nullopt;
+        }},
+       run_ii_curvature});
+  // Binomial convolver with mask n = k h^{-alpha}: smoothing bias O(h^{2 - alpha}) against
+  // noise O(h^{alpha/2}) (tangent) or O(h^{alpha - 1}) (curvature); see
+  // estimators/binomial_convolver.hpp and papers/THEORY.md.
+  out.push_back(
+      {"bc-tangent",
+       2,
+       "binomial convolver tangent at every pointel",
+       "angle (rad)",
+       {{"k", "1", 0.0, 1e6, "mask factor: order n = k h^(-alpha)"},
+        {"alpha", "4/3", 0.0, 2.0, "mask exponent: order n = k h^(-alpha)"}},
+       {"O(h^{min(2 - a, a/2)}) with mask n = k h^{-a} (O(h^{2/3}) at a = 4/3) on C^3 curves "
+        "(Esbelin, Malgouyres, Cartade 2011)",
+        [](const ShapeClass& c, const EstimatorParameters& p) -> std::optional<ProvenRate> {
+          if (c.c3 && p.alpha > 0 && p.alpha < 2) {
+            return rate(std::min(2 - p.alpha, p.alpha / 2), "O(h^{min(2 - a, a/2)})",
+                        "C^3 boundary, mask n = k h^{-a}, 0 < a < 2", kEMC);
+          }
+          return std::nullopt;
+        }},
+       run_binomial<true>});
+  out.push_back(
+      {"bc-curvature",
+       2,
+       "binomial convolver curvature at every pointel",
+       "curvature",
+       {{"k", "1", 0.0, 1e6, "mask factor: order n = k h^(-alpha)"},
+        {"alpha", "14/9", 0.0, 2.0, "mask exponent: order n = k h^(-alpha)"}},
+       {"O(h^{min(2 - a, a - 1)}) with mask n = k h^{-a} (O(h^{4/9}) at a = 14/9, only "
+        "O(h^{1/3}) at 4/3) on C^3 curves (Malgouyres, Brunet, Fourey 2008; Esbelin, "
+        "Malgouyres, Cartade 2011)",
+        [](const ShapeClass& c, const EstimatorParameters& p) -> std::optional<ProvenRate> {
+          if (c.c3 && p.alpha > 1 && p.alpha < 2) {
+            return rate(std::min(2 - p.alpha, p.alpha - 1), "O(h^{min(2 - a, a - 1)})",
+                        "C^3 boundary, mask n = k h^{-a}, 1 < a < 2",
+                        "Malgouyres, Brunet, Fourey 2008; Esbelin, Malgouyres, Cartade 2011");
+          }
+          return std::nullopt;
+        }},
+       run_binomial<false>});
 }
 
 } // namespace detail

@@ -1,6 +1,6 @@
 // The 3D estimators of the registry: digitize the translated shape, track its boundary
 // surfels, run the estimator of estimators/, and compare with the shape's ground truth at
-// the projection xi of each surfel centre (errors per surfel; see shared/THEORY.md).
+// the projection xi of each surfel centre (errors per surfel; see papers/THEORY.md).
 //
 // The integral-invariant estimators (ii-mean, ii-gaussian, ii-k1, ii-k2, ii-normal,
 // ii-directions) share one computation per (shape, h, translation, R, box): the ball
@@ -241,32 +241,77 @@ ErrorStats run_ii(const RunInput& in) {
   return acc.stats();
 }
 
+// --- theory (papers/THEORY.md, "Rates") -----------------------------------------------------
+
+const char* const kCLL = "Coeurjolly, Lachaud, Levallois, CVIU 2014";
+const char* const kLCL = "Lachaud, Coeurjolly, Levallois 2017";
+
+// The integral-invariant rates: slope with R = k h^{1/3} on C^3 surfaces with positive reach
+// (and away from umbilics for the principal directions).
+EstimatorTheory ii_theory(double slope, const std::string& statement, const std::string& source,
+                          bool needs_non_umbilic) {
+  const std::string hypotheses =
+      std::string("C^3 surface with positive reach, R = k h^{1/3} (R below half the reach)") +
+      (needs_non_umbilic ? ", away from umbilics (k1 != k2)" : "");
+  return {statement + " with R = k h^{1/3} on C^3 surfaces with positive reach (" + source + ")",
+          [=](const ShapeClass& c, const EstimatorParameters& p) -> std::optional<ProvenRate> {
+            if (c.c3 && detail::is_one_third(p.alpha) && !(needs_non_umbilic && c.umbilic)) {
+              return ProvenRate{slope, statement, hypotheses, source};
+            }
+            return std::nullopt;
+          }};
+}
+
 } // namespace
 
 namespace detail {
 
 void register_3d_estimators(std::vector<Estimator>& out) {
-  const std::string law = "R = k h^alpha (defaults k = 3, alpha = 1/3)";
-  out.push_back({"gauss-volume", 3, "h^3 times the number of digitized voxels (counted in the box)",
-                 "none", "volume", false, false, 0, 0, run_gauss_volume});
+  out.push_back(
+      {"gauss-volume",
+       3,
+       "h^3 times the number of digitized voxels (counted in the box)",
+       "volume",
+       {},
+       {"O(h^{243/158}) on C^3 strictly convex bodies (Kraetzel; Guo), O(h) on convex bodies",
+        [](const ShapeClass& c, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          if (c.c3 && c.convex && c.positive_curvature) {
+            return ProvenRate{243.0 / 158.0, "O(h^{243/158})",
+                              "X convex with C^3 boundary of positive Gaussian curvature",
+                              "Kraetzel; Guo (lattice points in smooth convex bodies)"};
+          }
+          if (c.convex) return ProvenRate{1.0, "O(h)", "X convex", "lattice-point theory"};
+          return std::nullopt;
+        }},
+       run_gauss_volume});
   out.push_back({"ii-mean", 3,
                  "integral-invariant mean curvature 8/(3R) - 4V/(pi R^4) at every surfel "
                  "(inner/outer voxel average)",
-                 law, "curvature", true, true, 3.0, 1.0 / 3.0, run_ii<IIQuantity::mean>});
+                 "curvature", radius_law_parameters(),
+                 ii_theory(1.0 / 3.0, "O(h^{1/3})", kCLL, false), run_ii<IIQuantity::mean>});
   out.push_back({"ii-gaussian", 3, "integral-invariant Gaussian curvature k1 k2 at every surfel",
-                 law, "curvature^2", true, true, 3.0, 1.0 / 3.0, run_ii<IIQuantity::gaussian>});
+                 "curvature^2", radius_law_parameters(),
+                 ii_theory(1.0 / 3.0, "O(h^{1/3})", std::string(kCLL) + ", Thm 6", false),
+                 run_ii<IIQuantity::gaussian>});
   out.push_back({"ii-k1", 3,
-                 "integral-invariant smaller principal curvature k1 (covariance eigenvalues)", law,
-                 "curvature", true, true, 3.0, 1.0 / 3.0, run_ii<IIQuantity::k1>});
+                 "integral-invariant smaller principal curvature k1 (covariance eigenvalues)",
+                 "curvature", radius_law_parameters(),
+                 ii_theory(1.0 / 3.0, "O(h^{1/3})", std::string(kCLL) + ", Thm 6", false),
+                 run_ii<IIQuantity::k1>});
   out.push_back({"ii-k2", 3,
-                 "integral-invariant larger principal curvature k2 (covariance eigenvalues)", law,
-                 "curvature", true, true, 3.0, 1.0 / 3.0, run_ii<IIQuantity::k2>});
-  out.push_back({"ii-normal", 3, "integral-invariant normal (smallest covariance eigenvector)", law,
-                 "angle (rad)", true, true, 3.0, 1.0 / 3.0, run_ii<IIQuantity::normal>});
+                 "integral-invariant larger principal curvature k2 (covariance eigenvalues)",
+                 "curvature", radius_law_parameters(),
+                 ii_theory(1.0 / 3.0, "O(h^{1/3})", std::string(kCLL) + ", Thm 6", false),
+                 run_ii<IIQuantity::k2>});
+  out.push_back({"ii-normal", 3, "integral-invariant normal (smallest covariance eigenvector)",
+                 "angle (rad)", radius_law_parameters(),
+                 ii_theory(2.0 / 3.0, "O(h^{2/3})", kLCL, false), run_ii<IIQuantity::normal>});
   out.push_back({"ii-directions", 3,
                  "integral-invariant principal directions matched by value (max of the two "
                  "line angles; surfels where k2 - k1 < max(0.1 max |k|, 0.01) are skipped)",
-                 law, "angle (rad)", true, true, 3.0, 1.0 / 3.0, run_ii<IIQuantity::directions>});
+                 "angle (rad)", radius_law_parameters(),
+                 ii_theory(1.0 / 3.0, "O(h^{1/3}) / |k1 - k2|", kLCL, true),
+                 run_ii<IIQuantity::directions>});
 }
 
 } // namespace detail

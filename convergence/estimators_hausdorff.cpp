@@ -83,15 +83,33 @@ ErrorStats run_hausdorff(const RunInput& in) {
 namespace detail {
 
 void register_hausdorff_estimators(std::vector<Estimator>& out) {
-  out.push_back({"hausdorff", 0,
-                 "largest distance of the centre and the pointels of each boundary element "
-                 "(linel / surfel) to the true boundary, 2D or 3D; l_inf <= sqrt(d) h / 2 "
-                 "(Lachaud-Thibert 2016)",
-                 "none", "length", false, false, 0, 0, run_hausdorff<false>});
-  out.push_back({"hausdorff-rel", 0,
-                 "the same distances divided by the bound sqrt(d) h / 2 (the bound holds when "
-                 "l_inf <= 1), 2D or 3D",
-                 "none", "ratio", false, false, 0, 0, run_hausdorff<true>});
+  out.push_back(
+      {"hausdorff",
+       0,
+       "largest distance of the centre and the pointels of each boundary element (linel / "
+       "surfel) to the true boundary, 2D or 3D; l_inf <= sqrt(d) h / 2 (Lachaud-Thibert 2016)",
+       "length",
+       {},
+       {"O(h): at most sqrt(d) h / 2 for h < 2 rho / sqrt(d) when the reach exceeds rho "
+        "(Lachaud, Thibert, JMIV 2016)",
+        [](const ShapeClass& c, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          if (c.c3) {
+            return ProvenRate{1.0, "O(h): at most sqrt(d) h / 2",
+                              "reach > rho (C^3 boundary), h < 2 rho / sqrt(d)",
+                              "Lachaud, Thibert, JMIV 2016"};
+          }
+          return std::nullopt;
+        }},
+       run_hausdorff<false>});
+  out.push_back(
+      {"hausdorff-rel",
+       0,
+       "the same distances divided by the bound sqrt(d) h / 2 (the bound holds when "
+       "l_inf <= 1), 2D or 3D",
+       "ratio",
+       {},
+       {"none: a ratio to the Lachaud-Thibert bound, read as l_inf <= 1, not a slope", {}},
+       run_hausdorff<true>});
 }
 
 } // namespace detail

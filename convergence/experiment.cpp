@@ -1,17 +1,15 @@
 #include <zdg/convergence/experiment.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/arith/rational.hpp>
-#include <zdg/convergence/theory.hpp>
+#include <zdg/convergence/number_text.hpp>
 #include <zdg/kernel/parallel_for.hpp>
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <exception>
-#include <map>
 #include <mutex>
+#include <numeric>
 #include <ostream>
 #include <sstream>
 
@@ -30,246 +28,306 @@ std::vector<std::string> split(const std::string& s, char sep) {
   }
 }
 
-// A rational (7, -3/4, 0.125) or a decimal in scientific notation (1.7e-4).
-double number(const std::string& text, const std::string& what) {
-  try {
-    return parse_rational<BigInt>(text).to_double();
-  } catch (const InvalidArgument&) {
-  }
-  std::size_t used = 0;
-  double v = 0;
-  bool ok = text.find_first_of("eE") != std::string::npos &&
-            text.find_first_not_of("0123456789.eE+-") == std::string::npos;
-  if (ok) {
-    try {
-      v = std::stod(text, &used);
-    } catch (const std::exception&) {
-      ok = false;
-    }
-  }
-  if (!ok || used != text.size() || !std::isfinite(v) || (v != 0 && std::abs(v) < 1e-300)) {
-    throw InvalidArgument(what + ": '" + text + "' is not a number");
-  }
-  return v;
+std::string csv_field(const std::string& text) {
+  std::string out = "\"";
+  for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + '"';
 }
 
-long integer(const std::string& text, const std::string& what) {
-  try {
-    return static_cast<long>(parse_integer<Int64>(text).value());
-  } catch (const Error&) {
-    throw InvalidArgument(what + ": '" + text + "' is not an integer");
-  }
+std::string shown(const std::string& text) {
+  return "'" + (text.size() <= 60 ? text : text.substr(0, 57) + "...") + "'";
 }
 
 } // namespace
 
-double parse_parameter(const std::string& text, const std::string& what) {
-  double v = number(text, what);
-  if (!(v > 0)) throw InvalidArgument(what + " = " + text + " must be > 0");
-  return v;
-}
-
-std::vector<double> parse_grid_steps(const std::string& text) {
+std::vector<double> parse_grid_steps(const std::string& text, const std::string& what) {
   std::vector<double> hs;
   auto parts = split(text, ':');
   if (!parts.empty() && parts[0] == "exp") {
     if (parts.size() < 3 || parts.size() > 4) {
-      throw InvalidArgument("--h '" + text + "': expected exp:I0:I1[:STEP]");
+      throw InvalidArgument(what + " " + shown(text) + ": expected exp:I0:I1[:STEP]");
     }
-    long i0 = integer(parts[1], "--h I0"), i1 = integer(parts[2], "--h I1");
-    long step = parts.size() == 4 ? integer(parts[3], "--h STEP") : 1;
-    if (step <= 0 || i1 < i0 || i0 < 0 || i1 > 400) {
-      throw InvalidArgument("--h '" + text + "': need 0 <= I0 <= I1 <= 400 and STEP > 0");
-    }
-    for (long i = i0; i <= i1; i += step) hs.push_back(std::exp(-static_cast<double>(i) / 10));
+    const auto i0 = parse_integer_in(parts[1], what + " I0", 0, 400);
+    const auto i1 = parse_integer_in(parts[2], what + " I1", i0, 400);
+    const auto step = parts.size() == 4 ? parse_integer_in(parts[3], what + " STEP", 1, 400) : 1;
+    for (auto i = i0; i <= i1; i += step) hs.push_back(std::exp(-static_cast<double>(i) / 10));
   } else if (parts.size() == 3) {
-    double hmax = parse_parameter(parts[0], "--h HMAX"),
-           hmin = parse_parameter(parts[1], "--h HMIN");
-    long n = integer(parts[2], "--h N");
-    if (n < 1 || n > 10000) throw InvalidArgument("--h '" + text + "': N must be in 1..10000");
-    if (hmin > hmax) throw InvalidArgument("--h '" + text + "': HMIN must be <= HMAX");
-    for (long i = 0; i < n; ++i) {
+    const double hmax = parse_real_in(parts[0], what + " HMAX", 0.0, 1e6),
+                 hmin = parse_real_in(parts[1], what + " HMIN", 0.0, 1e6);
+    const auto n = parse_integer_in(parts[2], what + " N", 1, 10000);
+    if (hmin > hmax) throw InvalidArgument(what + " " + shown(text) + ": HMIN must be <= HMAX");
+    for (std::int64_t i = 0; i < n; ++i) {
       hs.push_back(n == 1 ? hmax : hmax * std::pow(hmin / hmax, double(i) / double(n - 1)));
     }
   } else if (parts.size() == 1) {
-    for (const auto& item : split(text, ',')) hs.push_back(parse_parameter(item, "--h"));
+    auto items = split(text, ',');
+    if (items.size() > 10000) throw InvalidArgument(what + ": more than 10000 grid steps");
+    for (const auto& item : items) hs.push_back(parse_real_in(item, what, 0.0, 1e6));
   } else {
-    throw InvalidArgument("--h '" + text +
-                          "': expected HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
+    throw InvalidArgument(what + " " + shown(text) +
+                          ": expected HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
   }
   for (double h : hs) {
-    if (!(h > 0) || h > 1e6) throw InvalidArgument("--h '" + text + "': steps must be > 0");
+    if (!(h > 0) || h > 1e6)
+      throw InvalidArgument(what + " " + shown(text) + ": steps must be > 0");
   }
   return hs;
 }
 
-std::pair<double, double> parse_box(const std::string& text) {
+std::pair<double, double> parse_box(const std::string& text, const std::string& what) {
   auto parts = split(text, ':');
-  if (parts.size() != 2) throw InvalidArgument("--box '" + text + "': expected LO:HI");
-  double lo = number(parts[0], "--box LO"), hi = number(parts[1], "--box HI");
-  if (!(lo < hi)) throw InvalidArgument("--box '" + text + "': LO must be < HI");
+  if (parts.size() != 2) throw InvalidArgument(what + " " + shown(text) + ": expected LO:HI");
+  const double lo = parse_real(parts[0], what + " LO"), hi = parse_real(parts[1], what + " HI");
+  if (!(lo < hi)) throw InvalidArgument(what + " " + shown(text) + ": LO must be < HI");
+  if (std::abs(lo) > 1e9 || std::abs(hi) > 1e9) {
+    throw InvalidArgument(what + " " + shown(text) + ": |LO| and |HI| must be at most 1e9");
+  }
   return {lo, hi};
 }
 
-ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn& progress) {
+// --- validation ------------------------------------------------------------------------------
+
+ExperimentPlan plan_experiment(const ExperimentConfig& config) {
   if (config.shapes.empty()) throw InvalidArgument("no shape given (--shape)");
   if (config.estimators.empty()) throw InvalidArgument("no estimator given (--estimator)");
   if (config.hs.empty()) throw InvalidArgument("no grid step given (--h)");
   if (config.translations < 0 || config.translations > 100000) {
-    throw InvalidArgument("--translations must be in 0..100000");
+    throw InvalidArgument("translations must be in 0..100000");
   }
-  if (config.threads < 1 || config.threads > 1024) throw InvalidArgument("--threads must be >= 1");
-  if (config.fit_levels < 0 || config.fit_levels == 1) {
-    throw InvalidArgument("--fit-levels must be 0 (all) or >= 2");
+  if (config.threads < 1 || config.threads > 1024) {
+    throw InvalidArgument("threads must be in 1..1024");
   }
-  std::vector<std::unique_ptr<Shape>> shapes;
-  for (const auto& s : config.shapes) shapes.push_back(parse_shape(s));
-  std::vector<const Estimator*> ests;
-  for (const auto& e : config.estimators) ests.push_back(&find_estimator(e));
-  for (const auto& s : shapes) {
-    for (const auto* e : ests) {
-      if (e->dimension != 0 && s->dimension() != e->dimension) { // 0: any dimension
-        throw InvalidArgument("estimator '" + e->name + "' is " + std::to_string(e->dimension) +
+  if (config.fit_levels < 0 || config.fit_levels == 1 || config.fit_levels > 100000) {
+    throw InvalidArgument("fit levels must be 0 (all) or in 2..100000");
+  }
+  if (!(config.tolerance >= 0 && config.tolerance <= 10)) {
+    throw InvalidArgument("tolerance must be a number in [0, 10]");
+  }
+  for (double h : config.hs) {
+    if (!(h > 0 && h <= 1e6)) throw InvalidArgument("grid steps must be in (0, 1e6]");
+  }
+  ExperimentPlan plan;
+  for (const auto& s : config.shapes) {
+    auto shape = parse_shape(s);
+    for (const auto& other : plan.shapes) {
+      if (other->spec() == shape->spec())
+        throw InvalidArgument("shape " + shown(s) + " given twice");
+    }
+    plan.shapes.push_back(std::move(shape));
+  }
+  for (const auto& text : config.estimators) {
+    EstimatorSpec spec = parse_estimator_spec(text);
+    EstimatorEntry entry;
+    entry.estimator = &find_estimator(spec.name);
+    entry.label = spec.label();
+    entry.parameters = resolve_parameters(spec, config.k_text, config.alpha_text);
+    for (const auto& other : plan.entries) {
+      if (other.label == entry.label) {
+        throw InvalidArgument("estimator " + shown(entry.label) + " given twice");
+      }
+    }
+    plan.entries.push_back(std::move(entry));
+  }
+  for (const auto& s : plan.shapes) {
+    for (const auto& e : plan.entries) {
+      const int d = e.estimator->dimension;
+      if (d != 0 && s->dimension() != d) { // 0: any dimension
+        throw InvalidArgument("estimator '" + e.label + "' is " + std::to_string(d) +
                               "D but shape '" + s->spec() + "' is " +
                               std::to_string(s->dimension()) + "D");
       }
     }
   }
-  std::vector<double> hs = config.hs;
-  std::sort(hs.begin(), hs.end(), std::greater<>());
-  hs.erase(std::unique(hs.begin(), hs.end()), hs.end());
+  plan.hs = config.hs;
+  std::sort(plan.hs.begin(), plan.hs.end(), std::greater<>());
+  plan.hs.erase(std::unique(plan.hs.begin(), plan.hs.end()), plan.hs.end());
+  plan.runs_per_level = std::max(1, config.translations);
+  return plan;
+}
 
-  // Jobs, finest h first (the longest ones) for load balance.
+// --- scheduling ------------------------------------------------------------------------------
+
+namespace {
+
+// The digitization domain of one run: --box, else the shape's bounding box (translated, with a
+// margin of two steps), else its default domain.
+std::vector<std::pair<double, double>> run_box(const ExperimentConfig& config, const Shape& shape,
+                                               const std::vector<double>& offset, double h) {
+  const auto d = static_cast<std::size_t>(shape.dimension());
+  std::vector<std::pair<double, double>> box;
+  if (config.box) {
+    box.assign(d, *config.box);
+  } else if (auto bb = shape.bounding_box()) {
+    box = *bb;
+    for (std::size_t a = 0; a < box.size(); ++a) {
+      box[a].first += offset[a] - 2 * h;
+      box[a].second += offset[a] + 2 * h;
+    }
+  } else {
+    box.assign(d, shape.default_domain());
+  }
+  return box;
+}
+
+bool record_order(const RunRecord& a, const RunRecord& b) {
+  if (a.shape_index != b.shape_index) return a.shape_index < b.shape_index;
+  if (a.entry_index != b.entry_index) return a.entry_index < b.entry_index;
+  if (a.h != b.h) return a.h > b.h;
+  return a.translation < b.translation;
+}
+
+} // namespace
+
+std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConfig& config,
+                                const ProgressFn& progress) {
   struct Job {
-    std::size_t shape, est;
+    std::size_t shape, entry;
     double h;
     int translation;
   };
   std::vector<Job> jobs;
-  const int nt = std::max(1, config.translations);
-  for (auto it = hs.rbegin(); it != hs.rend(); ++it) {
-    for (std::size_t s = 0; s < shapes.size(); ++s) {
-      for (std::size_t e = 0; e < ests.size(); ++e) {
-        for (int t = 0; t < nt; ++t) jobs.push_back({s, e, *it, t});
+  for (auto it = plan.hs.rbegin(); it != plan.hs.rend(); ++it) { // finest first
+    for (std::size_t s = 0; s < plan.shapes.size(); ++s) {
+      for (std::size_t e = 0; e < plan.entries.size(); ++e) {
+        for (int t = 0; t < plan.runs_per_level; ++t) jobs.push_back({s, e, *it, t});
       }
     }
   }
   std::vector<RunRecord> records(jobs.size());
   std::atomic<std::size_t> done{0};
   std::mutex mutex;
-  parallel_for(
-      std::int64_t(jobs.size()), unsigned(std::max(config.threads, 1)), [&](std::int64_t ji) {
-        const auto i = std::size_t(ji);
-        const Job& job = jobs[i];
-        const Shape& shape = *shapes[job.shape];
-        const Estimator& est = *ests[job.est];
-        const int d = shape.dimension();
-        RunRecord r;
-        r.shape = shape.spec();
-        r.estimator = est.name;
-        r.h = job.h;
-        r.translation = job.translation;
-        r.offset = config.translations == 0
-                       ? std::vector<double>(static_cast<std::size_t>(d), 0.0)
-                       : random_translation(config.seed, job.translation, d, job.h);
-        r.k = config.k_text ? parse_parameter(*config.k_text, "--k") : est.default_k;
-        r.alpha = config.alpha_text ? number(*config.alpha_text, "--alpha") : est.default_alpha;
-        std::vector<std::pair<double, double>> box;
-        if (config.box) {
-          box.assign(static_cast<std::size_t>(d), *config.box);
-        } else if (auto bb = shape.bounding_box()) {
-          box = *bb;
-          for (std::size_t a = 0; a < box.size(); ++a) {
-            box[a].first += r.offset[a] - 2 * job.h;
-            box[a].second += r.offset[a] + 2 * job.h;
-          }
-        } else {
-          box.assign(static_cast<std::size_t>(d), shape.default_domain());
-        }
-        RunInput in{shape, job.h, r.offset, box, r.k, r.alpha};
-        auto t0 = std::chrono::steady_clock::now();
-        r.errors = est.run(in);
-        r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        if (!std::isfinite(r.errors.linf) || !std::isfinite(r.errors.l2)) {
-          throw Error("estimator '" + est.name + "' produced a non-finite error on '" + r.shape +
-                      "' at h = " + std::to_string(job.h) + " (translation " +
-                      std::to_string(job.translation) + ")");
-        }
-        records[i] = std::move(r);
-        std::size_t n = done.fetch_add(1) + 1;
-        if (progress) {
-          std::lock_guard<std::mutex> lock(mutex);
-          progress(n, jobs.size(), records[i]);
-        }
-      });
-
-  ExperimentResult result;
-  // Rows in the order shape, estimator, h (decreasing), translation.
-  for (const auto& s : shapes) {
-    for (const auto* e : ests) {
-      for (double h : hs) {
-        for (int t = 0; t < nt; ++t) {
-          for (auto& r : records) {
-            if (r.shape == s->spec() && r.estimator == e->name && r.h == h && r.translation == t) {
-              result.runs.push_back(r);
-            }
-          }
-        }
-      }
-      // Fits per norm on the finest levels.
-      std::vector<double> lh, linf, l2, mean;
-      for (double h : hs) {
-        double a = 0, b = 0, c = 0;
-        int n = 0;
-        for (const auto& r : records) {
-          if (r.shape != s->spec() || r.estimator != e->name || r.h != h) continue;
-          a = std::max(a, r.errors.linf);
-          b += r.errors.l2;
-          c += r.errors.mean;
-          ++n;
-        }
-        lh.push_back(h);
-        linf.push_back(a);
-        l2.push_back(b / n);
-        mean.push_back(c / n);
-      }
-      std::size_t levels = config.fit_levels == 0
-                               ? lh.size()
-                               : std::min(lh.size(), static_cast<std::size_t>(config.fit_levels));
-      auto tail = [&](const std::vector<double>& v) {
-        return std::vector<double>(v.end() - static_cast<std::ptrdiff_t>(levels), v.end());
-      };
-      double alpha = config.alpha_text ? number(*config.alpha_text, "--alpha") : e->default_alpha;
-      auto rate = theory_rate(e->name, *s, alpha);
-      const std::pair<const char*, const std::vector<double>*> norms[] = {
-          {"linf", &linf}, {"l2", &l2}, {"mean", &mean}};
-      for (const auto& [name, values] : norms) {
-        FitRecord f;
-        f.shape = s->spec();
-        f.estimator = e->name;
-        f.norm = name;
-        f.hs = tail(lh);
-        f.fit = fit_loglog(f.hs, tail(*values));
-        if (rate) {
-          f.expected = rate->slope;
-          f.theory = rate->statement;
-          f.source = rate->source;
-          if (std::string(name) == "linf") {
-            bool all_zero = std::all_of(values->end() - static_cast<std::ptrdiff_t>(levels),
-                                        values->end(), [](double v) { return v == 0; });
-            // Fewer than two levels with an error: no slope, hence no verdict (unless the
-            // estimator was exact everywhere).
-            if (all_zero || f.fit.n >= 2) {
-              bool ok = all_zero || f.fit.slope >= rate->slope - config.tolerance;
-              f.pass = ok;
-              result.all_pass = result.all_pass && ok;
-            }
-          }
-        }
-        result.fits.push_back(std::move(f));
-      }
+  parallel_for(std::int64_t(jobs.size()), unsigned(config.threads), [&](std::int64_t ji) {
+    const auto i = std::size_t(ji);
+    const Job& job = jobs[i];
+    const Shape& shape = *plan.shapes[job.shape];
+    const EstimatorEntry& entry = plan.entries[job.entry];
+    RunRecord r;
+    r.shape_index = job.shape;
+    r.entry_index = job.entry;
+    r.shape = shape.spec();
+    r.estimator = entry.label;
+    r.h = job.h;
+    r.translation = job.translation;
+    r.offset = config.translations == 0
+                   ? std::vector<double>(static_cast<std::size_t>(shape.dimension()), 0.0)
+                   : random_translation(config.seed, job.translation, shape.dimension(), job.h);
+    r.k = entry.parameters.k;
+    r.alpha = entry.parameters.alpha;
+    RunInput in{shape, job.h, r.offset, run_box(config, shape, r.offset, job.h), r.k, r.alpha};
+    auto t0 = std::chrono::steady_clock::now();
+    r.errors = entry.estimator->run(in);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!std::isfinite(r.errors.linf) || !std::isfinite(r.errors.l2)) {
+      throw Error("estimator '" + entry.label + "' produced a non-finite error on '" + r.shape +
+                  "' at h = " + std::to_string(job.h) + " (translation " +
+                  std::to_string(job.translation) + ")");
     }
+    records[i] = std::move(r);
+    std::size_t n = done.fetch_add(1) + 1;
+    if (progress) {
+      std::lock_guard<std::mutex> lock(mutex);
+      progress(n, jobs.size(), records[i]);
+    }
+  });
+  std::sort(records.begin(), records.end(), record_order);
+  return records;
+}
+
+// --- aggregation -----------------------------------------------------------------------------
+
+std::vector<LevelErrors> aggregate_levels(std::vector<RunRecord> runs) {
+  std::sort(runs.begin(), runs.end(), record_order); // O(n log n); a no-op on run_plan's order
+  std::vector<LevelErrors> out;
+  for (std::size_t i = 0; i < runs.size();) {
+    LevelErrors level;
+    level.shape_index = runs[i].shape_index;
+    level.entry_index = runs[i].entry_index;
+    level.h = runs[i].h;
+    double l2 = 0, mean = 0;
+    std::size_t j = i;
+    for (; j < runs.size() && runs[j].shape_index == level.shape_index &&
+           runs[j].entry_index == level.entry_index && runs[j].h == level.h;
+         ++j) {
+      level.linf = std::max(level.linf, runs[j].errors.linf);
+      l2 += runs[j].errors.l2;
+      mean += runs[j].errors.mean;
+    }
+    level.runs = static_cast<int>(j - i);
+    level.l2 = l2 / level.runs;
+    level.mean = mean / level.runs;
+    out.push_back(level);
+    i = j;
   }
+  return out;
+}
+
+// --- fitting ---------------------------------------------------------------------------------
+
+std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
+                                      const std::vector<LevelErrors>& levels, int fit_levels,
+                                      double tolerance, bool& all_pass) {
+  std::vector<FitRecord> fits;
+  // levels are grouped by (shape, entry) with h decreasing: the finest levels are each
+  // group's tail.
+  for (std::size_t i = 0; i < levels.size();) {
+    std::size_t j = i;
+    while (j < levels.size() && levels[j].shape_index == levels[i].shape_index &&
+           levels[j].entry_index == levels[i].entry_index) {
+      ++j;
+    }
+    const std::size_t n = j - i;
+    const std::size_t used = fit_levels == 0 ? n : std::min(n, std::size_t(fit_levels));
+    const std::size_t first = j - used;
+    const Shape& shape = *plan.shapes[levels[i].shape_index];
+    const EstimatorEntry& entry = plan.entries[levels[i].entry_index];
+    const auto rate = entry.estimator->proven_rate(shape, entry.parameters);
+    std::vector<double> hs, linf, l2, mean;
+    for (std::size_t k = first; k < j; ++k) {
+      hs.push_back(levels[k].h);
+      linf.push_back(levels[k].linf);
+      l2.push_back(levels[k].l2);
+      mean.push_back(levels[k].mean);
+    }
+    const std::pair<const char*, const std::vector<double>*> norms[] = {
+        {"linf", &linf}, {"l2", &l2}, {"mean", &mean}};
+    for (const auto& [name, values] : norms) {
+      FitRecord f;
+      f.shape = shape.spec();
+      f.estimator = entry.label;
+      f.norm = name;
+      f.hs = hs;
+      f.fit = fit_loglog(hs, *values);
+      if (rate) {
+        f.expected = rate->slope;
+        f.theory = rate->statement;
+        f.hypotheses = rate->hypotheses;
+        f.source = rate->source;
+        if (std::string(name) == "linf") {
+          const bool all_zero =
+              std::all_of(values->begin(), values->end(), [](double v) { return v == 0; });
+          // Fewer than two levels with an error: no slope, hence no verdict (unless the
+          // estimator was exact everywhere).
+          if (all_zero || f.fit.n >= 2) {
+            const bool ok = all_zero || f.fit.slope >= rate->slope - tolerance;
+            f.pass = ok;
+            all_pass = all_pass && ok;
+          }
+        }
+      }
+      fits.push_back(std::move(f));
+    }
+    i = j;
+  }
+  return fits;
+}
+
+ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn& progress) {
+  const ExperimentPlan plan = plan_experiment(config);
+  ExperimentResult result;
+  result.entries = plan.entries;
+  result.runs = run_plan(plan, config, progress);
+  result.fits = fit_experiment(plan, aggregate_levels(result.runs), config.fit_levels,
+                               config.tolerance, result.all_pass);
   return result;
 }
 
@@ -280,8 +338,9 @@ void write_results_csv(const ExperimentResult& result, std::ostream& out) {
     std::ostringstream offset;
     offset.precision(17);
     for (std::size_t i = 0; i < r.offset.size(); ++i) offset << (i > 0 ? " " : "") << r.offset[i];
-    out << '"' << r.shape << "\"," << r.estimator << ',' << r.h << ',' << r.translation << ",\""
-        << offset.str() << "\"," << r.k << ',' << r.alpha << ',' << r.errors.linf << ','
+    // Shapes and entry labels may hold commas: quoted (RFC 4180).
+    out << csv_field(r.shape) << ',' << csv_field(r.estimator) << ',' << r.h << ',' << r.translation
+        << ",\"" << offset.str() << "\"," << r.k << ',' << r.alpha << ',' << r.errors.linf << ','
         << r.errors.l2 << ',' << r.errors.mean << ',' << r.errors.n << ',' << r.seconds << '\n';
   }
 }

@@ -1,14 +1,25 @@
-// A multigrid convergence experiment: shapes x estimators x grid steps x translations.
-// For every (shape, estimator, h, translation) one run records the error statistics over
-// the boundary elements (ErrorStats) and its time; then, per (shape, estimator) and norm,
-// log(error) is fitted against log(h) on the finest levels and the l_inf slope is checked
-// against the proven rate (convergence/theory.hpp): pass when slope >= rate - tolerance.
-// Per h, the errors of the translations are aggregated before the fit: the maximum for
-// l_inf (the worst case over translations), the average for l_2 and the mean.
+// A multigrid convergence experiment: shapes x estimator entries x grid steps x translations.
+// For every (shape, entry, h, translation) one run records the error statistics over the
+// boundary elements (ErrorStats) and its time; then, per (shape, entry) and norm, log(error)
+// is fitted against log(h) on the finest levels and the l_inf slope is checked against the
+// rate the entry's estimator proves on that shape (convergence/estimator.hpp,
+// papers/THEORY.md): pass when slope >= rate - tolerance. Per h, the errors of the
+// translations are aggregated before the fit: the maximum for l_inf (the worst case over
+// translations), the average for l_2 and the mean.
 //
-// Dimension-agnostic: shapes and estimators know their dimension (they must agree); the
-// loop, the norms, the fit and the outputs are the same in 2D and 3D. Runs are spread
-// over `threads` std::threads, finest grid steps first.
+// An estimator entry is a registry estimator with its parameters (`bc-curvature:alpha=14/9`):
+// two entries of one estimator with different parameters are two curves of the experiment.
+//
+// The steps, each a function (run_experiment composes them):
+//   plan_experiment    validation: shapes parse, entries resolve, dimensions agree, grid steps
+//                      sorted decreasing without repeats, counts in range. O(input).
+//   run_plan           scheduling: one job per run, finest grid steps first (the longest jobs,
+//                      for load balance) over `threads` workers (kernel/parallel_for.hpp).
+//   aggregate_levels   aggregation per (shape, entry, h), after sorting the records: O(n log n)
+//                      for n runs.
+//   fit_experiment     the fits per norm on the finest levels, and the theory verdicts.
+// Dimension-agnostic: shapes and estimators know their dimension (they must agree); the loop,
+// the norms, the fit and the outputs are the same in 2D and 3D.
 #pragma once
 
 #include <zdg/convergence/estimator.hpp>
@@ -27,29 +38,45 @@ namespace zdg {
 
 struct ExperimentConfig {
   std::vector<std::string> shapes;
-  std::vector<std::string> estimators;
+  std::vector<std::string> estimators;   // entries NAME[:KEY=VALUE,...]
   std::vector<double> hs;                // grid steps (any order; sorted decreasing)
   std::string h_text;                    // as given, for the provenance
-  std::optional<std::string> k_text;     // parameter k (rational), default per estimator
-  std::optional<std::string> alpha_text; // exponent alpha (rational), default per estimator
+  std::optional<std::string> k_text;     // default k (rational) of every entry that uses k
+  std::optional<std::string> alpha_text; // default alpha of every entry that uses alpha
   int translations = 0;                  // 0: the untranslated shape only
   std::uint64_t seed = 0;
   std::optional<std::pair<double, double>> box; // [LO, HI]^d, default: the shape's box
   int fit_levels = 0;                           // 0: all levels
   double tolerance = 0.1;
   int threads = 1;
+  std::string title; // plot title (provenance only)
 };
 
 /// Parses `HMAX:HMIN:N` (N geometric steps), `exp:I0:I1[:STEP]` (h = exp(-i/10)) or a
-/// comma-separated list `h1,h2,...` (rationals allowed); throws InvalidArgument.
-std::vector<double> parse_grid_steps(const std::string& text);
-/// Parses `LO:HI`.
-std::pair<double, double> parse_box(const std::string& text);
-/// A positive rational or decimal as a double, naming `what` in errors.
-double parse_parameter(const std::string& text, const std::string& what);
+/// comma-separated list `h1,h2,...` (rationals allowed), each step in (0, 1e6], at most 10000;
+/// throws InvalidArgument naming `what`.
+std::vector<double> parse_grid_steps(const std::string& text, const std::string& what = "--h");
+/// Parses `LO:HI` (finite, LO < HI, |LO|, |HI| <= 1e9).
+std::pair<double, double> parse_box(const std::string& text, const std::string& what = "--box");
+
+/// One estimator entry of an experiment.
+struct EstimatorEntry {
+  const Estimator* estimator = nullptr;
+  std::string label; // canonical spec text: the name in results.csv and summary.json
+  EstimatorParameters parameters;
+};
+
+/// A validated experiment.
+struct ExperimentPlan {
+  std::vector<std::unique_ptr<Shape>> shapes;
+  std::vector<EstimatorEntry> entries;
+  std::vector<double> hs; // decreasing, no repeats
+  int runs_per_level = 1; // translations per (shape, entry, h): max(1, translations)
+};
 
 struct RunRecord {
-  std::string shape, estimator;
+  std::size_t shape_index = 0, entry_index = 0; // into the plan
+  std::string shape, estimator;                 // shape spec and entry label
   double h = 0;
   int translation = 0;
   std::vector<double> offset;
@@ -58,17 +85,26 @@ struct RunRecord {
   double seconds = 0;
 };
 
+/// The errors of one level: the runs of one (shape, entry, h), aggregated over translations.
+struct LevelErrors {
+  std::size_t shape_index = 0, entry_index = 0;
+  double h = 0;
+  double linf = 0, l2 = 0, mean = 0; // max of l_inf, averages of l_2 and of the mean
+  int runs = 0;
+};
+
 struct FitRecord {
-  std::string shape, estimator, norm;
+  std::string shape, estimator, norm; // estimator: the entry label
   LogLogFit fit;
   std::vector<double> hs; // levels used
   std::optional<double> expected;
-  std::string theory, source;
+  std::string theory, hypotheses, source;
   std::optional<bool> pass;
 };
 
 struct ExperimentResult {
-  std::vector<RunRecord> runs;
+  std::vector<EstimatorEntry> entries; // of the plan, in the configuration's order
+  std::vector<RunRecord> runs;         // order: shape, entry, h decreasing, translation
   std::vector<FitRecord> fits;
   bool all_pass = true;
 };
@@ -76,11 +112,28 @@ struct ExperimentResult {
 /// Progress callback: (runs done, runs total, the run just finished).
 using ProgressFn = std::function<void(std::size_t, std::size_t, const RunRecord&)>;
 
-/// Validates the configuration (shapes parse, estimators exist, dimensions agree, steps
-/// positive) and runs it.
+/// Validation: throws InvalidArgument (one line naming the offending part) for empty lists,
+/// unknown or repeated shapes and entries, mismatched dimensions, counts out of range.
+ExperimentPlan plan_experiment(const ExperimentConfig& config);
+
+/// Scheduling: runs every job of the plan; records in the order of ExperimentResult::runs.
+std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConfig& config,
+                                const ProgressFn& progress = {});
+
+/// Aggregation per (shape, entry, h), ordered by shape, entry, h decreasing. O(n log n).
+std::vector<LevelErrors> aggregate_levels(std::vector<RunRecord> runs);
+
+/// The fits per (shape, entry) and norm (linf, l2, mean) on the `fit_levels` finest levels
+/// (0: all), with the proven rate and the l_inf verdict; all_pass is false when a verdict
+/// fails.
+std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
+                                      const std::vector<LevelErrors>& levels, int fit_levels,
+                                      double tolerance, bool& all_pass);
+
+/// plan_experiment, run_plan, aggregate_levels, fit_experiment.
 ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn& progress = {});
 
-/// results.csv: one row per shape, estimator, h, translation.
+/// results.csv: one row per shape, estimator entry, h, translation.
 void write_results_csv(const ExperimentResult& result, std::ostream& out);
 
 } // namespace zdg

@@ -54,8 +54,11 @@ std::unique_ptr<Shape> parse_shape(std::string_view spec) {
     if (names.find(kind.name) == std::string::npos)
       names += (names.empty() ? "" : ", ") + kind.name;
   }
-  if (known) throw InvalidArgument("shape '" + std::string(spec) + "' is not supported here");
-  throw InvalidArgument("unknown shape '" + std::string(name) + "' in '" + std::string(spec) +
+  auto cut = [](std::string_view t) {
+    return t.size() <= 60 ? std::string(t) : std::string(t.substr(0, 57)) + "...";
+  };
+  if (known) throw InvalidArgument("shape '" + cut(spec) + "' is not supported here");
+  throw InvalidArgument("unknown shape '" + cut(name) + "' in '" + cut(spec) +
                         "' (known: " + names + ")");
 }
 

@@ -12,10 +12,10 @@
 // is the double nearest to it, a dyadic rational, and the translation is a double too, so
 // the point h z - t is a rational known exactly. Shapes given by rational polynomials
 // (ball, ellipse without rotation, polygon, poly:) decide membership exactly: the sign of
-// F(h z - t) is computed in double with a forward error bound (filter) and recomputed in
-// Rational<BigInt> when the bound does not certify it. A rotated ellipse is the quadric
-// whose coefficients are the doubles of its rotated implicit equation (exact from then
-// on). Flowers are transcendental: membership is decided in double (r(theta) vs |p|).
+// F(h z - t) by the filtered predicate of kernel/polynomial_sign.hpp (double with a rigorous
+// error bound, Rational<BigInt> when the bound does not certify it). A rotated ellipse is the
+// quadric whose coefficients are the doubles of its rotated implicit equation (exact from then on).
+// Flowers are transcendental: membership is decided in double (r(theta) vs |p|).
 #pragma once
 
 #include <zdg/arith/point.hpp>
@@ -34,6 +34,17 @@
 
 namespace zdg {
 
+/// The regularity class of a shape: what the hypotheses of the convergence theorems ask
+/// (papers/THEORY.md, "Shape classes"). Each shape states its own; the estimators' proven rates
+/// read it (convergence/estimator.hpp).
+struct ShapeClass {
+  bool convex = false;             ///< X convex
+  bool c3 = false;                 ///< boundary C^3 (compact, hence positive reach)
+  bool positive_curvature = false; ///< curvature (2D) / Gaussian curvature (3D) > 0 everywhere
+  bool polygon = false;            ///< boundary piecewise linear (a polygon)
+  bool umbilic = false;            ///< 3D: every boundary point umbilic (k1 = k2: spheres)
+};
+
 class Shape {
 public:
   virtual ~Shape() = default;
@@ -47,6 +58,8 @@ public:
   /// Digitization domain when --box is not given and the shape has no bounding box:
   /// [-20,20]^d by default (3D implicit shapes override it with [-10,10]^3).
   virtual std::pair<double, double> default_domain() const { return {-20.0, 20.0}; }
+  /// The regularity class (default: nothing known, so no theory check applies).
+  virtual ShapeClass shape_class() const { return {}; }
 };
 
 /// A point of the true boundary with its unit tangent and curvature.

@@ -1,7 +1,8 @@
 #include <zdg/convergence/shapes_2d.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/convergence/polynomial.hpp>
+#include <zdg/kernel/polynomial.hpp>
+#include <zdg/kernel/polynomial_sign.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -19,83 +20,34 @@ constexpr double kPi = std::numbers::pi;
 
 // --- exact digitization of F <= 0 for polynomials F --------------------------------------
 
-// One polynomial with a fast double path for degree <= 2 and the exact fallback.
-class PolyPredicate {
-public:
-  explicit PolyPredicate(Polynomial f) : f_(std::move(f)) {
-    quadratic_ = f_.degree() <= 2;
-    for (const auto& m : f_.terms()) {
-      int ex = m.exponent[0], ey = m.exponent[1];
-      int idx = ex == 2 ? 0 : ex == 1 && ey == 1 ? 1 : ey == 2 ? 2 : ex == 1 ? 3 : ey == 1 ? 4 : 5;
-      q_[idx] = m.coefficient_double;
-      aq_[idx] = std::abs(m.coefficient_double);
-    }
-    gamma_ = 8.0 * (f_.degree() + static_cast<double>(f_.terms().size()) + 2.0) *
-             std::numeric_limits<double>::epsilon();
-  }
-  const Polynomial& polynomial() const { return f_; }
-  bool is_quadratic() const { return quadratic_; }
-  /// Coefficients of x^2, xy, y^2, x, y, 1 (degree <= 2).
-  const double (&coefficients() const)[6] { return q_; }
-  /// Filter bound of the quadratic for |x| <= mx, |y| <= my (including rounding of x, y).
-  double bound(double mx, double my) const {
-    return gamma_ *
-           (((aq_[0] * mx + aq_[1] * my + aq_[3]) * mx + (aq_[2] * my + aq_[4]) * my) + aq_[5]);
-  }
-
-  // Sign of F(x, y) with x = H zx - Tx exactly; xd, yd the doubles, mx, my magnitude bounds.
-  // Returns -1, 0 or 1; `exact` gives the rational point when needed.
-  template <class Exact>
-  int sign(double xd, double yd, double mx, double my, Exact&& exact) const {
-    double v, bound;
-    if (quadratic_) {
-      v = ((q_[0] * xd + q_[1] * yd + q_[3]) * xd + (q_[2] * yd + q_[4]) * yd) + q_[5];
-      bound = gamma_ *
-              (((aq_[0] * mx + aq_[1] * my + aq_[3]) * mx + (aq_[2] * my + aq_[4]) * my) + aq_[5]);
-    } else {
-      double p[2] = {xd, yd}, m[2] = {mx, my};
-      v = f_.value_with_bound(p, m, bound);
-    }
-    if (v > bound) return 1;
-    if (v < -bound) return -1;
-    auto pt = exact();
-    return f_.sign_exact(pt.data());
-  }
-
-private:
-  Polynomial f_;
-  bool quadratic_ = false;
-  double q_[6] = {0, 0, 0, 0, 0, 0}, aq_[6] = {0, 0, 0, 0, 0, 0}; // x^2 xy y^2 x y 1
-  double gamma_ = 0;
-};
-
-// G_h(X + t) for X = { F_i <= 0 for all i }.
+// G_h(X + t) for X = { F_i <= 0 for all i }: each sign by the filtered predicate of
+// kernel/polynomial_sign.hpp at the grid point h z - t.
 class PolyDigitization final : public GaussDigitization2 {
 public:
-  PolyDigitization(const std::vector<PolyPredicate>* preds, double h, P2 t, Box2 box)
-      : GaussDigitization2(box), preds_(preds), h_(h), t_(t), hx_(exact_rational(h)),
-        tx_(exact_rational(t.x)), ty_(exact_rational(t.y)) {
-    if (preds_->size() == 1 && preds_->front().is_quadratic()) {
+  PolyDigitization(const std::vector<PolynomialSign>* preds, double h, P2 t, Box2 box)
+      : GaussDigitization2(box), preds_(preds), h_(h), t_(t),
+        frame_(h, std::array<double, 2>{t.x, t.y}) {
+    if (preds_->size() == 1 && preds_->front().is_quadric()) {
       auto mag = [&](std::int64_t a, std::int64_t b, double off) {
         return 2.0 * (std::max(std::abs(h * static_cast<double>(a)),
                                std::abs(h * static_cast<double>(b))) +
                       std::abs(off));
       };
-      box_bound_ =
-          preds_->front().bound(mag(box.lo.x, box.hi.x, t.x), mag(box.lo.y, box.hi.y, t.y));
+      const double m[2] = {mag(box.lo.x, box.hi.x, t.x), mag(box.lo.y, box.hi.y, t.y)};
+      box_bound_ = preds_->front().error_bound(m);
     }
   }
 
-  // Hot loop of the integral invariants. One quadratic (ball, ellipse): a branch-free pass
-  // compares F with a bound valid for the whole box (gamma times the magnitude sum at the
-  // box corners); the few pixels it does not certify go through test().
+  // Hot loop of the integral invariants. One quadric (ball, ellipse): a branch-free pass
+  // compares F with the filter bound valid for the whole box (the magnitudes at the box
+  // corners); the few pixels it does not certify go through test().
   std::int64_t count(std::span<const Pixel> zs) const override {
-    if (preds_->size() != 1 || !preds_->front().is_quadratic()) {
+    if (preds_->size() != 1 || !preds_->front().is_quadric()) {
       std::int64_t n = 0;
       for (const auto& z : zs) n += (box().contains(z) && test(z)) ? 1 : 0;
       return n;
     }
-    const auto& q = preds_->front().coefficients();
+    const auto& q = preds_->front().quadric();
     const Box2& b = box();
     std::int64_t n = 0, unsure = 0;
     for (const auto& z : zs) {
@@ -104,7 +56,7 @@ public:
       const double v = ((q[0] * x + q[1] * y + q[3]) * x + (q[2] * y + q[4]) * y) + q[5];
       const bool in_box = (b.lo.x <= z.x) & (z.x <= b.hi.x) & (b.lo.y <= z.y) & (z.y <= b.hi.y);
       n += static_cast<std::int64_t>(in_box & (v < -box_bound_));
-      unsure += static_cast<std::int64_t>(in_box & (std::abs(v) <= box_bound_));
+      unsure += static_cast<std::int64_t>(in_box & !(std::abs(v) > box_bound_));
     }
     if (unsure > 0) {
       for (const auto& z : zs) {
@@ -112,7 +64,7 @@ public:
         const double x = h_ * static_cast<double>(z.x) - t_.x,
                      y = h_ * static_cast<double>(z.y) - t_.y;
         const double v = ((q[0] * x + q[1] * y + q[3]) * x + (q[2] * y + q[4]) * y) + q[5];
-        if (std::abs(v) <= box_bound_ && test(z)) ++n;
+        if (!(std::abs(v) > box_bound_) && test(z)) ++n;
       }
     }
     return n;
@@ -122,23 +74,18 @@ protected:
   bool inside(const Pixel& z) const override { return test(z); }
 
 private:
-  const std::vector<PolyPredicate>* preds_;
+  const std::vector<PolynomialSign>* preds_;
   double box_bound_ = 0;
   double h_;
   P2 t_;
-  BigRational hx_, tx_, ty_;
+  GridFrame frame_;
 
   bool test(const Pixel& z) const {
-    const double hzx = h_ * static_cast<double>(z.x), hzy = h_ * static_cast<double>(z.y);
-    const double x = hzx - t_.x, y = hzy - t_.y;
-    const double mx = 2.0 * (std::abs(hzx) + std::abs(t_.x)),
-                 my = 2.0 * (std::abs(hzy) + std::abs(t_.y));
-    auto exact = [&] {
-      return std::array<BigRational, 2>{hx_ * BigRational(BigInt(z.x)) - tx_,
-                                        hx_ * BigRational(BigInt(z.y)) - ty_};
-    };
-    for (const auto& p : *preds_) {
-      if (p.sign(x, y, mx, my, exact) > 0) return false;
+    const std::int64_t zz[2] = {z.x, z.y};
+    double p[2], m[2];
+    frame_.approximate(zz, p, m);
+    for (const auto& f : *preds_) {
+      if (f.sign(p, m, [&] { return frame_.exact(zz); }) > 0) return false;
     }
     return true;
   }
@@ -453,6 +400,9 @@ public:
     return rho * rk <= r0_ * rk + a_ * (cp_ * re - sp_ * im);
   }
   double max_dr() const override { return std::abs(a_ * k_); }
+  // r = R0 + A cos(K t + PHI) is analytic and |A| < R0: a C^infinity boundary (convex only
+  // for small A, not claimed).
+  ShapeClass shape_class() const override { return {.c3 = true}; }
 
   Flower(std::string spec, double r0, double a, double k, double phi)
       : spec_(std::move(spec)), r0_(r0), a_(a), k_(k), phi_(phi), cp_(std::cos(phi)),
@@ -494,6 +444,9 @@ public:
   double r_min() const override { return r1_ - std::abs(r2_); }
   double r_max() const override { return r1_ + std::abs(r2_); }
   int quadrature_samples() const override { return 1 << 20; }
+  // C^2 at t = +-pi at best (the third derivative of r jumps there; a corner unless
+  // P = m / pi^2): not C^3, so no theory check applies.
+  ShapeClass shape_class() const override { return {}; }
   double max_dr() const override { return std::abs(r2_ * p_) * 3 * kPi * kPi; }
 
 private:
@@ -527,6 +480,10 @@ public:
     return std::atan2(y / b_, x / a_);
   }
   double min_speed() const override { return std::min(a_, b_); }
+  // Ball and ellipse: convex, analytic boundary, curvature >= b / a^2 > 0.
+  ShapeClass shape_class() const override {
+    return {.convex = true, .c3 = true, .positive_curvature = true};
+  }
   // The reach of an ellipse is its minimal radius of curvature b^2/a (b <= a), at the
   // ends of the major axis: the medial axis of the inside is the segment between the two
   // centres of curvature (+-(a - b^2/a), 0), at distance >= b^2/a from the boundary; the
@@ -560,7 +517,7 @@ public:
 private:
   std::string spec_;
   double a_, b_, c_, s_, theta_;
-  std::vector<PolyPredicate> preds_;
+  std::vector<PolynomialSign> preds_;
 };
 
 // Convex polygon, counter-clockwise, rational vertices.
@@ -610,6 +567,7 @@ public:
   }
   // Corners: the medial axis of the inside reaches the vertices.
   std::optional<double> reach_lower_bound() const override { return 0.0; }
+  ShapeClass shape_class() const override { return {.convex = true, .polygon = true}; }
   std::optional<double> area() const override { return moments()->at(0); }
   std::optional<double> perimeter() const override {
     double s = 0;
@@ -646,7 +604,7 @@ public:
 
 private:
   std::string spec_;
-  std::vector<PolyPredicate> preds_;
+  std::vector<PolynomialSign> preds_;
   std::vector<P2> vd_;
 };
 
@@ -658,6 +616,9 @@ public:
   }
   std::string spec() const override { return spec_; }
   const Polynomial& f() const { return preds_[0].polynomial(); }
+  // Assumed C^3 with positive reach (the user's polynomial; no check that grad F != 0 on the
+  // curve): the theory checks apply as for a smooth shape.
+  ShapeClass shape_class() const override { return {.c3 = true}; }
   bool contains(P2 p) const override {
     double q[2] = {p.x, p.y};
     return f().value(q) <= 0;
@@ -693,25 +654,48 @@ public:
 
 private:
   std::string spec_;
-  std::vector<PolyPredicate> preds_;
+  std::vector<PolynomialSign> preds_;
 };
 
 // --- parsing --------------------------------------------------------------------------------
 
+// Parameters are finite and in a range where the shapes' double computations (projection,
+// quadrature, sector tables) are meaningful: 0 or 1e-9 <= |value| <= 1e9, at most
+// kMaxShapeParameters of them.
+constexpr double kMaxShapeMagnitude = 1e9, kMinShapeMagnitude = 1e-9;
+constexpr std::size_t kMaxShapeParameters = 20000;
+
+std::string shown_spec(std::string_view spec) {
+  return "shape '" +
+         (spec.size() <= 60 ? std::string(spec) : std::string(spec.substr(0, 57)) + "...") + "'";
+}
+
 std::vector<BigRational> rationals(std::string_view args, std::string_view spec) {
   std::vector<BigRational> out;
-  if (args.empty()) throw InvalidArgument("shape '" + std::string(spec) + "': missing parameters");
+  if (args.empty()) throw InvalidArgument(shown_spec(spec) + ": missing parameters");
   std::size_t start = 0;
   for (;;) {
     auto comma = args.find(',', start);
     std::string_view item =
         args.substr(start, comma == std::string_view::npos ? args.npos : comma - start);
+    const std::string shown_item =
+        item.size() <= 30 ? std::string(item) : std::string(item.substr(0, 27)) + "...";
+    const std::string which =
+        "parameter " + std::to_string(out.size() + 1) + " '" + shown_item + "'";
+    if (out.size() == kMaxShapeParameters) {
+      throw InvalidArgument(shown_spec(spec) + ": more than " +
+                            std::to_string(kMaxShapeParameters) + " parameters");
+    }
     try {
       out.push_back(parse_rational<BigInt>(item));
     } catch (const InvalidArgument&) {
-      throw InvalidArgument("shape '" + std::string(spec) + "': parameter " +
-                            std::to_string(out.size() + 1) + " '" + std::string(item) +
-                            "' is not a number");
+      throw InvalidArgument(shown_spec(spec) + ": " + which + " is not a number");
+    }
+    const double d = out.back().to_double();
+    if (!std::isfinite(d) || std::abs(d) > kMaxShapeMagnitude ||
+        (out.back() != BigRational(0) && std::abs(d) < kMinShapeMagnitude)) {
+      throw InvalidArgument(shown_spec(spec) + ": " + which +
+                            " is out of range (0, or 1e-9 <= |value| <= 1e9)");
     }
     if (comma == std::string_view::npos) break;
     start = comma + 1;
@@ -722,15 +706,15 @@ std::vector<BigRational> rationals(std::string_view args, std::string_view spec)
 void expect_count(const std::vector<BigRational>& v, std::size_t lo, std::size_t hi,
                   std::string_view spec, std::string_view syntax) {
   if (v.size() < lo || v.size() > hi) {
-    throw InvalidArgument("shape '" + std::string(spec) + "': expected " + std::string(syntax) +
-                          ", got " + std::to_string(v.size()) + " parameters");
+    throw InvalidArgument(shown_spec(spec) + ": expected " + std::string(syntax) + ", got " +
+                          std::to_string(v.size()) + " parameters");
   }
 }
 
 void expect_positive(const BigRational& v, std::string_view name, std::string_view spec) {
   if (v <= BigRational(0)) {
-    throw InvalidArgument("shape '" + std::string(spec) + "': " + std::string(name) + " = " +
-                          v.str() + " must be > 0");
+    throw InvalidArgument(shown_spec(spec) + ": " + std::string(name) + " = " + v.str() +
+                          " must be > 0");
   }
 }
 
@@ -804,12 +788,12 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
                      expect_count(v, 3, 4, spec, "flower:R0,A,K[,PHI]");
                      expect_positive(v[0], "R0", spec);
                      double r0 = v[0].to_double(), a = v[1].to_double(), k = v[2].to_double();
-                     if (v[2].den() != 1) {
-                       throw InvalidArgument("shape '" + std::string(spec) +
-                                             "': K = " + v[2].str() + " must be an integer");
+                     if (v[2].den() != 1 || std::abs(k) > 1000) {
+                       throw InvalidArgument(shown_spec(spec) + ": K = " + v[2].str() +
+                                             " must be an integer in -1000..1000");
                      }
                      if (std::abs(a) >= r0) {
-                       throw InvalidArgument("shape '" + std::string(spec) + "': |A| must be < R0");
+                       throw InvalidArgument(shown_spec(spec) + ": |A| must be < R0");
                      }
                      return std::make_unique<Flower>(std::string(spec), r0, a, k,
                                                      v.size() > 3 ? v[3].to_double() : 0.0);
@@ -824,7 +808,7 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
          expect_positive(v[0], "R1", spec);
          double r1 = v[0].to_double(), r2 = v[1].to_double();
          if (std::abs(r2) >= r1) {
-           throw InvalidArgument("shape '" + std::string(spec) + "': |R2| must be < R1");
+           throw InvalidArgument(shown_spec(spec) + ": |R2| must be < R1");
          }
          return std::make_unique<AccFlower>(std::string(spec), r1, r2, v[2].to_double());
        }});
@@ -834,8 +818,8 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
        [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
          auto v = rationals(args, spec);
          if (v.size() < 6 || v.size() % 2 != 0) {
-           throw InvalidArgument("shape '" + std::string(spec) +
-                                 "': expected polygon:X1,Y1,X2,Y2,X3,Y3,... (at least 3 vertices)");
+           throw InvalidArgument(shown_spec(spec) +
+                                 ": expected polygon:X1,Y1,X2,Y2,X3,Y3,... (at least 3 vertices)");
          }
          std::vector<std::array<BigRational, 2>> pts;
          for (std::size_t i = 0; i < v.size(); i += 2) pts.push_back({v[i], v[i + 1]});
@@ -852,28 +836,27 @@ void register_2d_shapes(std::vector<ShapeKind>& kinds) {
            area2 += a[0] * b[1] - b[0] * a[1];
          }
          if (area2 == BigRational(0)) {
-           throw InvalidArgument("shape '" + std::string(spec) + "': degenerate polygon");
+           throw InvalidArgument(shown_spec(spec) + ": degenerate polygon");
          }
          if (area2 < BigRational(0)) std::reverse(pts.begin(), pts.end());
          for (std::size_t i = 0; i < pts.size(); ++i) {
            if (cross(i) <= BigRational(0)) {
-             throw InvalidArgument("shape '" + std::string(spec) +
-                                   "': not strictly convex at vertex " + std::to_string(i + 2));
+             throw InvalidArgument(shown_spec(spec) + ": not strictly convex at vertex " +
+                                   std::to_string(i + 2));
            }
          }
          return std::make_unique<Polygon>(std::string(spec), std::move(pts));
        }});
-  kinds.push_back({"poly", 2, "poly:EXPR",
-                   "F(x, y) <= 0, F a polynomial with rational coefficients (exact)",
-                   [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
-                     if (args.find('z') != std::string_view::npos) return nullptr; // 3D
-                     Polynomial f = Polynomial::parse(args, 2);
-                     if (f.degree() < 1) {
-                       throw InvalidArgument("shape '" + std::string(spec) +
-                                             "': the polynomial must not be constant");
-                     }
-                     return std::make_unique<PolyShape>(std::string(spec), std::move(f));
-                   }});
+  kinds.push_back(
+      {"poly", 2, "poly:EXPR", "F(x, y) <= 0, F a polynomial with rational coefficients (exact)",
+       [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
+         if (args.find('z') != std::string_view::npos) return nullptr; // 3D
+         Polynomial f = Polynomial::parse(args, 2);
+         if (f.degree() < 1) {
+           throw InvalidArgument(shown_spec(spec) + ": the polynomial must not be constant");
+         }
+         return std::make_unique<PolyShape>(std::string(spec), std::move(f));
+       }});
 }
 
 } // namespace detail

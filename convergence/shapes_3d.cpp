@@ -1,6 +1,7 @@
 #include <zdg/convergence/shapes_3d.hpp>
 
 #include <zdg/arith/error.hpp>
+#include <zdg/kernel/polynomial_sign.hpp>
 
 #include <array>
 #include <cmath>
@@ -45,53 +46,26 @@ P3 newton(const Polynomial& f, P3 q) {
   return {p[0], p[1], p[2]};
 }
 
-// Exact membership of h z - t in { F <= 0 }: double filter, exact fallback.
-class PolyVoxelPredicate {
-public:
-  PolyVoxelPredicate(const Polynomial* f, double h, P3 t)
-      : f_(f), h_(h), t_{t.x, t.y, t.z},
-        hx_(exact_rational(h)), tx_{exact_rational(t.x), exact_rational(t.y), exact_rational(t.z)} {
-  }
-
-  bool operator()(const Voxel& z) const {
-    const double hz[3] = {h_ * double(z.x), h_ * double(z.y), h_ * double(z.z)};
-    double p[3], m[3];
-    for (int i = 0; i < 3; ++i) {
-      p[i] = hz[i] - t_[i];
-      m[i] = 2.0 * (std::abs(hz[i]) + std::abs(t_[i])); // >= |p| + its rounding error
-    }
-    double bound = 0;
-    const double v = f_->value_with_bound(p, m, bound);
-    if (v > bound) return false;
-    if (v < -bound) return true;
-    const std::array<BigRational, 3> q{hx_ * BigRational(BigInt(z.x)) - tx_[0],
-                                       hx_ * BigRational(BigInt(z.y)) - tx_[1],
-                                       hx_ * BigRational(BigInt(z.z)) - tx_[2]};
-    return f_->sign_exact(q.data()) <= 0;
-  }
-
-private:
-  const Polynomial* f_;
-  double h_;
-  double t_[3];
-  BigRational hx_;
-  std::array<BigRational, 3> tx_;
-};
-
 class PolyShape3 final : public Shape3 {
 public:
-  PolyShape3(std::string spec, Polynomial f, double lo, double hi, std::optional<double> volume)
-      : spec_(std::move(spec)), f_(std::make_shared<const Polynomial>(std::move(f))), lo_(lo),
-        hi_(hi), volume_(volume) {}
+  PolyShape3(std::string spec, Polynomial f, double lo, double hi, std::optional<double> volume,
+             ShapeClass regularity)
+      : spec_(std::move(spec)), sign_(std::make_shared<const PolynomialSign>(std::move(f))),
+        f_(&sign_->polynomial()), lo_(lo), hi_(hi), volume_(volume), regularity_(regularity) {}
+  ShapeClass shape_class() const override { return regularity_; }
   std::string spec() const override { return spec_; }
   std::optional<std::vector<std::pair<double, double>>> bounding_box() const override {
     return std::vector<std::pair<double, double>>(3, {lo_, hi_});
   }
+  // Exact membership of h z - t in { F <= 0 } (kernel/polynomial_sign.hpp). The predicate
+  // shares the polynomial, so it may outlive the shape.
   VoxelPredicate digitize(double h, P3 t) const override {
-    // The predicate shares the polynomial, so it may outlive the shape.
-    auto f = f_;
-    PolyVoxelPredicate pred(f.get(), h, t);
-    return [f, pred](const Voxel& z) { return pred(z); };
+    auto f = sign_;
+    auto frame = std::make_shared<const GridFrame>(h, std::array<double, 3>{t.x, t.y, t.z});
+    return [f, frame](const Voxel& z) {
+      const std::int64_t zz[3] = {z.x, z.y, z.z};
+      return frame->sign(*f, zz) <= 0;
+    };
   }
   bool contains(P3 p) const override {
     const double q[3] = {p.x, p.y, p.z};
@@ -102,9 +76,11 @@ public:
 
 private:
   std::string spec_;
-  std::shared_ptr<const Polynomial> f_;
+  std::shared_ptr<const PolynomialSign> sign_;
+  const Polynomial* f_; // sign_->polynomial()
   double lo_, hi_;
   std::optional<double> volume_;
+  ShapeClass regularity_;
 };
 
 struct Named {
@@ -112,28 +88,44 @@ struct Named {
   const char* polynomial;
   double lo, hi;
   const char* note;
+  ShapeClass regularity;
 };
 
+// The regularity classes (papers/THEORY.md, "Shape classes"): spheres and the ellipsoid are
+// smooth and strictly convex (spheres umbilic everywhere); the rounded cube is smooth and
+// convex but flat at the face centres (Gaussian curvature 0); torus, cylinder, the Goursat
+// surfaces and Leopold are smooth (C^3, positive reach inside the box); distel, diabolo (singular
+// at 0), heart (cusps) and crixxi are not.
+constexpr ShapeClass kSphere{
+    .convex = true, .c3 = true, .positive_curvature = true, .umbilic = true};
+constexpr ShapeClass kStrictlyConvex{.convex = true, .c3 = true, .positive_curvature = true};
+constexpr ShapeClass kConvex{.convex = true, .c3 = true};
+constexpr ShapeClass kSmooth{.c3 = true};
+constexpr ShapeClass kNone{};
+
 // DGtal's list (Shortcuts::getPolynomialList, src/DGtal/helpers/Shortcuts.h, and the box
-// bounds of its examples), with goursat-hole from shared/THEORY.md. DGtal's distel, heart
+// bounds of its examples), with goursat-hole from papers/THEORY.md. DGtal's distel, heart
 // and crixxi are negated here so that their bounded solid is F < 0; diabolo and cylinder
 // are unbounded and distel reaches |x| = 100 along the axes: the box clips them.
 constexpr Named kNamed[] = {
-    {"sphere1", "x^2+y^2+z^2-1", -1.25, 1.25, "unit sphere"},
-    {"sphere9", "x^2+y^2+z^2-81", -10, 10, "sphere of radius 9"},
-    {"ellipsoid", "3*x^2+2*y^2+z^2-90", -10, 10, "ellipsoid, half-axes sqrt 30, sqrt 45, sqrt 90"},
-    {"cylinder", "x^2+2*z^2-90", -10, 10, "elliptic cylinder along y (clipped by the box)"},
-    {"torus", "(x^2+y^2+z^2+6*6-2*2)^2-4*6*6*(x^2+y^2)", -10, 10, "torus R = 6, r = 2"},
-    {"rcube", "x^4+y^4+z^4-6561", -10, 10, "rounded cube x^4 + y^4 + z^4 <= 9^4"},
-    {"goursat", "-1*(8-0.03*x^4-0.03*y^4-0.03*z^4+2*x^2+2*y^2+2*z^2)", -10, 10, "Goursat surface"},
+    {"sphere1", "x^2+y^2+z^2-1", -1.25, 1.25, "unit sphere", kSphere},
+    {"sphere9", "x^2+y^2+z^2-81", -10, 10, "sphere of radius 9", kSphere},
+    {"ellipsoid", "3*x^2+2*y^2+z^2-90", -10, 10, "ellipsoid, half-axes sqrt 30, sqrt 45, sqrt 90",
+     kStrictlyConvex},
+    {"cylinder", "x^2+2*z^2-90", -10, 10, "elliptic cylinder along y (clipped by the box)",
+     kSmooth},
+    {"torus", "(x^2+y^2+z^2+6*6-2*2)^2-4*6*6*(x^2+y^2)", -10, 10, "torus R = 6, r = 2", kSmooth},
+    {"rcube", "x^4+y^4+z^4-6561", -10, 10, "rounded cube x^4 + y^4 + z^4 <= 9^4", kConvex},
+    {"goursat", "-1*(8-0.03*x^4-0.03*y^4-0.03*z^4+2*x^2+2*y^2+2*z^2)", -10, 10, "Goursat surface",
+     kSmooth},
     {"goursat-hole", "x^4+y^4+z^4-8*(x^2+y^2+z^2)+30", -10, 10,
-     "Goursat surface with holes (genus > 0)"},
+     "Goursat surface with holes (genus > 0)", kSmooth},
     {"distel", "x^2+y^2+z^2+1000*(x^2+y^2)*(x^2+z^2)*(y^2+z^2)-10000", -10, 10,
-     "distel (spikes along the axes, clipped by the box)"},
-    {"leopold", "(x^2*y^2*z^2+4*x^2+4*y^2+3*z^2)-100", -10, 10, "Leopold surface"},
-    {"diabolo", "x^2-(y^2+z^2)^2", -10, 10, "diabolo (unbounded, singular at 0; clipped)"},
-    {"heart", "(x^2+2.25*y^2+z^2-1)^3-x^2*z^3-0.1125*y^2*z^3", -2, 2, "heart surface"},
-    {"crixxi", "0.9*(y^2+z^2-1)^2+(x^2+y^2-1)^3", -2, 2, "crixxi surface"},
+     "distel (spikes along the axes, clipped by the box)", kNone},
+    {"leopold", "(x^2*y^2*z^2+4*x^2+4*y^2+3*z^2)-100", -10, 10, "Leopold surface", kSmooth},
+    {"diabolo", "x^2-(y^2+z^2)^2", -10, 10, "diabolo (unbounded, singular at 0; clipped)", kNone},
+    {"heart", "(x^2+2.25*y^2+z^2-1)^3-x^2*z^3-0.1125*y^2*z^3", -2, 2, "heart surface", kNone},
+    {"crixxi", "0.9*(y^2+z^2-1)^2+(x^2+y^2-1)^3", -2, 2, "crixxi surface", kNone},
 };
 
 std::optional<double> named_volume(const std::string& name) {
@@ -308,11 +300,13 @@ void register_3d_shapes(std::vector<ShapeKind>& kinds) {
                      if (args.find('z') == std::string_view::npos) return nullptr; // 2D
                      Polynomial f = Polynomial::parse(args, 3);
                      if (f.degree() < 1) {
-                       throw InvalidArgument("shape '" + std::string(spec) +
+                       throw InvalidArgument("shape 'poly:" + std::string(args.substr(0, 40)) +
+                                             (args.size() > 40 ? "..." : "") +
                                              "': the polynomial must not be constant");
                      }
+                     // Assumed C^3 with positive reach, as the 2D poly: shapes.
                      return std::make_unique<PolyShape3>(std::string(spec), std::move(f), -10.0,
-                                                         10.0, std::nullopt);
+                                                         10.0, std::nullopt, kSmooth);
                    }});
   for (const auto& s : kNamed) {
     const Named named = s;
@@ -323,11 +317,12 @@ void register_3d_shapes(std::vector<ShapeKind>& kinds) {
         {named.name, 3, named.name, description.str(),
          [named](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
            if (!args.empty() || spec.find(':') != std::string_view::npos) {
-             throw InvalidArgument("shape '" + std::string(spec) + "': " + named.name +
+             throw InvalidArgument("shape '" + std::string(named.name) + ":...': " + named.name +
                                    " takes no parameters");
            }
            return std::make_unique<PolyShape3>(named.name, Polynomial::parse(named.polynomial, 3),
-                                               named.lo, named.hi, named_volume(named.name));
+                                               named.lo, named.hi, named_volume(named.name),
+                                               named.regularity);
          }});
   }
 }

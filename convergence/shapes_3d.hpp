@@ -6,12 +6,11 @@
 //   leopold, diabolo, heart, crixxi    the classic test polynomials (named_polynomial_3d)
 //
 // Digitization G_h(X + t) = { z in Z^3 : h z - t in X }: the sign of F at the point
-// h z - t (exact dyadic rational) is computed in double with the forward error bound of
-// Polynomial::value_with_bound and recomputed exactly (Polynomial::sign_exact on
-// Rational<BigInt>) when the bound does not certify it: the mechanism of the 2D `poly:`
-// shapes, on the same Polynomial class.
+// h z - t (exact dyadic rational) by the filtered predicate of kernel/polynomial_sign.hpp
+// (double with a rigorous error bound, Rational<BigInt> when the bound does not certify it),
+// the one predicate of the 2D polynomial shapes too.
 //
-// Ground truth (shared/THEORY.md, "Ground-truth formulas"). xi(p), the projection of p onto
+// Ground truth (papers/THEORY.md, "Ground-truth formulas"). xi(p), the projection of p onto
 // F = 0: damped Newton q <- q - F(q) g / |g|^2 (the step halved while |F| does not
 // decrease, 40 iterations at most), then foot-point refinement: q <- Newton(q + P (p - q)),
 // P the projection on the tangent plane (8 rounds at most), polished by Newton on the
@@ -30,7 +29,6 @@
 // returned by digitize is safe to call from several threads.
 #pragma once
 
-#include <zdg/convergence/polynomial.hpp>
 #include <zdg/convergence/shape.hpp>
 #include <zdg/kernel/digital_surface.hpp>
 
@@ -40,6 +38,9 @@
 #include <vector>
 
 namespace zdg {
+
+// kernel/polynomial.hpp (its Rational<BigInt> coefficients are not needed here).
+class Polynomial;
 
 /// A point of the true surface with its differential geometry (outward normal).
 struct SurfacePoint3 {

@@ -36,7 +36,7 @@
 // 2014), where the count is queried at every linel of the boundary.
 #pragma once
 
-#include <zdg/arith/integer.hpp>
+#include <zdg/arith/checked.hpp>
 #include <zdg/kernel/digital_contour.hpp>
 #include <zdg/kernel/digital_disc.hpp>
 

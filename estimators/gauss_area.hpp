@@ -4,7 +4,7 @@
 // clockwise) by the shoelace formula, in O(contour length): no pixel is visited. Exact
 // (checked Int128 sums; OverflowError past it, far beyond any grid that fits memory).
 // Convergence: O(h) for convex X, O(h^{15/11} log^{47/22}(1/h)) for C^3 strictly convex X
-// (Huxley 1990); see THEORY.md.
+// (Huxley 1990); see papers/THEORY.md.
 #pragma once
 
 #include <zdg/kernel/digital_contour.hpp>

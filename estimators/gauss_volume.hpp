@@ -1,6 +1,6 @@
 // Gauss volume estimator: Vol(X) ~ h^3 #G_h(X), the number of digital points of the
 // digitization times the volume of a voxel. Converges in O(h) for convex X (better for
-// smooth strictly convex sets: Kraetzel; Guo, exponent 243/158), see shared/THEORY.md.
+// smooth strictly convex sets: Kraetzel; Guo, exponent 243/158), see papers/THEORY.md.
 //
 // The count is exact (int64; the box volume is checked at entry to fit, InvalidArgument
 // past it). It is made line by line along x (one predicate evaluation per voxel of the box,

@@ -24,7 +24,7 @@ std::vector<Point2<double>> lambda_mst_tangents(std::span<const Point2<std::int6
   // plain sums of the angle offsets.
   std::vector<double> ref(n, nan), wsum(n, 0), wdev(n, 0), dev(n, 0);
   std::vector<int> count(n, 0);
-  for (const auto& s : maximal_segments(points, closed)) {
+  for (const auto& s : maximal_segments_exact(points, closed).value) {
     const double theta = std::atan2(static_cast<double>(s.a), static_cast<double>(s.b));
     for (std::size_t k = 0; k < s.length; ++k) {
       const std::size_t i = (s.begin + k) % n;

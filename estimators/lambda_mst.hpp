@@ -10,7 +10,7 @@
 // Length: each linel (unit step s from p_i to p_{i+1}) contributes h |t . s| with t the
 // normalised mean of the tangents at its two ends (exact for straight lines: the steps
 // project onto the line direction).
-// Rates (THEORY.md): tangent O(h^{1/3}) proven for C^3 convex curves, about h^{2/3}
+// Rates (papers/THEORY.md): tangent O(h^{1/3}) proven for C^3 convex curves, about h^{2/3}
 // observed; length O(h^{1/3}) proven, about h^{4/3} observed.
 // Complexity O(n + sum |S_j|) = O(n) on digitized smooth curves (bounded pencils).
 // Source: Lachaud, Vialard, de Vieilleville, Fast, accurate and convergent tangent

@@ -16,7 +16,7 @@ std::vector<double> mdss_curvature(std::span<const Point2<std::int64_t>> points,
   if (n < 3) return kappa;
   // Reach of the half-tangents at each point, in points along the curve.
   std::vector<std::size_t> forward(n, 0), backward(n, 0);
-  for (const auto& s : maximal_segments(points, true)) {
+  for (const auto& s : maximal_segments_exact(points, true).value) {
     for (std::size_t k = 0; k < s.length; ++k) {
       const std::size_t i = (s.begin + k) % n;
       forward[i] = std::max(forward[i], s.length - 1 - k);

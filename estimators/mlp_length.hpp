@@ -1,6 +1,6 @@
 // Minimum length polygon (MLP) of a closed 4-connected digital contour, and the length
 // estimator h * |MLP| (O(h) on convex shapes; Klette-Rosenfeld, Digital Geometry 2004;
-// Provencal-Lachaud, DGCI 2009; THEORY.md, "Length, MLP").
+// Provencal-Lachaud, DGCI 2009; papers/THEORY.md, "Rates").
 //
 // The MLP is the shortest closed polygon in the band between the polygon of the inner
 // pixel centres and that of the outer pixel centres of the contour. Each linel gives a

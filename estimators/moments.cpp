@@ -6,7 +6,7 @@ namespace zdg {
 
 namespace {
 
-template <class I>
+template <TowerInt I>
 std::array<I, 6> sums(const std::vector<DigitalContour>& contours) {
   std::array<I, 6> s{I(0), I(0), I(0), I(0), I(0), I(0)};
   for (const auto& c : contours) {
@@ -16,7 +16,7 @@ std::array<I, 6> sums(const std::vector<DigitalContour>& contours) {
         // Up (1): ends the interval at x = p.x - 1 in row p.y; down (3): starts the
         // interval at x = p.x in row p.y - 1.
         I x = I(p.x);
-        I y = code == 1 ? I(p.y) : I(p.y - 1);
+        I y = code == 1 ? I(p.y) : I(p.y) - 1;
         I f0 = x, f1 = x * (x - 1) / 2, f2 = (x - 1) * x * (2 * x - 1) / 6;
         if (code == 3) {
           f0 = -f0;
@@ -39,18 +39,27 @@ std::array<I, 6> sums(const std::vector<DigitalContour>& contours) {
 
 } // namespace
 
-std::array<BigInt, 6> digital_moments(const std::vector<DigitalContour>& contours) {
-  auto r = escalate([&]<class I>(std::type_identity<I>) {
+template <TowerInt I>
+std::array<I, 6> digital_moments(const std::vector<DigitalContour>& contours) {
+  return sums<I>(contours);
+}
+
+template std::array<Int64, 6> digital_moments<Int64>(const std::vector<DigitalContour>&);
+template std::array<Int128, 6> digital_moments<Int128>(const std::vector<DigitalContour>&);
+template std::array<BigInt, 6> digital_moments<BigInt>(const std::vector<DigitalContour>&);
+
+Escalated<std::array<BigInt, 6>>
+digital_moments_exact(const std::vector<DigitalContour>& contours) {
+  return escalate([&]<class I>(std::type_identity<I>) {
     auto s = sums<I>(contours);
     std::array<BigInt, 6> out;
     for (std::size_t i = 0; i < 6; ++i) out[i] = to_bigint(s[i]);
     return out;
   });
-  return r.value;
 }
 
 std::array<double, 6> moments_estimate(const std::vector<DigitalContour>& contours, double h) {
-  auto s = digital_moments(contours);
+  auto s = digital_moments_exact(contours).value;
   constexpr int order[6] = {0, 1, 1, 2, 2, 2};
   std::array<double, 6> m{};
   for (std::size_t i = 0; i < 6; ++i) {

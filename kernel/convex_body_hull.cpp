@@ -502,33 +502,32 @@ std::vector<Point2<BigInt>> widen(const std::vector<Point2<I>>& v) {
 }
 } // namespace
 
-BodyHullResult disc_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                               const Rational<BigInt>& r) {
+Escalated<BodyHull> disc_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
+                                    const Rational<BigInt>& r) {
   if (r < Rational<BigInt>(0)) throw InvalidArgument("negative radius " + r.str());
-  auto res = escalate([&]<class I>(std::type_identity<I>) {
-    return widen(disc_hull<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(r)));
+  return escalate([&]<class I>(std::type_identity<I>) {
+    return BodyHull{RegionKind::bounded,
+                    widen(disc_hull<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(r)))};
   });
-  return {RegionKind::bounded, std::move(res.value), res.served};
 }
 
-BodyHullResult ellipse_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                                  const Rational<BigInt>& a, const Rational<BigInt>& b) {
+Escalated<BodyHull> ellipse_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
+                                       const Rational<BigInt>& a, const Rational<BigInt>& b) {
   ellipse_body(cx, cy, a, b); // validates a, b > 0 before any escalation
-  auto res = escalate([&]<class I>(std::type_identity<I>) {
-    return widen(ellipse_hull<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(a), narrow<I>(b)));
+  return escalate([&]<class I>(std::type_identity<I>) {
+    return BodyHull{RegionKind::bounded, widen(ellipse_hull<I>(narrow<I>(cx), narrow<I>(cy),
+                                                               narrow<I>(a), narrow<I>(b)))};
   });
-  return {RegionKind::bounded, std::move(res.value), res.served};
 }
 
-BodyHullResult halfplane_hull_exact(std::span<const HalfPlane<BigInt>> hs) {
-  auto res = escalate([&]<class I>(std::type_identity<I>) {
+Escalated<BodyHull> halfplane_hull_exact(std::span<const HalfPlane<BigInt>> hs) {
+  return escalate([&]<class I>(std::type_identity<I>) {
     std::vector<HalfPlane<I>> n;
     n.reserve(hs.size());
     for (const auto& h : hs) n.push_back({narrow<I>(h.a), narrow<I>(h.b), narrow<I>(h.c)});
     auto h = halfplane_hull<I>(std::span<const HalfPlane<I>>(n));
-    return std::pair<RegionKind, std::vector<Point2<BigInt>>>{h.region, widen(h.vertices)};
+    return BodyHull{h.region, widen(h.vertices)};
   });
-  return {res.value.first, std::move(res.value.second), res.served};
 }
 
 #define ZDG_INSTANTIATE(I)                                                                         \

@@ -135,18 +135,18 @@ struct HalfPlaneHull {
 template <TowerInt I>
 HalfPlaneHull<I> halfplane_hull(std::span<const HalfPlane<I>> hs);
 
-/// Exact by escalation: data as BigInt rationals, result vertices as BigInt, plus the type
-/// that served.
-struct BodyHullResult {
+/// The region and the hull vertices, as BigInt (the result of the *_exact entry points).
+struct BodyHull {
   RegionKind region = RegionKind::bounded;
   std::vector<Point2<BigInt>> vertices;
-  IntKind served = IntKind::int64;
 };
-BodyHullResult disc_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                               const Rational<BigInt>& r);
-BodyHullResult ellipse_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                                  const Rational<BigInt>& a, const Rational<BigInt>& b);
-BodyHullResult halfplane_hull_exact(std::span<const HalfPlane<BigInt>> hs);
+/// Exact by escalation (Int64 -> Int128 -> BigInt): data as BigInt rationals, result vertices
+/// as BigInt, with the type that served.
+Escalated<BodyHull> disc_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
+                                    const Rational<BigInt>& r);
+Escalated<BodyHull> ellipse_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
+                                       const Rational<BigInt>& a, const Rational<BigInt>& b);
+Escalated<BodyHull> halfplane_hull_exact(std::span<const HalfPlane<BigInt>> hs);
 
 /// floor(sqrt(n)) for n >= 0.
 template <TowerInt I>

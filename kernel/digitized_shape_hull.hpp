@@ -6,8 +6,9 @@
 // of the box is scanned from both ends until the predicate holds: for a convex shape this
 // costs O(columns + boundary) predicate calls, O(|B|) for an arbitrary one (every call is
 // the caller's, exact or not as the predicate is). The column extremes then go to the exact
-// hull (lattice_hull_2d / lattice_hull_3d, exact by escalation). The box is given by int64
-// bounds; results are on Int64.
+// hull (lattice_hull_2d_exact / lattice_hull_3d_exact: escalation Int64 -> Int128 -> BigInt,
+// see arith/escalate.hpp). The box is given by int64 bounds; 2D vertices are on Int64 (they
+// are points of the box), the 3D hull (normals, volume) on BigInt.
 #pragma once
 
 #include <zdg/arith/error.hpp>
@@ -25,8 +26,9 @@ namespace zdg {
 /// Hull vertices (counterclockwise from the lowest-then-leftmost) of the points (x, y) of the
 /// box with inside(x, y) true.
 template <class Inside>
-std::vector<Point2<Int64>> digitized_shape_hull_2d(const Box2& box, Inside&& inside) {
-  if (box.lo.x > box.hi.x || box.lo.y > box.hi.y) return {};
+Escalated<std::vector<Point2<Int64>>> digitized_shape_hull_2d_exact(const Box2& box,
+                                                                    Inside&& inside) {
+  if (box.lo.x > box.hi.x || box.lo.y > box.hi.y) return {{}, IntKind::int64};
   std::vector<Point2<Int64>> ext;
   for (std::int64_t x = box.lo.x; x <= box.hi.x; ++x) {
     std::int64_t lo = box.lo.y;
@@ -37,12 +39,12 @@ std::vector<Point2<Int64>> digitized_shape_hull_2d(const Box2& box, Inside&& ins
     ext.push_back({x, lo});
     if (hi != lo) ext.push_back({x, hi});
   }
-  return lattice_hull_2d<Int64>(std::span<const Point2<Int64>>(ext));
+  return lattice_hull_2d_exact<Int64>(std::span<const Point2<Int64>>(ext));
 }
 
 /// The exact 3D hull of the points (x, y, z) of the box with inside(x, y, z) true.
 template <class Inside>
-LatticeHull3d<Int64> digitized_shape_hull_3d(const Box3& box, Inside&& inside) {
+Escalated<LatticeHull3d<BigInt>> digitized_shape_hull_3d_exact(const Box3& box, Inside&& inside) {
   std::vector<Point3<Int64>> ext;
   if (box.lo.x <= box.hi.x && box.lo.y <= box.hi.y && box.lo.z <= box.hi.z) {
     for (std::int64_t x = box.lo.x; x <= box.hi.x; ++x) {
@@ -57,7 +59,7 @@ LatticeHull3d<Int64> digitized_shape_hull_3d(const Box3& box, Inside&& inside) {
       }
     }
   }
-  return lattice_hull_3d<Int64>(std::span<const Point3<Int64>>(ext));
+  return lattice_hull_3d_exact<Int64>(std::span<const Point3<Int64>>(ext));
 }
 
 } // namespace zdg

@@ -130,23 +130,31 @@ std::vector<Point2<To>> convert_points(std::span<const Point2<From>> pts) {
 
 template <TowerInt I>
 std::vector<Point2<I>> lattice_hull_2d(std::span<const Point2<I>> pts) {
-  auto idx = escalate_from(int_kind<I>(), [&]<class J>(std::type_identity<J>) {
+  std::vector<Point2<I>> out;
+  for (auto i : lattice_hull_2d_indices<I>(pts)) out.push_back(pts[i]);
+  return out;
+}
+
+template <TowerInt I>
+Escalated<std::vector<Point2<I>>> lattice_hull_2d_exact(std::span<const Point2<I>> pts) {
+  auto idx = escalate([&]<class J>(std::type_identity<J>) {
     if constexpr (std::same_as<I, J>) {
       return lattice_hull_2d_indices<I>(pts);
     } else {
-      auto wide = convert_points<J, I>(pts);
-      return lattice_hull_2d_indices<J>(std::span<const Point2<J>>(wide));
+      auto conv = convert_points<J, I>(pts); // OverflowError when a point does not fit J
+      return lattice_hull_2d_indices<J>(std::span<const Point2<J>>(conv));
     }
   });
   std::vector<Point2<I>> out;
   out.reserve(idx.value.size());
   for (auto i : idx.value) out.push_back(pts[i]);
-  return out;
+  return {std::move(out), idx.served};
 }
 
 #define ZDG_INSTANTIATE(I)                                                                         \
   template std::vector<std::size_t> lattice_hull_2d_indices<I>(std::span<const Point2<I>>);        \
-  template std::vector<Point2<I>> lattice_hull_2d<I>(std::span<const Point2<I>>);
+  template std::vector<Point2<I>> lattice_hull_2d<I>(std::span<const Point2<I>>);                  \
+  template Escalated<std::vector<Point2<I>>> lattice_hull_2d_exact<I>(std::span<const Point2<I>>);
 ZDG_INSTANTIATE(Int64)
 ZDG_INSTANTIATE(Int128)
 ZDG_INSTANTIATE(BigInt)

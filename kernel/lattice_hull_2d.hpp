@@ -11,8 +11,9 @@
 // dimensions"), O(n log n), decided by the exact orientation predicate
 // orient(a, b, c) = sign((b - a) x (c - a)).
 // Width: orientation needs about 2 b + 2 bits for b-bit coordinates, so Int64 serves
-// coordinates below 2^30 in magnitude for sure; lattice_hull_2d() is exact by escalation
-// (Int64 -> Int128 -> BigInt on OverflowError), so every coordinate size works.
+// coordinates below 2^30 in magnitude for sure. lattice_hull_2d<I>() computes on I and throws
+// OverflowError past it; lattice_hull_2d_exact() escalates (Int64 -> Int128 -> BigInt on
+// OverflowError, see arith/escalate.hpp), so every coordinate size works.
 #pragma once
 
 #include <zdg/arith/escalate.hpp>
@@ -39,8 +40,12 @@ int orientation(const Point2<I>& a, const Point2<I>& b, const Point2<I>& c) {
 template <TowerInt I>
 std::vector<std::size_t> lattice_hull_2d_indices(std::span<const Point2<I>> pts);
 
-/// Hull vertices of pts, exact by escalation (the vertices are input points, so they fit I).
+/// Hull vertices of pts, computed on I (may throw OverflowError).
 template <TowerInt I>
 std::vector<Point2<I>> lattice_hull_2d(std::span<const Point2<I>> pts);
+/// Hull vertices of pts, exact by escalation from Int64 (the vertices are input points, so
+/// they are returned in the input type I), with the type that served.
+template <TowerInt I>
+Escalated<std::vector<Point2<I>>> lattice_hull_2d_exact(std::span<const Point2<I>> pts);
 
 } // namespace zdg

@@ -306,7 +306,10 @@ private:
   LatticeHull3d<I> finish_solid(LatticeHull3d<I>& out) {
     out.dimension = 3;
     const int nf = static_cast<int>(f_.size());
-    // Union-find of coplanar neighbours (same outward direction across a shared edge).
+    // Union-find of coplanar neighbours. Two facets of a 3D convex polytope sharing an edge are
+    // coplanar iff the third vertex of one lies on the plane of the other (then their outward
+    // normals agree): n . p == off, 3b + 5 bits like every other predicate here (comparing the
+    // normals by a cross product would need 4b + 7 bits).
     std::vector<int> parent(nf);
     std::iota(parent.begin(), parent.end(), 0);
     auto find = [&](int x) {
@@ -316,7 +319,9 @@ private:
     for (int a = 0; a < nf; ++a) {
       if (!f_[a].alive) continue;
       for (int b : f_[a].nb) {
-        if (b > a && is_zero(cross(f_[a].n, f_[b].n)) && dot(f_[a].n, f_[b].n) > 0) {
+        const auto& fb = f_[b];
+        if (b > a && std::all_of(fb.v.begin(), fb.v.end(),
+                                 [&](int v) { return dot(f_[a].n, p_[v]) == f_[a].off; })) {
           parent[find(a)] = find(b);
         }
       }
@@ -387,7 +392,7 @@ private:
 } // namespace
 
 template <TowerInt I>
-LatticeHull3d<I> lattice_hull_3d_on(std::span<const Point3<I>> pts) {
+LatticeHull3d<I> lattice_hull_3d(std::span<const Point3<I>> pts) {
   return Builder<I>(line_extremes(pts)).run();
 }
 
@@ -406,30 +411,19 @@ LatticeHull3d<To> convert_hull(const LatticeHull3d<From>& h) {
 }
 } // namespace
 
-LatticeHull3dExact lattice_hull_3d_exact(std::span<const Point3<BigInt>> pts) {
-  auto r = escalate([&]<class J>(std::type_identity<J>) {
-    std::vector<Point3<J>> q;
-    q.reserve(pts.size());
-    for (const auto& p : pts) q.push_back({int_cast<J>(p.x), int_cast<J>(p.y), int_cast<J>(p.z)});
-    return convert_hull<BigInt>(lattice_hull_3d_on<J>(std::span<const Point3<J>>(q)));
-  });
-  return {std::move(r.value), r.served};
-}
-
 template <TowerInt I>
-LatticeHull3d<I> lattice_hull_3d(std::span<const Point3<I>> pts) {
-  try {
-    return lattice_hull_3d_on<I>(pts);
-  } catch (const OverflowError&) {
-    if constexpr (std::same_as<I, BigInt>) {
-      throw;
+Escalated<LatticeHull3d<BigInt>> lattice_hull_3d_exact(std::span<const Point3<I>> pts) {
+  return escalate([&]<class J>(std::type_identity<J>) {
+    if constexpr (std::same_as<I, J>) {
+      return convert_hull<BigInt>(lattice_hull_3d<J>(pts));
     } else {
-      std::vector<Point3<BigInt>> q;
+      // OverflowError when a point does not fit J: the next type is tried.
+      std::vector<Point3<J>> q;
       q.reserve(pts.size());
-      for (const auto& p : pts) q.push_back({to_bigint(p.x), to_bigint(p.y), to_bigint(p.z)});
-      return convert_hull<I>(lattice_hull_3d_exact(std::span<const Point3<BigInt>>(q)).hull);
+      for (const auto& p : pts) q.push_back({int_cast<J>(p.x), int_cast<J>(p.y), int_cast<J>(p.z)});
+      return convert_hull<BigInt>(lattice_hull_3d<J>(std::span<const Point3<J>>(q)));
     }
-  }
+  });
 }
 
 template <TowerInt I>
@@ -510,8 +504,8 @@ I lattice_points_in_hull_3d(const LatticeHull3d<I>& h) {
 }
 
 #define ZDG_INSTANTIATE(I)                                                                         \
-  template LatticeHull3d<I> lattice_hull_3d_on<I>(std::span<const Point3<I>>);                     \
   template LatticeHull3d<I> lattice_hull_3d<I>(std::span<const Point3<I>>);                        \
+  template Escalated<LatticeHull3d<BigInt>> lattice_hull_3d_exact<I>(std::span<const Point3<I>>);  \
   template I lattice_points_in_hull_3d<I>(const LatticeHull3d<I>&);
 ZDG_INSTANTIATE(Int64)
 ZDG_INSTANTIATE(Int128)

@@ -17,8 +17,10 @@
 //   n = (b - a) x (c - a). Points not strictly above any face are discarded, so coplanar
 //   points never become false vertices; flat triangles are merged and collinear boundary
 //   points dropped at the end.
-// Width: n has 2b + 1 bits for b-bit coordinates and n . p 3b + 3 bits: Int64 serves
-//   coordinates below 2^19 for sure; lattice_hull_3d() escalates (Int64 -> Int128 -> BigInt).
+// Width: for coordinates below 2^b in magnitude, n has at most 2b + 4 bits and n . p (every
+//   predicate, the coplanarity of neighbouring facets included) and 6 * volume at most 3b + 6:
+//   Int64 serves coordinates below 2^19 for sure. lattice_hull_3d<I>() computes on I and throws
+//   OverflowError past it; lattice_hull_3d_exact() escalates (Int64 -> Int128 -> BigInt).
 //   The lattice point count scans the xy-columns of the bounding box: O(X Y F).
 #pragma once
 
@@ -43,20 +45,12 @@ struct LatticeHull3d {
 
 /// The hull computed on I (throws OverflowError when I is too narrow).
 template <TowerInt I>
-LatticeHull3d<I> lattice_hull_3d_on(std::span<const Point3<I>> pts);
-
-/// The hull of points of any size, exact by escalation (results as BigInt), with the type that
-/// served.
-struct LatticeHull3dExact {
-  LatticeHull3d<BigInt> hull;
-  IntKind served = IntKind::int64;
-};
-LatticeHull3dExact lattice_hull_3d_exact(std::span<const Point3<BigInt>> pts);
-
-/// The hull of points of I, exact by escalation (computed on I first, then on BigInt); the
-/// results are converted back to I (OverflowError if a normal or the volume does not fit).
-template <TowerInt I>
 LatticeHull3d<I> lattice_hull_3d(std::span<const Point3<I>> pts);
+
+/// The hull of points of any size, exact by escalation from Int64 (results as BigInt), with
+/// the type that served.
+template <TowerInt I>
+Escalated<LatticeHull3d<BigInt>> lattice_hull_3d_exact(std::span<const Point3<I>> pts);
 
 /// #(conv cap Z^3) for a hull from lattice_hull_3d (any dimension).
 template <TowerInt I>

@@ -41,8 +41,9 @@ LatticePolygonMeasures<I> lattice_polygon_measures(std::span<const Point2<I>> v)
   return m;
 }
 
-LatticePolygonMeasures<BigInt> lattice_polygon_measures_exact(std::span<const Point2<BigInt>> v) {
-  auto r = escalate([&]<class I>(std::type_identity<I>) {
+Escalated<LatticePolygonMeasures<BigInt>>
+lattice_polygon_measures_exact(std::span<const Point2<BigInt>> v) {
+  return escalate([&]<class I>(std::type_identity<I>) {
     std::vector<Point2<I>> w;
     w.reserve(v.size());
     for (const auto& p : v) w.push_back({int_cast<I>(p.x), int_cast<I>(p.y)});
@@ -50,7 +51,6 @@ LatticePolygonMeasures<BigInt> lattice_polygon_measures_exact(std::span<const Po
     return LatticePolygonMeasures<BigInt>{to_bigint(m.area2), to_bigint(m.boundary),
                                           to_bigint(m.interior)};
   });
-  return r.value;
 }
 
 namespace {

@@ -40,8 +40,10 @@ I polygon_area2(std::span<const Point2<I>> v);
 template <TowerInt I>
 LatticePolygonMeasures<I> lattice_polygon_measures(std::span<const Point2<I>> v);
 
-/// The same, exact by escalation; results as BigInt.
-LatticePolygonMeasures<BigInt> lattice_polygon_measures_exact(std::span<const Point2<BigInt>> v);
+/// The same, exact by escalation (Int64 -> Int128 -> BigInt); results as BigInt, with the
+/// type that served.
+Escalated<LatticePolygonMeasures<BigInt>>
+lattice_polygon_measures_exact(std::span<const Point2<BigInt>> v);
 
 template <TowerInt I>
 struct LatticeWidth {

@@ -121,29 +121,46 @@ std::vector<MaximalSegment> greedy(std::span<const P> pts, bool closed, Connecti
   return out;
 }
 
-template <class F>
-std::vector<MaximalSegment> run(std::span<const P> pts, bool closed,
-                                std::optional<Connectivity> want, F&& f) {
-  if (pts.empty()) return {};
-  Connectivity c = check_curve(pts, closed, want);
-  auto r = escalate([&]<class I>(std::type_identity<I> t) { return f(t, c); });
-  return std::move(r.value);
-}
-
 } // namespace
 
+template <TowerInt I>
 std::vector<MaximalSegment> maximal_segments(std::span<const P> points, bool closed,
                                              std::optional<Connectivity> connectivity) {
-  return run(points, closed, connectivity, [&]<class I>(std::type_identity<I>, Connectivity c) {
-    return cover<I>(points, closed, c);
-  });
+  if (points.empty()) return {};
+  return cover<I>(points, closed, check_curve(points, closed, connectivity));
 }
 
+template <TowerInt I>
 std::vector<MaximalSegment> greedy_segmentation(std::span<const P> points, bool closed,
                                                 std::optional<Connectivity> connectivity) {
-  return run(points, closed, connectivity, [&]<class I>(std::type_identity<I>, Connectivity c) {
-    return greedy<I>(points, closed, c);
-  });
+  if (points.empty()) return {};
+  return greedy<I>(points, closed, check_curve(points, closed, connectivity));
 }
+
+Escalated<std::vector<MaximalSegment>>
+maximal_segments_exact(std::span<const P> points, bool closed,
+                       std::optional<Connectivity> connectivity) {
+  if (points.empty()) return {{}, IntKind::int64};
+  const Connectivity c = check_curve(points, closed, connectivity);
+  return escalate([&]<class I>(std::type_identity<I>) { return cover<I>(points, closed, c); });
+}
+
+Escalated<std::vector<MaximalSegment>>
+greedy_segmentation_exact(std::span<const P> points, bool closed,
+                          std::optional<Connectivity> connectivity) {
+  if (points.empty()) return {{}, IntKind::int64};
+  const Connectivity c = check_curve(points, closed, connectivity);
+  return escalate([&]<class I>(std::type_identity<I>) { return greedy<I>(points, closed, c); });
+}
+
+#define ZDG_INSTANTIATE(I)                                                                         \
+  template std::vector<MaximalSegment> maximal_segments<I>(std::span<const P>, bool,               \
+                                                           std::optional<Connectivity>);           \
+  template std::vector<MaximalSegment> greedy_segmentation<I>(std::span<const P>, bool,            \
+                                                              std::optional<Connectivity>);
+ZDG_INSTANTIATE(Int64)
+ZDG_INSTANTIATE(Int128)
+ZDG_INSTANTIATE(BigInt)
+#undef ZDG_INSTANTIATE
 
 } // namespace zdg

@@ -27,22 +27,24 @@
 // A one-point curve gives one segment (a, b, mu, omega) = (0, 1, -y, 1).
 //
 //   std::vector<zdg::Point2<std::int64_t>> contour = ...;  // closed 4-connected pointels
-//   for (const auto& s : zdg::maximal_segments(contour, true)) {
+//   for (const auto& s : zdg::maximal_segments_exact(contour, true).value) {
 //     double angle = std::atan2(double(s.a), double(s.b));  // tangent direction of s
 //     // points contour[(s.begin + k) % contour.size()], k = 0 .. s.length - 1
 //   }
 //
 // Complexity: O(n) for both (each point enters and leaves the recognizer at most once per
 // turn; Feschet and Tougne 1999, Lachaud, Vialard and de Vieilleville 2007). Width: the
-// recognizer works in local coordinates on int64 and escalates to int128 / BigInt when its
-// checked arithmetic overflows (only for curves longer than about 2^31 points); mu must fit
-// 128 bits (OverflowError otherwise).
+// recognizer works in local coordinates; maximal_segments<I> runs it on I (OverflowError when
+// its checked arithmetic overflows: on Int64 only for curves longer than about 2^31 points),
+// maximal_segments_exact escalates Int64 -> Int128 -> BigInt (arith/escalate.hpp); mu must fit
+// 128 bits and a, b, omega 64 bits (OverflowError otherwise).
 // Source: Feschet and Tougne, Optimal time computation of the tangent of a discrete curve,
 // DGCI 1999; Lachaud, Vialard, de Vieilleville, Fast, accurate and convergent tangent
 // estimation on digital contours, Image Vis. Comput. 25(10), 2007.
 #pragma once
 
 #include <zdg/arith/dss_recognizer.hpp>
+#include <zdg/arith/escalate.hpp>
 #include <zdg/arith/integer.hpp>
 #include <zdg/arith/point.hpp>
 
@@ -63,16 +65,28 @@ struct MaximalSegment {
   friend bool operator==(const MaximalSegment&, const MaximalSegment&) = default;
 };
 
-/// The tangential cover of the curve (empty for an empty curve). Throws InvalidArgument when
-/// two consecutive points (or the last and the first of a closed curve) are not adjacent.
+/// The tangential cover of the curve (empty for an empty curve), the recognizer computing on
+/// I (may throw OverflowError). Throws InvalidArgument when two consecutive points (or the last
+/// and the first of a closed curve) are not adjacent.
+template <TowerInt I>
 std::vector<MaximalSegment> maximal_segments(std::span<const Point2<std::int64_t>> points,
                                              bool closed,
                                              std::optional<Connectivity> connectivity = {});
+/// The same, exact by escalation, with the type that served.
+Escalated<std::vector<MaximalSegment>>
+maximal_segments_exact(std::span<const Point2<std::int64_t>> points, bool closed,
+                       std::optional<Connectivity> connectivity = {});
 
 /// Greedy segmentation: longest DSS from p_0, the next one starting at its last point, and so
-/// on to p_{n-1} (open) or back to p_0 (closed: the last segment ends at index 0).
+/// on to p_{n-1} (open) or back to p_0 (closed: the last segment ends at index 0). Computed on
+/// I (may throw OverflowError).
+template <TowerInt I>
 std::vector<MaximalSegment> greedy_segmentation(std::span<const Point2<std::int64_t>> points,
                                                 bool closed,
                                                 std::optional<Connectivity> connectivity = {});
+/// The same, exact by escalation, with the type that served.
+Escalated<std::vector<MaximalSegment>>
+greedy_segmentation_exact(std::span<const Point2<std::int64_t>> points, bool closed,
+                          std::optional<Connectivity> connectivity = {});
 
 } // namespace zdg

@@ -1,10 +1,15 @@
 // zdg converge and zdg paper: multigrid convergence experiments on the command line.
 //
 //   zdg converge --shape ellipse:20,7 --estimator ii-curvature --h 0.1:0.01:6 --k 5 -o DIR
+//   zdg converge --shape flower:20,7,6 --estimator ii-curvature:k=5
+//                --estimator bc-curvature:alpha=14/9 --h exp:30:60:3 -o DIR
 //   zdg converge CONFIG.toml -o DIR          (same keys as the flags: shape, estimator, h,
 //                                            k, alpha, translations, seed, box, fit_levels,
-//                                            threads, tolerance, title)
+//                                            threads, tolerance, title; convergence/config.hpp)
 //   zdg converge --list
+//
+// Flags and TOML files are read into the same settings and validated by one function
+// (validate_experiment_settings): a flag given on the command line overrides the file.
 //   zdg paper cviu2014-ii2d -o DIR [--quick]
 //
 // Outputs in DIR: results.csv, summary.json (fits, verdicts, provenance), convergence.png
@@ -12,11 +17,10 @@
 // theory check fails, 2 for bad input.
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/cli/commands.hpp>
+#include <zdg/convergence/config.hpp>
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/convergence/experiment.hpp>
 #include <zdg/convergence/shape.hpp>
-
-#include <toml++/toml.h>
 
 #include <array>
 #include <cstdio>
@@ -35,13 +39,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The flags as written (text; checked with the TOML values by validate_experiment_settings).
 struct ConvergeOptions {
   std::string config_file;
   std::vector<std::string> shapes, estimators;
-  std::string h, k, alpha, box, title;
-  int translations = -1, fit_levels = -1, threads = -1;
-  long long seed = -1;
-  double tolerance = -1;
+  std::optional<std::string> h, k, alpha, box, title, translations, fit_levels, threads, seed,
+      tolerance;
   std::string output;
   bool json = false, quiet = false, list = false, force = false, no_plot = false;
 };
@@ -76,107 +79,37 @@ std::string compiler() {
 #endif
 }
 
-// TOML value -> string (strings as is, numbers printed exactly enough).
-std::string toml_text(const toml::node& n, const std::string& key, const std::string& file) {
-  if (auto s = n.value<std::string>()) return *s;
-  if (n.is_integer()) return std::to_string(*n.value<std::int64_t>());
-  if (n.is_floating_point()) {
-    std::ostringstream o;
-    o << std::setprecision(17) << *n.value<double>();
-    return o.str();
-  }
-  if (const auto* arr = n.as_array()) {
-    std::string out;
-    for (const auto& e : *arr) out += (out.empty() ? "" : ",") + toml_text(e, key, file);
-    return out;
-  }
-  throw IoError(file + ": key '" + key + "' has an unsupported value type");
-}
-
-std::vector<std::string> toml_list(const toml::node& n, const std::string& key,
-                                   const std::string& file) {
-  std::vector<std::string> out;
-  if (const auto* arr = n.as_array()) {
-    for (const auto& e : *arr) out.push_back(toml_text(e, key, file));
-  } else {
-    out.push_back(toml_text(n, key, file));
-  }
-  return out;
-}
-
-// Fills the options that were not given on the command line from the TOML file.
-void load_toml(ConvergeOptions& o, const std::string& file) {
-  toml::table t;
-  try {
-    t = toml::parse_file(file);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream msg;
-    msg << file << ":" << e.source().begin.line << ": " << e.description();
-    throw IoError(msg.str());
-  }
-  for (const auto& [key_view, node] : t) {
-    std::string key(key_view.str());
-    auto text = [&] { return toml_text(node, key, file); };
-    auto int_value = [&]() -> long long {
-      auto v = node.value<std::int64_t>();
-      if (!v || *v < 0 || *v > 1000000000) {
-        throw IoError(file + ": key '" + key + "' must be an integer in 0..1e9");
-      }
-      return *v;
-    };
-    if (key == "shape" || key == "shapes") {
-      if (o.shapes.empty()) o.shapes = toml_list(node, key, file);
-    } else if (key == "estimator" || key == "estimators") {
-      if (o.estimators.empty()) o.estimators = toml_list(node, key, file);
-    } else if (key == "h") {
-      if (o.h.empty()) o.h = text();
-    } else if (key == "k") {
-      if (o.k.empty()) o.k = text();
-    } else if (key == "alpha") {
-      if (o.alpha.empty()) o.alpha = text();
-    } else if (key == "box") {
-      if (o.box.empty()) o.box = text();
-    } else if (key == "title") {
-      if (o.title.empty()) o.title = text();
-    } else if (key == "translations") {
-      if (o.translations < 0) o.translations = static_cast<int>(int_value());
-    } else if (key == "seed") {
-      if (o.seed < 0) o.seed = int_value();
-    } else if (key == "fit_levels" || key == "fit-levels") {
-      if (o.fit_levels < 0) o.fit_levels = static_cast<int>(int_value());
-    } else if (key == "threads") {
-      if (o.threads < 0) o.threads = static_cast<int>(int_value());
-    } else if (key == "tolerance") {
-      if (o.tolerance < 0) {
-        auto v = node.value<double>();
-        if (!v) throw IoError(file + ": key 'tolerance' must be a number");
-        o.tolerance = *v;
-      }
-    } else {
-      throw IoError(file + ": unknown key '" + key + "'");
-    }
-  }
-}
-
+// The flags as settings, then the file's settings for what the flags do not give, then the
+// one validation.
 ExperimentConfig make_config(const ConvergeOptions& o) {
-  ExperimentConfig c;
-  c.shapes = o.shapes;
-  c.estimators = o.estimators;
-  if (o.h.empty()) throw InvalidArgument("no grid steps given (--h)");
-  c.hs = parse_grid_steps(o.h);
-  c.h_text = o.h;
-  if (!o.k.empty()) c.k_text = o.k;
-  if (!o.alpha.empty()) c.alpha_text = o.alpha;
-  if (!o.box.empty()) c.box = parse_box(o.box);
-  c.translations = o.translations < 0 ? 0 : o.translations;
-  c.seed = o.seed < 0 ? 0 : static_cast<std::uint64_t>(o.seed);
-  c.fit_levels = o.fit_levels < 0 ? 0 : o.fit_levels;
-  c.threads = o.threads < 0 ? 1 : o.threads;
-  c.tolerance = o.tolerance < 0 ? 0.1 : o.tolerance;
-  // Validate the parameters before any work.
-  if (c.k_text) parse_parameter(*c.k_text, "--k");
-  if (c.alpha_text) parse_parameter(*c.alpha_text, "--alpha");
-  return c;
+  ExperimentSettings s;
+  for (const auto& x : o.shapes) s.shapes.push_back({x, "--shape"});
+  for (const auto& x : o.estimators) s.estimators.push_back({x, "--estimator"});
+  const std::pair<const std::optional<std::string>*, std::optional<Setting> ExperimentSettings::*>
+      flags[] = {{&o.h, &ExperimentSettings::h},
+                 {&o.k, &ExperimentSettings::k},
+                 {&o.alpha, &ExperimentSettings::alpha},
+                 {&o.box, &ExperimentSettings::box},
+                 {&o.title, &ExperimentSettings::title},
+                 {&o.translations, &ExperimentSettings::translations},
+                 {&o.seed, &ExperimentSettings::seed},
+                 {&o.fit_levels, &ExperimentSettings::fit_levels},
+                 {&o.threads, &ExperimentSettings::threads},
+                 {&o.tolerance, &ExperimentSettings::tolerance}};
+  const char* names[] = {
+      "--h",    "--k",          "--alpha",   "--box",      "--title", "--translations",
+      "--seed", "--fit-levels", "--threads", "--tolerance"};
+  for (std::size_t i = 0; i < std::size(flags); ++i) {
+    if (*flags[i].first) s.*flags[i].second = Setting{**flags[i].first, names[i]};
+  }
+  if (!o.config_file.empty()) {
+    std::ifstream in(o.config_file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw IoError("cannot read '" + o.config_file + "'");
+    s.fill_from(parse_experiment_toml(text.str(), o.config_file));
+  }
+  return validate_experiment_settings(s);
 }
 
 nlohmann::json json_number(double v) {
@@ -218,6 +151,7 @@ nlohmann::json fits_json(const ExperimentResult& r) {
                      {"pass", f.pass ? nlohmann::json(*f.pass) : nlohmann::json()}};
     if (f.expected) {
       j["theory"] = f.theory;
+      j["hypotheses"] = f.hypotheses;
       j["source"] = f.source;
     }
     fits.push_back(j);
@@ -225,9 +159,25 @@ nlohmann::json fits_json(const ExperimentResult& r) {
   return fits;
 }
 
-nlohmann::json config_json(const ExperimentConfig& c, const ConvergeOptions& o) {
+// Each estimator entry: its label (the name in results.csv and the fits), the registry
+// estimator and the parameters it ran with.
+nlohmann::json entries_json(const ExperimentResult& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& e : r.entries) {
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& p : e.estimator->parameters) {
+      params[p.name] = p.name == "k" ? e.parameters.k : e.parameters.alpha;
+    }
+    out.push_back({{"label", e.label}, {"estimator", e.estimator->name}, {"parameters", params}});
+  }
+  return out;
+}
+
+nlohmann::json config_json(const ExperimentConfig& c, const ExperimentResult& r,
+                           const ConvergeOptions& o) {
   return {{"shapes", c.shapes},
           {"estimators", c.estimators},
+          {"entries", entries_json(r)},
           {"h", c.h_text},
           {"hs", c.hs},
           {"k", c.k_text ? nlohmann::json(*c.k_text) : nlohmann::json()},
@@ -238,7 +188,7 @@ nlohmann::json config_json(const ExperimentConfig& c, const ConvergeOptions& o) 
           {"fit_levels", c.fit_levels},
           {"tolerance", c.tolerance},
           {"threads", c.threads},
-          {"title", o.title},
+          {"title", c.title},
           {"config_file", o.config_file}};
 }
 
@@ -255,19 +205,29 @@ void write_atomic(const fs::path& path, const std::string& text) {
   fs::rename(tmp, path);
 }
 
+std::string parameters_text(const Estimator& e) {
+  if (e.parameters.empty()) return "none";
+  std::string out;
+  for (const auto& p : e.parameters) {
+    out += (out.empty() ? "" : ", ") + p.name + " = " + p.default_text + " (" + p.meaning + ")";
+  }
+  return out;
+}
+
 void print_list() {
   std::cout << "shapes:\n";
   for (const auto& k : shape_kinds()) {
     std::cout << "  " << std::left << std::setw(26) << k.syntax << k.dimension << "D  "
               << k.description << '\n';
   }
-  std::cout << "estimators:\n";
+  std::cout << "estimators (NAME[:KEY=VALUE,...], e.g. bc-curvature:k=1,alpha=14/9):\n";
   for (const auto& e : estimators()) {
     std::cout << "  " << std::left << std::setw(14) << e.name
               << (e.dimension == 0 ? std::string("any ") : std::to_string(e.dimension) + "D  ")
               << e.description << "\n"
-              << std::string(21, ' ') << "parameters: " << e.parameters << "; error: " << e.quantity
-              << '\n';
+              << std::string(21, ' ') << "parameters: " << parameters_text(e)
+              << "; error: " << e.quantity << "\n"
+              << std::string(21, ' ') << "theory: " << e.theory.summary << '\n';
   }
 }
 
@@ -280,10 +240,18 @@ void list_json() {
                       {"description", k.description}});
   }
   for (const auto& e : estimators()) {
+    nlohmann::json params = nlohmann::json::array();
+    for (const auto& p : e.parameters) {
+      params.push_back({{"name", p.name},
+                        {"default", p.default_text},
+                        {"range", {p.lo, p.hi}},
+                        {"meaning", p.meaning}});
+    }
     ests.push_back({{"name", e.name},
                     {"dimension", e.dimension},
                     {"description", e.description},
-                    {"parameters", e.parameters},
+                    {"parameters", params},
+                    {"theory", e.theory.summary},
                     {"error", e.quantity}});
   }
   print_json({{"shapes", shapes}, {"estimators", ests}});
@@ -298,7 +266,6 @@ void run_converge(ConvergeOptions o, Context& ctx) {
     }
     return;
   }
-  if (!o.config_file.empty()) load_toml(o, o.config_file);
   ExperimentConfig config = make_config(o);
   if (o.output.empty() && !o.json) throw InvalidArgument("no output directory given (-o DIR)");
   fs::path dir(o.output);
@@ -325,7 +292,7 @@ void run_converge(ConvergeOptions o, Context& ctx) {
   ExperimentResult result = run_experiment(config, progress);
 
   nlohmann::json summary{
-      {"config", config_json(config, o)},
+      {"config", config_json(config, result, o)},
       {"fits", fits_json(result)},
       {"all_pass", result.all_pass},
       {"provenance",
@@ -334,6 +301,7 @@ void run_converge(ConvergeOptions o, Context& ctx) {
         {"integer_types", {"int64 (checked)", "int128 (checked)", "bigint (GMP mpz)"}},
         {"grid_step", "the double nearest to each h, used as an exact dyadic rational"},
         {"seed", config.seed}}}};
+  bool plotted = false; // the plot line is printed only for a plot that was drawn
   if (!o.output.empty()) {
     std::ostringstream csv;
     write_results_csv(result, csv);
@@ -342,7 +310,9 @@ void run_converge(ConvergeOptions o, Context& ctx) {
     if (!o.no_plot) {
       std::string script = source_dir() + "/papers/plot_convergence.py";
       std::string cmd = "/usr/bin/python3 '" + script + "' '" + dir.string() + "' >/dev/null 2>&1";
-      if (!fs::exists(script) || std::system(cmd.c_str()) != 0) {
+      if (fs::exists(script) && std::system(cmd.c_str()) == 0) {
+        plotted = true;
+      } else {
         std::cerr << "zdg: warning: the plot could not be drawn (" << script
                   << " with /usr/bin/python3 and matplotlib)\n";
       }
@@ -352,42 +322,42 @@ void run_converge(ConvergeOptions o, Context& ctx) {
     print_json({{"runs", runs_json(result)}, {"fits", fits_json(result)}});
   } else {
     int width = 6;
-    for (const auto& f : result.fits) width = std::max(width, static_cast<int>(f.shape.size()) + 2);
-    std::cout << std::left << std::setw(width) << "shape" << std::setw(15) << "estimator"
+    int ewidth = 15;
+    for (const auto& f : result.fits) {
+      width = std::max(width, static_cast<int>(f.shape.size()) + 2);
+      ewidth = std::max(ewidth, static_cast<int>(f.estimator.size()) + 2);
+    }
+    std::cout << std::left << std::setw(width) << "shape" << std::setw(ewidth) << "estimator"
               << std::setw(6) << "norm" << std::setw(18) << "slope" << std::setw(10) << "expected"
               << "verdict\n";
     for (const auto& f : result.fits) {
       std::ostringstream slope, expected;
       slope << std::fixed << std::setprecision(3) << f.fit.slope << " +- " << f.fit.stderr_slope;
       if (f.expected) expected << std::fixed << std::setprecision(3) << *f.expected;
-      std::cout << std::left << std::setw(width) << f.shape << std::setw(15) << f.estimator
+      std::cout << std::left << std::setw(width) << f.shape << std::setw(ewidth) << f.estimator
                 << std::setw(6) << f.norm << std::setw(18) << slope.str() << std::setw(10)
                 << (f.expected ? expected.str() : "-")
                 << (f.pass ? (*f.pass ? "PASS" : "FAIL") : "-") << '\n';
     }
     if (!o.output.empty()) {
       std::cout << "results: " << (dir / "results.csv").string()
-                << "\nsummary: " << (dir / "summary.json").string()
-                << "\nplot:    " << (dir / "convergence.png").string() << '\n';
+                << "\nsummary: " << (dir / "summary.json").string() << '\n';
+      if (plotted) std::cout << "plot:    " << (dir / "convergence.png").string() << '\n';
     }
   }
   if (!result.all_pass) ctx.exit_code = 1;
 }
 
-CLI::Validator non_negative_integer() {
-  return CLI::Validator(
-      [](std::string& text) {
-        bool ok = !text.empty() && text.size() <= 18 &&
-                  text.find_first_not_of("0123456789") == std::string::npos;
-        return ok ? std::string() : "'" + text + "' is not a non-negative integer";
-      },
-      "INT>=0");
+// A flag kept as text when given (its value is checked with the TOML values).
+void add_text_option(CLI::App* cmd, const std::string& name, std::optional<std::string>& target,
+                     const std::string& help) {
+  cmd->add_option_function<std::string>(
+      name, [&target](const std::string& v) { target = v; }, help);
 }
 
 void add_run_options(CLI::App* cmd, ConvergeOptions& o) {
   cmd->add_option("-o,--output", o.output, "Output directory (results.csv, summary.json, plot)");
-  cmd->add_option("--threads", o.threads, "Worker threads (runs in parallel)")
-      ->check(CLI::Range(1, 1024));
+  add_text_option(cmd, "--threads", o.threads, "Worker threads (runs in parallel), 1..1024");
   cmd->add_flag("--json", o.json, "Print runs and fits as JSON on stdout");
   cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
   cmd->add_flag("--force", o.force, "Replace results already in the output directory");
@@ -404,20 +374,22 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     cmd->add_option("config", o->config_file, "TOML file with the same keys as the flags")
         ->check(CLI::ExistingFile);
     cmd->add_option("--shape", o->shapes, "Shape, e.g. ellipse:20,7 (repeatable; see --list)");
-    cmd->add_option("--estimator", o->estimators, "Estimator name (repeatable; see --list)");
-    cmd->add_option("--h", o->h, "Grid steps: HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
-    cmd->add_option("--k", o->k, "Parameter k (R = k h^alpha, mask factor), rational");
-    cmd->add_option("--alpha", o->alpha, "Exponent alpha of R = k h^alpha, rational");
-    cmd->add_option("--translations", o->translations,
-                    "Random sub-pixel translations per h (0: untranslated)")
-        ->check(non_negative_integer());
-    cmd->add_option("--seed", o->seed, "Seed of the translations")->check(non_negative_integer());
-    cmd->add_option("--box", o->box, "Digitization domain [LO,HI]^d as LO:HI");
-    cmd->add_option("--fit-levels", o->fit_levels, "Fit on the L finest levels (0: all)")
-        ->check(non_negative_integer());
-    cmd->add_option("--tolerance", o->tolerance, "Slope tolerance of the theory check (0.1)")
-        ->check(CLI::Range(0.0, 10.0));
-    cmd->add_option("--title", o->title, "Plot title");
+    cmd->add_option("--estimator", o->estimators,
+                    "Estimator with its own parameters, NAME[:KEY=VALUE,...], e.g. "
+                    "bc-curvature:k=1,alpha=14/9 (repeatable; see --list)");
+    add_text_option(cmd, "--h", o->h, "Grid steps: HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
+    add_text_option(cmd, "--k", o->k,
+                    "Default k of every estimator that has one (R = k h^alpha, mask factor)");
+    add_text_option(cmd, "--alpha", o->alpha,
+                    "Default alpha of every estimator that has one (R = k h^alpha, mask exponent)");
+    add_text_option(cmd, "--translations", o->translations,
+                    "Random sub-pixel translations per h (0: untranslated), 0..100000");
+    add_text_option(cmd, "--seed", o->seed, "Seed of the translations");
+    add_text_option(cmd, "--box", o->box, "Digitization domain [LO,HI]^d as LO:HI");
+    add_text_option(cmd, "--fit-levels", o->fit_levels, "Fit on the L finest levels (0: all)");
+    add_text_option(cmd, "--tolerance", o->tolerance,
+                    "Slope tolerance of the theory check, in [0, 10] (0.1)");
+    add_text_option(cmd, "--title", o->title, "Plot title");
     cmd->add_flag("--list", o->list, "List shapes and estimators with their parameters");
     add_run_options(cmd, *o);
     cmd->callback([o, &ctx] { run_converge(*o, ctx); });
@@ -428,7 +400,8 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     auto quick = std::make_shared<bool>(false);
     auto* cmd = app.add_subcommand("paper", "Reproduce one figure of papers/NAME");
     cmd->add_option("name", *name,
-                    "cviu2014-ii2d, gauss-area, tangent-2d, cviu2014-ii3d, hausdorff")
+                    "cviu2014-ii2d, cviu2014-compare, gauss-area, tangent-2d, cviu2014-ii3d, "
+                    "hausdorff")
         ->required();
     cmd->add_flag("--quick", *quick, "The reduced sweep (papers/NAME/quick.toml)");
     add_run_options(cmd, *o);

@@ -109,7 +109,7 @@ int connectivity_number(Connectivity c) {
 void run_recognize(const std::string& path, int forced, bool json) {
   PointFile f = read_points(path);
   Connectivity c = check_adjacency(path, f, forced, false);
-  auto r = recognize_dss(f.pts, c);
+  auto r = recognize_dss_exact(f.pts, c).value;
   const auto& ch = r.characteristics;
   if (json) {
     nlohmann::json j{{"is_dss", r.is_dss}, {"connectivity", connectivity_number(c)}};
@@ -153,7 +153,8 @@ void run_cover(const std::string& path, bool closed, bool greedy, int forced, bo
                             " has a coordinate beyond 64 bits (cover works on int64 points)");
     }
   }
-  auto segs = greedy ? greedy_segmentation(pts, closed, c) : maximal_segments(pts, closed, c);
+  auto segs = greedy ? greedy_segmentation_exact(pts, closed, c).value
+                     : maximal_segments_exact(pts, closed, c).value;
   if (json) {
     nlohmann::json arr = nlohmann::json::array();
     for (const auto& s : segs) {

@@ -71,7 +71,7 @@ Rational<BigInt> arg_rational(const std::string& name, const std::string& text) 
 
 // The 2D report: vertices, twice the area, boundary and interior lattice point counts.
 nlohmann::json polygon_json(const std::vector<Point2<BigInt>>& v) {
-  auto m = lattice_polygon_measures_exact(std::span<const Point2<BigInt>>(v));
+  auto m = lattice_polygon_measures_exact(std::span<const Point2<BigInt>>(v)).value;
   nlohmann::json verts = nlohmann::json::array();
   for (const auto& p : v) verts.push_back({p.x.str(), p.y.str()});
   return {{"vertices", verts},
@@ -119,15 +119,7 @@ void run_points(const std::string& path, bool json) {
     std::vector<Point2<BigInt>> big;
     big.reserve(pts.size());
     for (auto& p : pts) big.push_back({p[0], p[1]});
-    auto r = escalate([&]<class I>(std::type_identity<I>) {
-      std::vector<Point2<I>> q;
-      q.reserve(big.size());
-      for (const auto& p : big) q.push_back({int_cast<I>(p.x), int_cast<I>(p.y)});
-      auto idx = lattice_hull_2d_indices<I>(std::span<const Point2<I>>(q));
-      std::vector<Point2<BigInt>> v;
-      for (auto i : idx) v.push_back(big[i]);
-      return v;
-    });
+    auto r = lattice_hull_2d_exact(std::span<const Point2<BigInt>>(big));
     print_polygon(r.value, "hull of " + std::to_string(pts.size()) + " points",
                   std::string(to_string(r.served)), json);
     return;
@@ -136,7 +128,7 @@ void run_points(const std::string& path, bool json) {
   big.reserve(pts.size());
   for (auto& p : pts) big.push_back({p[0], p[1], p[2]});
   auto r = lattice_hull_3d_exact(std::span<const Point3<BigInt>>(big));
-  const auto& h = r.hull;
+  const auto& h = r.value;
   if (json) {
     nlohmann::json verts = nlohmann::json::array(), facets = nlohmann::json::array();
     for (const auto& p : h.vertices) verts.push_back({p.x.str(), p.y.str(), p.z.str()});
@@ -169,16 +161,16 @@ void run_halfplanes(const std::string& path, bool json) {
                   field_rational(path, l, l.fields[2])});
   }
   auto r = halfplane_hull_exact(std::span<const HalfPlane<BigInt>>(hs));
-  if (r.region != RegionKind::bounded) {
+  if (r.value.region != RegionKind::bounded) {
     if (json) {
-      print_json({{"region", to_string(r.region)}});
+      print_json({{"region", to_string(r.value.region)}});
     } else {
-      std::cout << "the region of the " << hs.size() << " half-planes is " << to_string(r.region)
-                << '\n';
+      std::cout << "the region of the " << hs.size() << " half-planes is "
+                << to_string(r.value.region) << '\n';
     }
     return;
   }
-  print_polygon(r.vertices, "integer hull of " + std::to_string(hs.size()) + " half-planes",
+  print_polygon(r.value.vertices, "integer hull of " + std::to_string(hs.size()) + " half-planes",
                 std::string(to_string(r.served)), json, "bounded");
 }
 
@@ -210,7 +202,7 @@ void add_hull_commands(CLI::App& app, Context& /*ctx*/) {
     cmd->callback([=] {
       auto r = disc_hull_exact(arg_rational("CX", (*args)[0]), arg_rational("CY", (*args)[1]),
                                arg_rational("R", (*args)[2]));
-      print_polygon(r.vertices, "disc hull", std::string(to_string(r.served)), *json);
+      print_polygon(r.value.vertices, "disc hull", std::string(to_string(r.served)), *json);
     });
   }
   {
@@ -223,7 +215,7 @@ void add_hull_commands(CLI::App& app, Context& /*ctx*/) {
     cmd->callback([=] {
       auto r = ellipse_hull_exact(arg_rational("CX", (*args)[0]), arg_rational("CY", (*args)[1]),
                                   arg_rational("A", (*args)[2]), arg_rational("B", (*args)[3]));
-      print_polygon(r.vertices, "ellipse hull", std::string(to_string(r.served)), *json);
+      print_polygon(r.value.vertices, "ellipse hull", std::string(to_string(r.served)), *json);
     });
   }
   {

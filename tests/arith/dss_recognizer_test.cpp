@@ -263,12 +263,12 @@ TEST(DssRecognizer, WorkedExampleSlopeThreeSevenths) {
   // y = floor(3 x / 7) for x = 0..19: the naive line 0 <= 3x - 7y < 7.
   std::vector<Point2<std::int64_t>> pts;
   for (std::int64_t x = 0; x < 20; ++x) pts.push_back({x, (3 * x) / 7});
-  auto r = recognize_dss(pts, Connectivity::eight);
+  auto r = recognize_dss_exact(pts, Connectivity::eight).value;
   EXPECT_TRUE(r.is_dss);
   EXPECT_EQ(r.characteristics, (DssCharacteristics{3, 7, 0, 7}));
   // One more point above the line breaks it after 20 points.
   pts.push_back({20, 9});
-  r = recognize_dss(pts, Connectivity::eight);
+  r = recognize_dss_exact(pts, Connectivity::eight).value;
   EXPECT_FALSE(r.is_dss);
   EXPECT_EQ(r.longest_prefix, 20u);
 }
@@ -283,7 +283,7 @@ TEST(DssRecognizer, StandardStaircase) {
                             : Point2<std::int64_t>{p.x, p.y + 1});
   }
   EXPECT_EQ(path_connectivity(pts), Connectivity::four);
-  auto r = recognize_dss(pts, Connectivity::four);
+  auto r = recognize_dss_exact(pts, Connectivity::four).value;
   EXPECT_TRUE(r.is_dss);
   EXPECT_EQ(r.characteristics, (DssCharacteristics{2, 5, 0, 7}));
 }
@@ -304,9 +304,10 @@ TEST(DssRecognizer, HugeCoordinatesServeOnInt64) {
   const std::int64_t big = std::int64_t{1} << 62;
   std::vector<Point2<std::int64_t>> pts;
   for (std::int64_t x = 0; x < 50; ++x) pts.push_back({big + x, big - 3 + (5 * x) / 11});
-  auto r = recognize_dss(pts, Connectivity::eight);
+  auto e = recognize_dss_exact(pts, Connectivity::eight);
+  const auto& r = e.value;
   EXPECT_TRUE(r.is_dss);
-  EXPECT_EQ(r.served, IntKind::int64);
+  EXPECT_EQ(e.served, IntKind::int64);
   EXPECT_EQ(r.characteristics.a, 5);
   EXPECT_EQ(r.characteristics.b, 11);
   // 5 (big + x) - 11 (big - 3 + y) = 5x - 11y - 6 big + 33, and min over the points of
@@ -316,10 +317,32 @@ TEST(DssRecognizer, HugeCoordinatesServeOnInt64) {
   std::vector<Point2<BigInt>> huge;
   BigInt h = BigInt(1) << 100;
   for (int x = 0; x < 10; ++x) huge.push_back({h + x, -h + x / 3});
-  auto rh = recognize_dss(huge, Connectivity::eight);
-  EXPECT_TRUE(rh.is_dss);
+  auto rh = recognize_dss_exact(huge, Connectivity::eight);
+  EXPECT_TRUE(rh.value.is_dss);
   EXPECT_NE(rh.served, IntKind::int64);
-  EXPECT_EQ(rh.characteristics, (DssCharacteristics{1, 3, BigInt(h - 3 * (-h)), 3}));
+  EXPECT_EQ(rh.value.characteristics, (DssCharacteristics{1, 3, BigInt(h - 3 * (-h)), 3}));
+  // recognize_dss<I> computes on I: the points do not fit int64, the BigInt run agrees.
+  const std::vector<Point2<Int64>> none;
+  EXPECT_THROW(recognize_dss<Int64>(std::span<const Point2<Int64>>(none), Connectivity::eight),
+               InvalidArgument);
+  EXPECT_EQ(recognize_dss<BigInt>(std::span<const Point2<BigInt>>(huge), Connectivity::eight)
+                .characteristics,
+            rh.value.characteristics);
+}
+
+// recognize_dss<I> on each tower type agrees with the escalating entry point (the same
+// minimal characteristics whichever type computes them).
+TYPED_TEST(DssRecognizerTest, RecognizeOnEveryTypeAgreesWithExact) {
+  using I = TypeParam;
+  std::vector<Point2<std::int64_t>> pts;
+  for (std::int64_t x = 0; x < 30; ++x) pts.push_back({x - 7, (5 * x) / 13 + 2});
+  std::vector<Point2<I>> q;
+  for (const auto& p : pts) q.push_back({I(p.x), I(p.y)});
+  auto r = recognize_dss<I>(std::span<const Point2<I>>(q), Connectivity::eight);
+  auto e = recognize_dss_exact(pts, Connectivity::eight);
+  EXPECT_EQ(e.served, IntKind::int64);
+  EXPECT_TRUE(r.is_dss);
+  EXPECT_EQ(r.characteristics, e.value.characteristics);
 }
 
 } // namespace

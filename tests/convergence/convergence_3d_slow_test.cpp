@@ -1,6 +1,6 @@
 // Slow sweeps (label "slow"): the fitted l_inf slopes of the 3D estimators and of the
 // Hausdorff distance over finer grid steps and random translations meet their proven rates
-// (THEORY.md) on the finest levels, and the Lachaud-Thibert bound holds at every level.
+// (papers/THEORY.md) on the finest levels, and the Lachaud-Thibert bound holds at every level.
 #include "tests/support/experiments.hpp"
 #include <zdg/convergence/experiment.hpp>
 

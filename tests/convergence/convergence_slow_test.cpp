@@ -1,5 +1,5 @@
 // Slow sweeps (label "slow"): the fitted l_inf slopes of the 2D estimators over finer grid
-// steps and random translations meet their proven rates (THEORY.md) on the finest levels.
+// steps and random translations meet their proven rates (papers/THEORY.md) on the finest levels.
 #include "tests/support/experiments.hpp"
 #include <zdg/convergence/experiment.hpp>
 

@@ -2,7 +2,6 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/experiment.hpp>
-#include <zdg/convergence/theory.hpp>
 #include <zdg/estimators/hausdorff.hpp>
 
 #include "tests/support/experiments.hpp"
@@ -170,14 +169,14 @@ TEST(Estimators3d, DimensionsAndTheoryRows) {
   auto sphere = zdg::parse_shape("sphere9");
   auto goursat = zdg::parse_shape("goursat");
   auto heart = zdg::parse_shape("heart");
-  EXPECT_NEAR(zdg::theory_rate("ii-k2", *goursat, 1.0 / 3)->slope, 1.0 / 3, 1e-12);
-  EXPECT_NEAR(zdg::theory_rate("ii-normal", *goursat, 1.0 / 3)->slope, 2.0 / 3, 1e-12);
-  EXPECT_FALSE(zdg::theory_rate("ii-mean", *goursat, 0.5).has_value());          // other law
-  EXPECT_FALSE(zdg::theory_rate("ii-directions", *sphere, 1.0 / 3).has_value()); // umbilic
-  EXPECT_FALSE(zdg::theory_rate("ii-mean", *heart, 1.0 / 3).has_value());        // cusps
-  EXPECT_NEAR(zdg::theory_rate("gauss-volume", *sphere, 0)->slope, 243.0 / 158, 1e-12);
-  EXPECT_NEAR(zdg::theory_rate("hausdorff", *zdg::parse_shape("ball:3"), 0)->slope, 1, 1e-12);
-  EXPECT_FALSE(zdg::theory_rate("hausdorff-rel", *sphere, 0).has_value());
+  EXPECT_NEAR(zdg::test::theory_rate("ii-k2", *goursat, 1.0 / 3)->slope, 1.0 / 3, 1e-12);
+  EXPECT_NEAR(zdg::test::theory_rate("ii-normal", *goursat, 1.0 / 3)->slope, 2.0 / 3, 1e-12);
+  EXPECT_FALSE(zdg::test::theory_rate("ii-mean", *goursat, 0.5).has_value());          // other law
+  EXPECT_FALSE(zdg::test::theory_rate("ii-directions", *sphere, 1.0 / 3).has_value()); // umbilic
+  EXPECT_FALSE(zdg::test::theory_rate("ii-mean", *heart, 1.0 / 3).has_value());        // cusps
+  EXPECT_NEAR(zdg::test::theory_rate("gauss-volume", *sphere, 0)->slope, 243.0 / 158, 1e-12);
+  EXPECT_NEAR(zdg::test::theory_rate("hausdorff", *zdg::parse_shape("ball:3"), 0)->slope, 1, 1e-12);
+  EXPECT_FALSE(zdg::test::theory_rate("hausdorff-rel", *sphere, 0).has_value());
 }
 
 } // namespace

@@ -1,12 +1,14 @@
 #include <zdg/convergence/experiment.hpp>
 
 #include "tests/support/experiments.hpp"
+#include "tests/support/tower.hpp"
 #include <zdg/arith/error.hpp>
-#include <zdg/convergence/theory.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 namespace {
@@ -69,7 +71,7 @@ TEST(Experiment, IICurvatureSlopeOnTheEllipseSmoke) {
   EXPECT_TRUE(r.all_pass);
   std::ostringstream csv;
   zdg::write_results_csv(r, csv);
-  EXPECT_NE(csv.str().find("\"ellipse:20,7\",ii-curvature,0.5,0"), std::string::npos);
+  EXPECT_NE(csv.str().find("\"ellipse:20,7\",\"ii-curvature\",0.5,0"), std::string::npos);
 }
 
 TEST(Experiment, MomentsAndTangentSlopesSmoke) {
@@ -121,19 +123,101 @@ TEST(Experiment, RejectsMismatchedInput) {
   EXPECT_THROW(zdg::run_experiment(c), zdg::InvalidArgument); // area unknown
 }
 
-TEST(Theory, RatesOfTheRegistry) {
-  auto e = zdg::parse_shape("ellipse:20,7");
-  EXPECT_NEAR(zdg::theory_rate("ii-curvature", *e, 1.0 / 3)->slope, 1.0 / 3, 1e-15);
-  EXPECT_FALSE(zdg::theory_rate("ii-curvature", *e, 0.5).has_value());
-  // Binomial convolver: bias h^{2-a} against noise h^{a/2} (tangent), h^{a-1} (curvature).
-  EXPECT_NEAR(zdg::theory_rate("bc-curvature", *e, 14.0 / 9)->slope, 4.0 / 9, 1e-15);
-  EXPECT_NEAR(zdg::theory_rate("bc-curvature", *e, 4.0 / 3)->slope, 1.0 / 3, 1e-15);
-  EXPECT_NEAR(zdg::theory_rate("bc-curvature", *e, 1.5)->slope, 0.5, 1e-15);
-  EXPECT_NEAR(zdg::theory_rate("bc-tangent", *e, 4.0 / 3)->slope, 2.0 / 3, 1e-15);
-  EXPECT_FALSE(zdg::theory_rate("bc-curvature", *e, 1.0).has_value());
-  auto p = zdg::parse_shape("polygon:0,0,1,0,0,1");
-  EXPECT_EQ(zdg::theory_rate("gauss-area", *p, 0)->slope, 1.0);
-  EXPECT_FALSE(zdg::theory_rate("ii-curvature", *p, 1.0 / 3).has_value());
+// Theorem checked: aggregate_levels (sort, then one pass: O(n log n)) equals the definition,
+// a quadratic scan that takes, for every (shape, entry, h), the maximum of l_inf and the
+// averages of l_2 and of the mean over its translations; levels ordered by shape, entry and
+// decreasing h; records in any order.
+TEST(Experiment, AggregationEqualsTheQuadraticScan) {
+  zdg::test::check_property([] {
+    const int shapes = *rc::gen::inRange(1, 4), entries = *rc::gen::inRange(1, 4),
+              levels = *rc::gen::inRange(1, 6), translations = *rc::gen::inRange(1, 5);
+    std::vector<zdg::RunRecord> runs;
+    for (int s = 0; s < shapes; ++s) {
+      for (int e = 0; e < entries; ++e) {
+        for (int l = 0; l < levels; ++l) {
+          for (int t = 0; t < translations; ++t) {
+            zdg::RunRecord r;
+            r.shape_index = std::size_t(s);
+            r.entry_index = std::size_t(e);
+            r.h = std::ldexp(1.0, -l);
+            r.translation = t;
+            r.errors.linf = *rc::gen::inRange(0, 1000) / 7.0;
+            r.errors.l2 = *rc::gen::inRange(0, 1000) / 11.0;
+            r.errors.mean = *rc::gen::inRange(0, 1000) / 13.0;
+            runs.push_back(r);
+          }
+        }
+      }
+    }
+    const auto order =
+        *rc::gen::container<std::vector<int>>(runs.size(), rc::gen::arbitrary<int>());
+    std::vector<std::size_t> perm(runs.size());
+    std::iota(perm.begin(), perm.end(), 0);
+    std::sort(perm.begin(), perm.end(), [&](std::size_t a, std::size_t b) {
+      return std::pair(order[a], a) < std::pair(order[b], b);
+    });
+    std::vector<zdg::RunRecord> shuffled;
+    for (auto k : perm) shuffled.push_back(runs[k]);
+    const auto got = zdg::aggregate_levels(shuffled);
+    RC_ASSERT(got.size() == std::size_t(shapes * entries * levels));
+    std::size_t k = 0;
+    for (int s = 0; s < shapes; ++s) {
+      for (int e = 0; e < entries; ++e) {
+        for (int l = 0; l < levels; ++l, ++k) {
+          const double h = std::ldexp(1.0, -l);
+          double linf = 0, l2 = 0, mean = 0;
+          int n = 0;
+          for (const auto& r : runs) { // the quadratic scan
+            if (r.shape_index != std::size_t(s) || r.entry_index != std::size_t(e) || r.h != h)
+              continue;
+            linf = std::max(linf, r.errors.linf);
+            l2 += r.errors.l2;
+            mean += r.errors.mean;
+            ++n;
+          }
+          RC_ASSERT(got[k].shape_index == std::size_t(s));
+          RC_ASSERT(got[k].entry_index == std::size_t(e));
+          RC_ASSERT(got[k].h == h);
+          RC_ASSERT(got[k].runs == n);
+          RC_ASSERT(got[k].linf == linf);
+          RC_ASSERT(std::abs(got[k].l2 - l2 / n) <= 1e-12 * (1 + l2));
+          RC_ASSERT(std::abs(got[k].mean - mean / n) <= 1e-12 * (1 + mean));
+        }
+      }
+    }
+  });
+}
+
+// Two entries of one estimator with different parameters are two curves: their own rows in
+// results.csv (quoted labels), their own fits, their own parameters.
+TEST(Experiment, EntriesOfOneEstimatorStayApart) {
+  zdg::ExperimentConfig c;
+  c.shapes = {"ellipse:20,7"};
+  c.estimators = {"ii-curvature:k=5", "ii-curvature:k=3", "bc-curvature:alpha=4/3"};
+  c.hs = {0.5, 0.35, 0.25};
+  c.threads = 2;
+  auto r = zdg::run_experiment(c);
+  ASSERT_EQ(r.entries.size(), 3u);
+  EXPECT_EQ(r.entries[0].label, "ii-curvature:k=5");
+  EXPECT_EQ(r.entries[0].parameters.k, 5.0);
+  EXPECT_EQ(r.entries[1].parameters.k, 3.0);
+  EXPECT_EQ(r.entries[2].parameters.alpha, 4.0 / 3);
+  EXPECT_EQ(r.runs.size(), 9u);
+  EXPECT_EQ(r.fits.size(), 9u);
+  const auto& f5 = linf_fit(r, "ii-curvature:k=5");
+  const auto& f3 = linf_fit(r, "ii-curvature:k=3");
+  EXPECT_NE(f5.fit.slope, f3.fit.slope);
+  // The rate follows the entry's own exponent: bc-curvature at a = 4/3 proves only h^{1/3}.
+  EXPECT_NEAR(*linf_fit(r, "bc-curvature:alpha=4/3").expected, 1.0 / 3, 1e-12);
+  std::ostringstream csv;
+  zdg::write_results_csv(r, csv);
+  EXPECT_NE(csv.str().find("\"ellipse:20,7\",\"ii-curvature:k=5\",0.5,0,\"0 0\",5,"),
+            std::string::npos)
+      << csv.str();
+  EXPECT_NE(csv.str().find("\"ii-curvature:k=3\",0.5,0,\"0 0\",3,"), std::string::npos);
+  // The same label twice is refused.
+  c.estimators = {"ii-curvature:k=5", "ii-curvature:k=5"};
+  EXPECT_THROW(zdg::run_experiment(c), zdg::InvalidArgument);
 }
 
 } // namespace

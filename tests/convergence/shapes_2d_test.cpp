@@ -10,6 +10,8 @@
 #include <functional>
 #include <numbers>
 #include <optional>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace {
@@ -26,7 +28,7 @@ std::unique_ptr<Shape2> shape2(const char* spec) {
 }
 
 TEST(Shapes2d, EllipsePerimeterSeriesAndQuadratureMatchThePublishedValue) {
-  // THEORY.md: a = 20, b = 7 gives 89.8147914563.
+  // papers/THEORY.md: a = 20, b = 7 gives 89.8147914563.
   EXPECT_NEAR(zdg::ellipse_perimeter(20, 7), 89.8147914563, 1e-9);
   auto e = shape2("ellipse:20,7");
   EXPECT_NEAR(*e->perimeter(), 89.8147914563, 1e-9);
@@ -364,6 +366,45 @@ TEST(Shapes2d, ParseErrorsNameTheProblem) {
   EXPECT_NE(message("flower:20,7,1/2").find("integer"), std::string::npos);
   EXPECT_NE(message("poly:x^2+").find("position"), std::string::npos);
   EXPECT_EQ(message("ellipse:20,7,1/3"), "no error");
+}
+
+// Issue #18 item 10: parameters are finite and in range (a radius that rounds to 0, an angle
+// that overflows the double range, absurd petal counts), refused with one short line.
+TEST(Shapes2d, NonFiniteAndOutOfRangeParametersAreRefused) {
+  auto message = [](const std::string& spec) {
+    try {
+      zdg::parse_shape(spec);
+    } catch (const zdg::InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // 10^400 (infinite as a double) and 10^-401 (0 as a double), written out.
+  std::ostringstream huge_text, tiny_text;
+  huge_text << '1' << std::string(400, '0');
+  tiny_text << "0." << std::string(400, '0') << '1';
+  const std::string huge = huge_text.str(), tiny = tiny_text.str();
+  std::vector<std::string> specs;
+  for (const char* prefix :
+       {"flower:20,7,6,", "ball:", "ellipse:20,7,", "accflower:20,5,", "ball:1/"}) {
+    specs.push_back(prefix);
+    specs.back().append(huge);
+  }
+  for (const char* prefix : {"ball:", "ellipse:20,"}) {
+    specs.push_back(prefix);
+    specs.back().append(tiny);
+  }
+  specs.push_back("polygon:0,0,");
+  specs.back().append(huge).append(",0,0,1");
+  specs.push_back("ball:2000000000");
+  for (const auto& spec : specs) {
+    const auto m = message(spec);
+    EXPECT_NE(m.find("out of range"), std::string::npos) << spec << ": " << m;
+    EXPECT_LT(m.size(), 200u) << m;
+  }
+  EXPECT_NE(message("flower:20,7,100000").find("-1000..1000"), std::string::npos);
+  EXPECT_EQ(message("flower:20,7,6,0"), "no error");
+  EXPECT_EQ(message("ball:1/1000000"), "no error");
 }
 
 TEST(Shapes2d, TranslationsAreSeededAndSubPixel) {

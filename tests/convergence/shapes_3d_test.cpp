@@ -2,6 +2,7 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/gauss_volume.hpp>
+#include <zdg/kernel/polynomial.hpp>
 
 #include <gtest/gtest.h>
 
@@ -49,7 +50,7 @@ void expect_consistent(const zdg::SurfacePoint3& s) {
 }
 
 TEST(Shapes3d, SphereSignConventionHIsOneOverR) {
-  // THEORY.md: fix the sign once, a sphere of radius r has H = 1/r > 0 (outward normal).
+  // papers/THEORY.md: fix the sign once, a sphere of radius r has H = 1/r > 0 (outward normal).
   auto s = shape3("sphere9");
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-12, 12);

@@ -36,7 +36,12 @@ TEST(Moments, ContourSumsEqualBruteForcePixelSums) {
     std::vector<std::int64_t> rows;
     for (int y = 0; y < h; ++y) rows.push_back(oy + y);
     auto contours = zdg::digital_contours(set, rows, {});
-    auto s = zdg::digital_moments(contours);
+    auto exact = zdg::digital_moments_exact(contours);
+    const auto& s = exact.value;
+    RC_ASSERT(exact.served == zdg::IntKind::int64);
+    // Every tower type gives the same sums.
+    auto s128 = zdg::digital_moments<zdg::Int128>(contours);
+    auto sbig = zdg::digital_moments<zdg::BigInt>(contours);
     std::int64_t e[6] = {0, 0, 0, 0, 0, 0};
     for (int y = 0; y < h; ++y) {
       for (int x = 0; x < w; ++x) {
@@ -50,7 +55,11 @@ TEST(Moments, ContourSumsEqualBruteForcePixelSums) {
         e[5] += Y * Y;
       }
     }
-    for (std::size_t i = 0; i < 6; ++i) RC_ASSERT(s[i] == zdg::BigInt(e[i]));
+    for (std::size_t i = 0; i < 6; ++i) {
+      RC_ASSERT(s[i] == zdg::BigInt(e[i]));
+      RC_ASSERT(zdg::to_bigint(s128[i]) == s[i]);
+      RC_ASSERT(sbig[i] == s[i]);
+    }
     RC_ASSERT(zdg::pixel_count(contours) == e[0]);
   });
 }

@@ -179,10 +179,10 @@ TEST(ConvexBodyHullThin, TallThinEllipse) {
   auto r = ellipse_hull_exact(Q(BigInt(1), BigInt(3)), Q(0), Q(BigInt(1), BigInt(2)),
                               Q(BigInt(1000000000)));
   // Only the column x = 0 meets the lattice: y^2 <= 10^18 (1 - 4/9), |y| <= 745355992.
-  ASSERT_EQ(r.vertices.size(), 2u);
-  EXPECT_EQ(r.vertices[0].y, BigInt(-745355992));
-  EXPECT_EQ(r.vertices[1].y, BigInt(745355992));
-  EXPECT_EQ(r.vertices[1].x, BigInt(0));
+  ASSERT_EQ(r.value.vertices.size(), 2u);
+  EXPECT_EQ(r.value.vertices[0].y, BigInt(-745355992));
+  EXPECT_EQ(r.value.vertices[1].y, BigInt(745355992));
+  EXPECT_EQ(r.value.vertices[1].x, BigInt(0));
 }
 
 TEST(ConvexBodyHullRegion, ClassifiesEmptyUnboundedAndBounded) {
@@ -244,10 +244,10 @@ TEST(ConvexBodyHullEscalation, HugeCentreIsATranslate) {
     auto far = disc_hull_exact(Rational<BigInt>(BigInt(t) * 3 + 1, BigInt(3)),
                                Rational<BigInt>(BigInt(-t)), Rational<BigInt>(BigInt(r)));
     EXPECT_NE(far.served, IntKind::int64);
-    ASSERT_EQ(near0.vertices.size(), far.vertices.size());
-    for (std::size_t i = 0; i < far.vertices.size(); ++i) {
-      EXPECT_EQ(far.vertices[i].x, near0.vertices[i].x + t);
-      EXPECT_EQ(far.vertices[i].y, near0.vertices[i].y - t);
+    ASSERT_EQ(near0.value.vertices.size(), far.value.vertices.size());
+    for (std::size_t i = 0; i < far.value.vertices.size(); ++i) {
+      EXPECT_EQ(far.value.vertices[i].x, near0.value.vertices[i].x + t);
+      EXPECT_EQ(far.value.vertices[i].y, near0.value.vertices[i].y - t);
     }
   }
   // A radius with a denominator near 2^40: the cleared squares leave int64.
@@ -256,7 +256,7 @@ TEST(ConvexBodyHullEscalation, HugeCentreIsATranslate) {
                              Rational<BigInt>(BigInt(5) * den + 1, den));
   auto five = disc_hull_exact(Rational<BigInt>(0), Rational<BigInt>(0), Rational<BigInt>(5));
   EXPECT_NE(odd.served, IntKind::int64);
-  EXPECT_EQ(odd.vertices, five.vertices); // no lattice point in 5 < |p| <= 5 + 2^-40
+  EXPECT_EQ(odd.value.vertices, five.value.vertices); // no lattice point in 5 < |p| <= 5 + 2^-40
 }
 
 TEST(ConvexBodyHullErrors, RejectsBadData) {

@@ -23,7 +23,7 @@ TEST(DigitizedShapeHull, DiscDigitizationMatchesTheDiscHull) {
       std::int64_t u = q * x - cx, v = q * y - cy;
       return u * u + v * v <= r * r;
     };
-    auto h = digitized_shape_hull_2d(Box2{{-80, -80}, {80, 80}}, inside);
+    auto h = digitized_shape_hull_2d_exact(Box2{{-80, -80}, {80, 80}}, inside).value;
     auto want =
         disc_hull<Int64>(Rational<Int64>(Int64(cx), Int64(q)), Rational<Int64>(Int64(cy), Int64(q)),
                          Rational<Int64>(Int64(r), Int64(q)));
@@ -42,11 +42,11 @@ TEST(DigitizedShapeHull, AnnulusHasTheHullOfItsPoints) {
       if (inside(x, y)) all.push_back({x, y});
     }
   }
-  EXPECT_EQ(digitized_shape_hull_2d(Box2{{-12, -12}, {12, 12}}, inside),
+  EXPECT_EQ(digitized_shape_hull_2d_exact(Box2{{-12, -12}, {12, 12}}, inside).value,
             lattice_hull_2d<Int64>(std::span<const Point2<Int64>>(all)));
-  EXPECT_TRUE(digitized_shape_hull_2d(Box2{{0, 0}, {3, 3}}, [](std::int64_t, std::int64_t) {
+  EXPECT_TRUE(digitized_shape_hull_2d_exact(Box2{{0, 0}, {3, 3}}, [](std::int64_t, std::int64_t) {
                 return false;
-              }).empty());
+              }).value.empty());
 }
 
 TEST(DigitizedShapeHull, BallDigitizationMatchesTheHullOfAllItsPoints) {
@@ -62,12 +62,19 @@ TEST(DigitizedShapeHull, BallDigitizationMatchesTheHullOfAllItsPoints) {
         }
       }
     }
-    auto a = digitized_shape_hull_3d(Box3{{-8, -8, -8}, {8, 8, 8}}, inside);
+    auto e = digitized_shape_hull_3d_exact(Box3{{-8, -8, -8}, {8, 8, 8}}, inside);
+    const auto& a = e.value;
+    EXPECT_EQ(e.served, IntKind::int64);
     auto b = lattice_hull_3d<Int64>(std::span<const Point3<Int64>>(all));
-    EXPECT_EQ(a.vertices, b.vertices);
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    for (std::size_t i = 0; i < a.vertices.size(); ++i) {
+      EXPECT_EQ(a.vertices[i].x, to_bigint(b.vertices[i].x));
+      EXPECT_EQ(a.vertices[i].y, to_bigint(b.vertices[i].y));
+      EXPECT_EQ(a.vertices[i].z, to_bigint(b.vertices[i].z));
+    }
     EXPECT_EQ(a.facets, b.facets);
-    EXPECT_EQ(a.volume6, b.volume6);
-    EXPECT_EQ(lattice_points_in_hull_3d(a), static_cast<std::int64_t>(all.size()));
+    EXPECT_EQ(a.volume6, to_bigint(b.volume6));
+    EXPECT_EQ(lattice_points_in_hull_3d(a), BigInt(static_cast<std::int64_t>(all.size())));
   }
 }
 

@@ -104,10 +104,13 @@ TEST(LatticeHull2dEscalation, CoordinatesNear2To62) {
   std::vector<P> p = {{-M, -M}, {M, -M}, {M, M}, {-M, M}, {0, 0}, {M - 1, 0}, {-M, 5}};
   std::vector<P> want = {{-M, -M}, {M, -M}, {M, M}, {-M, M}};
   EXPECT_THROW(lattice_hull_2d_indices<Int64>(std::span<const P>(p)), OverflowError);
-  EXPECT_EQ(lattice_hull_2d<Int64>(std::span<const P>(p)), want);
+  EXPECT_THROW(lattice_hull_2d<Int64>(std::span<const P>(p)), OverflowError); // computes on I
+  auto e = lattice_hull_2d_exact<Int64>(std::span<const P>(p));
+  EXPECT_EQ(e.value, want);
+  EXPECT_EQ(e.served, IntKind::int128);
   // A nearly flat triangle whose orientation needs all 127 bits.
   std::vector<P> q = {{-M, -M + 1}, {M, M}, {M - 1, M - 1}, {0, 0}};
-  auto h = lattice_hull_2d<Int64>(std::span<const P>(q));
+  auto h = lattice_hull_2d_exact<Int64>(std::span<const P>(q)).value;
   std::vector<Point2<BigInt>> qb;
   for (auto& x : q) qb.push_back({to_bigint(x.x), to_bigint(x.y)});
   auto w = jarvis(qb);

@@ -178,6 +178,34 @@ TEST(LatticeHull3dExamples, DegenerateSets) {
   EXPECT_EQ(lattice_points_in_hull_3d(pl), 9);
 }
 
+// Regression: merging coplanar neighbours compared the two normals by a cross product (4b + 7
+// bits), which overflowed int64 for coordinates of 17 bits although every other predicate
+// fits (3b + 5 bits); hidden while lattice_hull_3d<Int64> escalated silently. Random points of
+// span 10^5 (and 2^19 - 1) on Int64 give the BigInt hull.
+TEST(LatticeHull3dRegression, Int64ServesCoordinatesBelow2To19) {
+  using P = Point3<Int64>;
+  std::uint64_t state = 12345;
+  auto next = [&](std::int64_t span) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<std::int64_t>((state >> 11) % static_cast<std::uint64_t>(2 * span + 1)) -
+           span;
+  };
+  for (std::int64_t span : {std::int64_t{100000}, (std::int64_t{1} << 19) - 1}) {
+    for (int round = 0; round < 20; ++round) {
+      std::vector<P> pts;
+      std::vector<Point3<BigInt>> big;
+      for (int i = 0; i < 60; ++i) {
+        pts.push_back({next(span), next(span), next(span)});
+        big.push_back({to_bigint(pts.back().x), to_bigint(pts.back().y), to_bigint(pts.back().z)});
+      }
+      auto a = lattice_hull_3d<Int64>(std::span<const P>(pts));
+      auto b = lattice_hull_3d<BigInt>(std::span<const Point3<BigInt>>(big));
+      EXPECT_EQ(a.facets, b.facets);
+      EXPECT_EQ(to_bigint(a.volume6), b.volume6);
+    }
+  }
+}
+
 TEST(LatticeHull3dEscalation, CoordinatesNear2To62AreATranslate) {
   using P = Point3<Int64>;
   const std::int64_t t = (std::int64_t{1} << 62) - 7;
@@ -188,12 +216,25 @@ TEST(LatticeHull3dEscalation, CoordinatesNear2To62AreATranslate) {
   auto a = lattice_hull_3d<Int64>(std::span<const P>(small));
   auto b = lattice_hull_3d_exact(std::span<const Point3<BigInt>>(far));
   EXPECT_NE(b.served, IntKind::int64);
-  EXPECT_EQ(to_bigint(a.volume6), b.hull.volume6);
-  ASSERT_EQ(a.vertices.size(), b.hull.vertices.size());
-  EXPECT_EQ(a.facets, b.hull.facets);
+  EXPECT_EQ(to_bigint(a.volume6), b.value.volume6);
+  ASSERT_EQ(a.vertices.size(), b.value.vertices.size());
+  EXPECT_EQ(a.facets, b.value.facets);
   for (std::size_t i = 0; i < a.vertices.size(); ++i) {
-    EXPECT_EQ(to_bigint(a.vertices[i].x) + t, b.hull.vertices[i].x);
+    EXPECT_EQ(to_bigint(a.vertices[i].x) + t, b.value.vertices[i].x);
   }
+  // The same points as Int64: lattice_hull_3d<Int64> overflows, the exact entry escalates.
+  std::vector<P> far64;
+  for (const auto& p : small) far64.push_back({p.x + t, p.y - t, p.z + t});
+  EXPECT_THROW(lattice_hull_3d<Int64>(std::span<const P>(far64)), OverflowError);
+  auto c = lattice_hull_3d_exact<Int64>(std::span<const P>(far64));
+  EXPECT_EQ(c.served, b.served);
+  EXPECT_EQ(c.value.volume6, b.value.volume6);
+  // Small BigInt points are served by Int64.
+  std::vector<Point3<BigInt>> small_big;
+  for (const auto& p : small) small_big.push_back({to_bigint(p.x), to_bigint(p.y), to_bigint(p.z)});
+  auto d = lattice_hull_3d_exact(std::span<const Point3<BigInt>>(small_big));
+  EXPECT_EQ(d.served, IntKind::int64);
+  EXPECT_EQ(d.value.volume6, to_bigint(a.volume6));
 }
 
 } // namespace

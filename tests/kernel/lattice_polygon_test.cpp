@@ -107,4 +107,25 @@ TEST(LatticePolygonExamples, KnownValues) {
   EXPECT_EQ(mf.boundary, 3);
 }
 
+// The exact entry point: a translate by 2^62 of the triangle above has the same measures;
+// Int64 overflows on the shoelace terms, the escalation says which type served.
+TEST(LatticePolygonExamples, ExactMeasuresEscalate) {
+  const BigInt t = BigInt(1) << 62;
+  std::vector<Point2<BigInt>> far = {{t, -t}, {t + 4, -t}, {t, -t + 3}};
+  std::vector<Point2<Int64>> far64 = {
+      {Int64(std::int64_t{1} << 62), Int64(-(std::int64_t{1} << 62))},
+      {Int64((std::int64_t{1} << 62) + 4), Int64(-(std::int64_t{1} << 62))},
+      {Int64(std::int64_t{1} << 62), Int64(-(std::int64_t{1} << 62) + 3)}};
+  EXPECT_THROW(lattice_polygon_measures<Int64>(std::span<const Point2<Int64>>(far64)),
+               OverflowError);
+  auto m = lattice_polygon_measures_exact(std::span<const Point2<BigInt>>(far));
+  EXPECT_NE(m.served, IntKind::int64);
+  EXPECT_EQ(m.value.area2, 12);
+  EXPECT_EQ(m.value.boundary, 8);
+  EXPECT_EQ(m.value.interior, 3);
+  std::vector<Point2<BigInt>> near = {{0, 0}, {4, 0}, {0, 3}};
+  EXPECT_EQ(lattice_polygon_measures_exact(std::span<const Point2<BigInt>>(near)).served,
+            IntKind::int64);
+}
+
 } // namespace

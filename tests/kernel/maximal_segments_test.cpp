@@ -85,9 +85,18 @@ TEST(MaximalSegments, OpenPathsAgreeWithBruteForce) {
   test::check_property([] {
     Connectivity c = *rc::gen::element(Connectivity::four, Connectivity::eight);
     Curve p = random_open_path(c, *rc::gen::inRange(1, 40));
-    auto got = maximal_segments(p, false, c);
+    auto got = maximal_segments<Int64>(p, false, c);
     auto want = brute_force_cover(p, false, c);
     RC_ASSERT(got == want);
+    // Every tower type computes the same cover; the exact entry point is served by Int64.
+    RC_ASSERT(maximal_segments<Int128>(p, false, c) == want);
+    RC_ASSERT(maximal_segments<BigInt>(p, false, c) == want);
+    auto e = maximal_segments_exact(p, false, c);
+    RC_ASSERT(e.value == want);
+    RC_ASSERT(e.served == IntKind::int64);
+    RC_ASSERT(greedy_segmentation<BigInt>(p, false, c) == greedy_segmentation<Int64>(p, false, c));
+    RC_ASSERT(greedy_segmentation_exact(p, false, c).value ==
+              greedy_segmentation<Int64>(p, false, c));
   });
 }
 
@@ -97,7 +106,7 @@ TEST(MaximalSegments, ClosedDiscContoursAgreeWithBruteForce) {
     std::int64_t r2 = *rc::gen::inRange<std::int64_t>(1, 200);
     Curve c = test::disc_contour(*rc::gen::inRange(-5, 6), *rc::gen::inRange(-5, 6), r2);
     c = rotate(c, static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, c.size())));
-    auto got = maximal_segments(c, true);
+    auto got = maximal_segments<Int64>(c, true);
     auto want = brute_force_cover(c, true, Connectivity::four);
     sort_by_begin(got);
     RC_ASSERT(got == want);
@@ -123,7 +132,7 @@ TEST(MaximalSegments, Closed8ConnectedCurvesAgreeWithBruteForce) {
       c.push_back(c4[k]);
     }
     c = rotate(c, static_cast<std::size_t>(*rc::gen::inRange<std::size_t>(0, c.size())));
-    auto got = maximal_segments(c, true, Connectivity::eight);
+    auto got = maximal_segments<Int64>(c, true, Connectivity::eight);
     auto want = brute_force_cover(c, true, Connectivity::eight);
     sort_by_begin(got);
     RC_ASSERT(got == want);
@@ -138,7 +147,7 @@ TEST(MaximalSegments, CoverStructureOnConvexContours) {
   test::check_property([] {
     std::int64_t r2 = *rc::gen::inRange<std::int64_t>(2, 5000);
     Curve c = test::disc_contour(0, 0, r2);
-    auto segs = maximal_segments(c, true);
+    auto segs = maximal_segments<Int64>(c, true);
     const std::size_t n = c.size(), m = segs.size();
     RC_ASSERT(m >= 4u);
     std::vector<int> covered(n, 0);
@@ -167,7 +176,7 @@ TEST(MaximalSegments, GreedySegmentationIsAChainOfLongestDss) {
         closed ? test::disc_contour(0, 0, *rc::gen::inRange<std::int64_t>(1, 300))
                : random_open_path(conn = *rc::gen::element(Connectivity::four, Connectivity::eight),
                                   *rc::gen::inRange(1, 40));
-    auto segs = greedy_segmentation(c, closed, conn);
+    auto segs = greedy_segmentation<Int64>(c, closed, conn);
     const std::int64_t n = static_cast<std::int64_t>(c.size());
     std::int64_t i = 0;
     for (const auto& s : segs) {
@@ -194,7 +203,7 @@ TEST(MaximalSegments, TranslationByHugeOffsets) {
       p.x += tx;
       p.y += ty;
     }
-    auto s0 = maximal_segments(c, true), s1 = maximal_segments(t, true);
+    auto s0 = maximal_segments<Int64>(c, true), s1 = maximal_segments<Int64>(t, true);
     RC_ASSERT(s0.size() == s1.size());
     for (std::size_t k = 0; k < s0.size(); ++k) {
       auto e = s0[k];
@@ -209,23 +218,24 @@ TEST(MaximalSegments, WorkedExamples) {
   // the balanced factors 233, 330, 3000, 0001, 011, 112, 1222, 2223; the first one goes
   // through p_0 (found by extending backwards first).
   Curve rect{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
-  auto segs = maximal_segments(rect, true);
+  auto segs = maximal_segments<Int64>(rect, true);
   std::vector<std::pair<std::size_t, std::size_t>> got,
       want{{7, 4}, {8, 4}, {9, 5}, {0, 5}, {2, 4}, {3, 4}, {4, 5}, {5, 5}};
   for (const auto& s : segs) got.emplace_back(s.begin, s.length);
   EXPECT_EQ(got, want);
   EXPECT_EQ(segs[0], (MaximalSegment{7, 0, 4, -2, -1, 0, 3}));
-  auto one = maximal_segments(Curve{{4, 7}}, false);
+  auto one = maximal_segments<Int64>(Curve{{4, 7}}, false);
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0], (MaximalSegment{0, 0, 1, 0, 1, -7, 1}));
-  EXPECT_TRUE(maximal_segments(Curve{}, true).empty());
+  EXPECT_TRUE(maximal_segments<Int64>(Curve{}, true).empty());
 }
 
 TEST(MaximalSegments, RejectsCurvesThatAreNotPaths) {
-  EXPECT_THROW(maximal_segments(Curve{{0, 0}, {2, 0}}, false), InvalidArgument);
-  EXPECT_THROW(maximal_segments(Curve{{0, 0}, {1, 0}, {2, 0}}, true), InvalidArgument);
-  EXPECT_THROW(maximal_segments(Curve{{0, 0}, {1, 1}}, false, Connectivity::four), InvalidArgument);
-  EXPECT_THROW(greedy_segmentation(Curve{{0, 0}, {0, 0}}, false), InvalidArgument);
+  EXPECT_THROW(maximal_segments<Int64>(Curve{{0, 0}, {2, 0}}, false), InvalidArgument);
+  EXPECT_THROW(maximal_segments<Int64>(Curve{{0, 0}, {1, 0}, {2, 0}}, true), InvalidArgument);
+  EXPECT_THROW(maximal_segments<Int64>(Curve{{0, 0}, {1, 1}}, false, Connectivity::four),
+               InvalidArgument);
+  EXPECT_THROW(greedy_segmentation<Int64>(Curve{{0, 0}, {0, 0}}, false), InvalidArgument);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -28,6 +29,12 @@ inline ExperimentResult sweep(std::vector<std::string> shapes, std::vector<std::
   c.threads = 2;
   if (k != nullptr) c.k_text = k;
   return run_experiment(c);
+}
+
+/// The proven rate of the registry estimator `est` on `shape` with exponent alpha (k = 1).
+inline std::optional<ProvenRate> theory_rate(const std::string& est, const Shape& shape,
+                                             double alpha) {
+  return find_estimator(est).proven_rate(shape, EstimatorParameters{1.0, alpha});
 }
 
 /// The l_inf fit of `est` (on `shape` when given).

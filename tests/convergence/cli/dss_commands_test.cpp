@@ -93,7 +93,7 @@ TEST(DssCli, CoverMatchesTheLibrary) {
   auto r = run_zdg("dss cover " + write(dir, "disc.txt", pts) + " --closed --json");
   ASSERT_EQ(r.status, 0) << r.err;
   auto j = json::parse(r.out);
-  auto segs = zdg::maximal_segments(c, true);
+  auto segs = zdg::maximal_segments_exact(c, true).value;
   ASSERT_EQ(j["segments"].size(), segs.size());
   EXPECT_EQ(j["closed"], true);
   EXPECT_EQ(j["connectivity"], 4);

@@ -7,12 +7,18 @@
 // explicit (`3*x^2`) or implicit between a number and a variable / parenthesis (`3x^2`,
 // `2(x+y)`). Unary minus is allowed. Errors name the offending position.
 //
-// Evaluation: exact sign at a rational point (Rational<BigInt>: used as the fallback of
-// the floating-point filter of the digitization), double value, gradient and Hessian.
-// The filter: value v computed in double and a bound M = sum |c_m| X^m with X >= |x| + the
-// rounding of x; |v| > gamma M, gamma = 8 (deg + #terms + 2) 2^-53 certifies the sign
-// (classical forward error bound of a sum of products, Higham, Accuracy and Stability,
-// ch. 3), otherwise the sign is decided exactly.
+// Limits (small text must not mean unbounded work): parentheses and unary signs nest at most
+// kPolynomialMaxNesting = 200 deep; every intermediate result of the expansion has total
+// degree at most kPolynomialMaxDegree = 64, checked before a product or a power is expanded
+// (`(x+y)^40*(x-y)^40` is refused before the second power is expanded); the whole expansion
+// performs at most kPolynomialMaxWork = 2^14 products and sums of terms (about 20 ms; enough
+// for (x+y+1)^20 or (x+y+z+1)^14, refusing (x+y+1)^64*(x+y+1)^64*... within that time); a
+// coefficient must be finite as a double. Beyond a limit: InvalidArgument saying which.
+//
+// Evaluation: exact value and sign at a rational point (Rational<BigInt>), double value,
+// gradient and Hessian. The exact sign with a floating-point filter, which the digitizations
+// use, is kernel/polynomial_sign.hpp. Parsing costs O(work) (bounded as above); evaluation
+// O(#terms deg).
 #pragma once
 
 #include <zdg/arith/integer.hpp>
@@ -26,6 +32,10 @@
 namespace zdg {
 
 using BigRational = Rational<BigInt>;
+
+inline constexpr int kPolynomialMaxNesting = 200;
+inline constexpr int kPolynomialMaxDegree = 64;
+inline constexpr long kPolynomialMaxWork = 1L << 14;
 
 struct Monomial {
   std::array<int, 3> exponent{}; // powers of x, y, z
@@ -49,8 +59,6 @@ public:
 
   /// F(p) in double (p has nvars entries).
   double value(const double* p) const;
-  /// F(p) and the filter bound gamma * sum |c| X^e, where X[i] >= |p[i]| + error of p[i].
-  double value_with_bound(const double* p, const double* magnitude, double& bound) const;
   /// Gradient (nvars entries) and Hessian (nvars x nvars, row-major) in double.
   void gradient(const double* p, double* g) const;
   void hessian(const double* p, double* hess) const;

@@ -1,10 +1,11 @@
-#include <zdg/convergence/polynomial.hpp>
+#include <zdg/kernel/polynomial.hpp>
+
+#include <zdg/arith/error.hpp>
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace zdg {
@@ -12,7 +13,13 @@ namespace zdg {
 namespace {
 
 constexpr std::array<char, 3> kVariableNames{'x', 'y', 'z'};
-constexpr int kMaxDegree = 64;
+
+// The text as quoted in messages: at most 60 characters.
+std::string quoted(std::string_view text) {
+  if (text.size() <= 60) return "'" + std::string(text) + "'";
+  return "'" + std::string(text.substr(0, 57)) + "...' (" + std::to_string(text.size()) +
+         " characters)";
+}
 
 class Parser {
 public:
@@ -24,6 +31,12 @@ public:
     Polynomial p = expression();
     skip();
     if (pos_ < text_.size()) fail_here("unexpected");
+    for (const auto& m : p.terms()) {
+      if (!std::isfinite(m.coefficient_double)) {
+        fail("coefficient " + m.coefficient.str().substr(0, 30) +
+             "... of the expansion beyond the range of double");
+      }
+    }
     return p;
   }
 
@@ -31,14 +44,17 @@ private:
   std::string_view text_;
   int nvars_;
   std::size_t pos_ = 0;
+  int depth_ = 0; // nesting of parentheses and unary signs
+  int outer_ = 0; // degree of the factors that will multiply the factor being parsed
+  long work_ = 0; // products and sums of terms performed so far
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw InvalidArgument("poly: " + what + " in '" + std::string(text_) + "'");
+    throw InvalidArgument("poly: " + what + " in " + quoted(text_));
   }
   [[noreturn]] void fail_here(const std::string& what) const {
     std::string found = pos_ < text_.size() ? "'" + std::string(1, text_[pos_]) + "'" : "end";
     throw InvalidArgument("poly: " + what + " " + found + " at position " +
-                          std::to_string(pos_ + 1) + " of '" + std::string(text_) + "'");
+                          std::to_string(pos_ + 1) + " of " + quoted(text_));
   }
   void skip() {
     while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) ++pos_;
@@ -46,6 +62,33 @@ private:
   bool peek(char c) {
     skip();
     return pos_ < text_.size() && text_[pos_] == c;
+  }
+  void enter() {
+    if (++depth_ > kPolynomialMaxNesting) {
+      fail_here("nesting deeper than " + std::to_string(kPolynomialMaxNesting) + " levels at");
+    }
+  }
+  void charge(std::size_t cost) {
+    work_ += static_cast<long>(std::min<std::size_t>(cost, std::size_t{1} << 40));
+    if (work_ > kPolynomialMaxWork) {
+      fail("expansion too large (more than " + std::to_string(kPolynomialMaxWork) +
+           " products and sums of terms)");
+    }
+  }
+  void check_degree(int degree) const {
+    if (degree > kPolynomialMaxDegree) {
+      fail("total degree " + std::to_string(degree) + " larger than " +
+           std::to_string(kPolynomialMaxDegree));
+    }
+  }
+  Polynomial sum(const Polynomial& a, const Polynomial& b, int sign) {
+    charge(a.terms().size() + b.terms().size());
+    return sign > 0 ? a + b : a - b;
+  }
+  Polynomial product(const Polynomial& a, const Polynomial& b) {
+    check_degree(outer_ + a.degree() + b.degree());
+    charge(a.terms().size() * b.terms().size());
+    return a * b;
   }
 
   Polynomial expression() {
@@ -61,7 +104,7 @@ private:
         return acc;
       }
       Polynomial t = term();
-      acc = sign > 0 ? acc + t : acc - t;
+      acc = first && sign > 0 ? std::move(t) : sum(acc, t, sign);
       first = false;
       skip();
       if (!(peek('+') || peek('-'))) return acc;
@@ -76,16 +119,27 @@ private:
            c == 'y' || c == 'z';
   }
 
+  // The next factor of a product whose factors so far are acc: parsed knowing that it will be
+  // multiplied by acc (and by the factors outside), so that a degree beyond the cap is refused
+  // before it is expanded.
+  Polynomial next_factor(const Polynomial& acc) {
+    const int saved = outer_;
+    outer_ += acc.degree();
+    Polynomial f = power();
+    outer_ = saved;
+    return f;
+  }
+
   Polynomial term() {
     Polynomial acc = power();
     for (;;) {
       if (peek('*')) {
         ++pos_;
-        acc = acc * power();
+        acc = product(acc, next_factor(acc));
       } else if (peek('/')) {
         fail_here("division by a non-number");
       } else if (starts_factor()) {
-        acc = acc * power(); // implicit multiplication: 3x, 2(x+y), x y
+        acc = product(acc, next_factor(acc)); // implicit multiplication: 3x, 2(x+y), x y
       } else {
         return acc;
       }
@@ -101,13 +155,16 @@ private:
       while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) ++pos_;
       if (pos_ == start) fail_here("expected a non-negative integer exponent, found");
       std::string digits(text_.substr(start, pos_ - start));
-      if (digits.size() > 3 || std::stoi(digits) > kMaxDegree) {
+      if (digits.size() > 3 || std::stoi(digits) > kPolynomialMaxDegree) {
         pos_ = start;
-        fail_here("exponent larger than " + std::to_string(kMaxDegree) + " starting with");
+        fail_here("exponent larger than " + std::to_string(kPolynomialMaxDegree) +
+                  " starting with");
       }
-      int k = std::stoi(digits);
-      if (base.degree() * k > kMaxDegree) fail("degree larger than " + std::to_string(kMaxDegree));
-      return base.pow(k);
+      const int k = std::stoi(digits);
+      check_degree(outer_ + base.degree() * k);
+      Polynomial r = Polynomial::constant(BigRational(1), nvars_);
+      for (int i = 0; i < k; ++i) r = product(r, base);
+      return r;
     }
     return base;
   }
@@ -117,16 +174,22 @@ private:
     if (pos_ >= text_.size()) fail_here("expected a number, a variable or '(', found");
     char c = text_[pos_];
     if (c == '(') {
+      enter();
       ++pos_;
       Polynomial p = expression();
       if (!peek(')')) fail_here("expected ')', found");
       ++pos_;
+      --depth_;
       return p;
     }
     if (c == '-' || c == '+') {
+      enter();
       ++pos_;
       Polynomial p = power();
-      return c == '-' ? Polynomial::constant(BigRational(0), nvars_) - p : p;
+      --depth_;
+      if (c == '+') return p;
+      charge(p.terms().size());
+      return Polynomial::constant(BigRational(0), nvars_) - p;
     }
     for (int v = 0; v < 3; ++v) {
       if (c == kVariableNames[static_cast<std::size_t>(v)]) {
@@ -175,6 +238,10 @@ private:
         fail_here("zero denominator after");
       }
       value = value / BigRational(den);
+    }
+    if (!std::isfinite(value.to_double())) {
+      pos_ = start;
+      fail_here("number beyond the range of double starting with");
     }
     return Polynomial::constant(value, nvars_);
   }
@@ -227,15 +294,28 @@ Polynomial Polynomial::variable(int index, int nvars) {
   return p;
 }
 
+// Sorts the terms by exponent and merges equal exponents in place (moves, no copies of the
+// coefficients): O(n log n) for n terms.
 void Polynomial::normalize() {
-  std::map<std::array<int, 3>, BigRational> acc;
-  for (const auto& m : terms_) acc[m.exponent] += m.coefficient;
-  terms_.clear();
+  std::sort(terms_.begin(), terms_.end(),
+            [](const Monomial& a, const Monomial& b) { return a.exponent < b.exponent; });
+  std::size_t out = 0;
+  for (std::size_t i = 0; i < terms_.size();) {
+    std::size_t j = i + 1;
+    for (; j < terms_.size() && terms_[j].exponent == terms_[i].exponent; ++j) {
+      terms_[i].coefficient += terms_[j].coefficient;
+    }
+    if (!(terms_[i].coefficient == BigRational(0))) {
+      if (out != i) terms_[out] = std::move(terms_[i]);
+      ++out;
+    }
+    i = j;
+  }
+  terms_.resize(out);
   degree_ = 0;
-  for (const auto& [e, c] : acc) {
-    if (c == BigRational(0)) continue;
-    terms_.push_back(Monomial{e, c, c.to_double()});
-    degree_ = std::max(degree_, e[0] + e[1] + e[2]);
+  for (auto& m : terms_) {
+    m.coefficient_double = m.coefficient.to_double();
+    degree_ = std::max(degree_, m.degree());
   }
 }
 
@@ -257,12 +337,12 @@ Polynomial operator-(const Polynomial& a, const Polynomial& b) {
 Polynomial operator*(const Polynomial& a, const Polynomial& b) {
   Polynomial r;
   r.nvars_ = std::max(a.nvars_, b.nvars_);
+  r.terms_.reserve(a.terms_.size() * b.terms_.size());
   for (const auto& ma : a.terms_) {
     for (const auto& mb : b.terms_) {
-      Monomial m;
+      Monomial& m = r.terms_.emplace_back();
       for (std::size_t i = 0; i < 3; ++i) m.exponent[i] = ma.exponent[i] + mb.exponent[i];
       m.coefficient = ma.coefficient * mb.coefficient;
-      r.terms_.push_back(m);
     }
   }
   r.normalize();
@@ -305,24 +385,6 @@ double Polynomial::value(const double* p) const {
     for (int i = 0; i < nvars_; ++i) t *= pow_int(p[i], m.exponent[static_cast<std::size_t>(i)]);
     v += t;
   }
-  return v;
-}
-
-double Polynomial::value_with_bound(const double* p, const double* magnitude, double& bound) const {
-  double v = 0.0, mag = 0.0;
-  for (const auto& m : terms_) {
-    double t = m.coefficient_double, a = std::abs(m.coefficient_double);
-    for (int i = 0; i < nvars_; ++i) {
-      int e = m.exponent[static_cast<std::size_t>(i)];
-      t *= pow_int(p[i], e);
-      a *= pow_int(magnitude[i], e);
-    }
-    v += t;
-    mag += a;
-  }
-  const double gamma = 8.0 * (degree_ + static_cast<double>(terms_.size()) + 2.0) *
-                       std::numeric_limits<double>::epsilon();
-  bound = gamma * mag + std::numeric_limits<double>::denorm_min();
   return v;
 }
 

@@ -1,9 +1,10 @@
-#include <zdg/convergence/polynomial.hpp>
+#include <zdg/kernel/polynomial.hpp>
 
 #include "tests/support/tower.hpp"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -73,18 +74,45 @@ TEST(Polynomial, ExactSignOnTheZeroSet) {
   EXPECT_EQ(p.sign_exact(pt), 1);
 }
 
-TEST(Polynomial, FilterBoundCertifiesTheDoubleSign) {
-  // Theorem (forward error bound): |v| > bound implies sign(v) = exact sign.
-  auto p = Polynomial::parse("x^4 - 3/7 x^2 y + 5y^3 - 2/3", 2);
-  zdg::test::check_property([&](int a, int b, int c) {
-    double x = (a % 2001) / 1000.0, y = (b % 2001) / 997.0 + (c % 3) * 1e-9;
-    double q[2] = {x, y}, m[2] = {2 * std::abs(x), 2 * std::abs(y)}, bound = 0;
-    double v = p.value_with_bound(q, m, bound);
-    BigRational e[2] = {zdg::exact_rational(x), zdg::exact_rational(y)};
-    int s = p.sign_exact(e);
-    if (v > bound) RC_ASSERT(s == 1);
-    if (v < -bound) RC_ASSERT(s == -1);
-  });
+// Bounded work from small text (issue #18): nesting depth, total degree after expansion
+// (checked before a product is expanded), work of the expansion, coefficient range.
+TEST(Polynomial, LimitsRefuseUnboundedInputQuickly) {
+  auto message = [](const std::string& text, int nvars = 2) {
+    try {
+      Polynomial::parse(text, nvars);
+    } catch (const zdg::InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string deep = std::string(5000, '(') + "x" + std::string(5000, ')');
+  EXPECT_NE(message(deep).find("nesting deeper than 200"), std::string::npos) << message(deep);
+  EXPECT_LT(message(deep).size(), 200u); // one short line, not the 10,000 characters
+  EXPECT_NE(message(std::string(5000, '-') + "x").find("nesting"), std::string::npos);
+  const std::string ok_depth = std::string(200, '(') + "x" + std::string(200, ')');
+  EXPECT_EQ(message(ok_depth), "no error");
+  // Degree 64 is allowed; a product of powers past it is refused before the second factor is
+  // expanded.
+  EXPECT_EQ(message("(x+y+1)^16*(x-y)^16"), "no error");
+  EXPECT_EQ(message("x^64 + y^64 - 1"), "no error");
+  EXPECT_NE(message("(x+y)^40*(x-y)^40").find("total degree 80 larger than 64"), std::string::npos);
+  EXPECT_NE(message("x^30*((x+y)^20*(x+y+1)^20)").find("total degree 70"), std::string::npos);
+  // The reproducer of issue #18: refused at once (by the work bound: (x+y+1)^64 alone has 2145
+  // terms), not after minutes.
+  std::string product = "(x+y+1)^64";
+  for (int i = 0; i < 40; ++i) product += "*(x+y+1)^64";
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_NE(message(product).find("poly: "), std::string::npos);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 2.0);
+  EXPECT_NE(message("(x^2+y)^33").find("total degree 66"), std::string::npos);
+  // Many large expansions: the work budget.
+  std::string sum = "(x+y+z+1)^40";
+  for (int i = 2; i < 40; ++i) sum += "+(x+y+z+" + std::to_string(i) + ")^40";
+  EXPECT_NE(message(sum, 3).find("expansion too large"), std::string::npos) << message(sum, 3);
+  // A coefficient beyond the range of double.
+  EXPECT_NE(message("1" + std::string(400, '0') + "x").find("beyond the range of double"),
+            std::string::npos);
+  EXPECT_NE(message("(100000000000x+1)^64").find("beyond the range of double"), std::string::npos);
 }
 
 TEST(Polynomial, GradientAndHessianMatchClosedForms) {

@@ -1,0 +1,121 @@
+#include <zdg/kernel/polynomial_sign.hpp>
+
+#include <zdg/arith/error.hpp>
+
+#include <algorithm>
+#include <limits>
+
+namespace zdg {
+
+namespace {
+
+// |c~| as the magnitude of a coefficient in the bound, at least the smallest normal double: a
+// coefficient that rounds to a subnormal (or to 0) has an absolute error below 2^-1075, which
+// is u times that (the relative error analysis then holds).
+double magnitude_of(double c) {
+  return std::max(std::abs(c), std::numeric_limits<double>::min());
+}
+
+double pow_int(double b, int e) {
+  double r = 1.0;
+  for (int i = 0; i < e; ++i) r *= b;
+  return r;
+}
+
+} // namespace
+
+PolynomialSign::PolynomialSign(Polynomial f) : f_(std::move(f)) {
+  quadric_ = f_.nvars() == 2 && f_.degree() <= 2;
+  if (quadric_) {
+    for (const auto& m : f_.terms()) {
+      const int ex = m.exponent[0], ey = m.exponent[1];
+      const std::size_t idx = ex == 2              ? 0
+                              : ex == 1 && ey == 1 ? 1
+                              : ey == 2            ? 2
+                              : ex == 1            ? 3
+                              : ey == 1            ? 4
+                                                   : 5;
+      q_[idx] = m.coefficient_double;
+      aq_[idx] = magnitude_of(m.coefficient_double);
+    }
+  }
+  for (const auto& m : f_.terms()) abs_.push_back(magnitude_of(m.coefficient_double));
+  const double terms = static_cast<double>(f_.terms().size());
+  gamma_ = 8.0 * (f_.degree() + terms + 2.0) * std::numeric_limits<double>::epsilon();
+  ops_ = terms * (f_.degree() + 2.0);
+}
+
+double PolynomialSign::value(const double* p) const {
+  if (quadric_) {
+    const double x = p[0], y = p[1];
+    return ((q_[0] * x + q_[1] * y + q_[3]) * x + (q_[2] * y + q_[4]) * y) + q_[5];
+  }
+  return f_.value(p);
+}
+
+// #ops * 2^-1074 * max(1, X)^deg: each rounding of a product chain loses at most half the
+// smallest subnormal, later multiplied by factors of magnitude <= X.
+double PolynomialSign::underflow_slack(const double* magnitude) const {
+  double x = 1.0;
+  for (int i = 0; i < f_.nvars(); ++i) x = std::max(x, magnitude[i]);
+  return ops_ * std::numeric_limits<double>::denorm_min() * pow_int(x, f_.degree());
+}
+
+double PolynomialSign::error_bound(const double* magnitude) const {
+  double mag = 0.0;
+  if (quadric_) {
+    const double mx = magnitude[0], my = magnitude[1];
+    mag = ((aq_[0] * mx + aq_[1] * my + aq_[3]) * mx + (aq_[2] * my + aq_[4]) * my) + aq_[5];
+  } else {
+    for (std::size_t k = 0; k < abs_.size(); ++k) {
+      const auto& m = f_.terms()[k];
+      double a = abs_[k];
+      for (int i = 0; i < f_.nvars(); ++i) {
+        a *= pow_int(magnitude[i], m.exponent[static_cast<std::size_t>(i)]);
+      }
+      mag += a;
+    }
+  }
+  return gamma_ * mag + underflow_slack(magnitude);
+}
+
+double PolynomialSign::value_and_bound(const double* p, const double* magnitude,
+                                       double& bound) const {
+  if (quadric_) {
+    bound = error_bound(magnitude);
+    return value(p);
+  }
+  double v = 0.0, mag = 0.0;
+  for (std::size_t k = 0; k < abs_.size(); ++k) {
+    const auto& m = f_.terms()[k];
+    double t = m.coefficient_double, a = abs_[k];
+    for (int i = 0; i < f_.nvars(); ++i) {
+      const int e = m.exponent[static_cast<std::size_t>(i)];
+      t *= pow_int(p[i], e);
+      a *= pow_int(magnitude[i], e);
+    }
+    v += t;
+    mag += a;
+  }
+  bound = gamma_ * mag + underflow_slack(magnitude);
+  return v;
+}
+
+GridFrame::GridFrame(double h, std::span<const double> t)
+    : d_(static_cast<int>(t.size())), h_(h), hx_(exact_rational(h)) {
+  if (d_ < 1 || d_ > 3) throw InvalidArgument("grid frame: dimension must be 1, 2 or 3");
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    t_[i] = t[i];
+    tx_[i] = exact_rational(t[i]);
+  }
+}
+
+std::array<BigRational, 3> GridFrame::exact(const std::int64_t* z) const {
+  std::array<BigRational, 3> q;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(d_); ++i) {
+    q[i] = hx_ * BigRational(BigInt(z[i])) - tx_[i];
+  }
+  return q;
+}
+
+} // namespace zdg
