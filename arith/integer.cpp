@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 namespace zdg {
 
@@ -72,17 +73,23 @@ std::string quoted_excerpt(std::string_view text) {
          (text.size() > kShown ? "...' (" + std::to_string(text.size()) + " characters)" : "'");
 }
 
-DecimalText decimal_text(std::string_view text) {
-  DecimalText d;
+// The digits after an optional sign, when the text is [+-]digits.
+std::optional<std::string_view> decimal_digits(std::string_view text) {
   std::string_view rest = text;
-  if (!rest.empty() && (rest.front() == '+' || rest.front() == '-')) {
-    d.negative = rest.front() == '-';
-    rest.remove_prefix(1);
-  }
+  if (!rest.empty() && (rest.front() == '+' || rest.front() == '-')) rest.remove_prefix(1);
   if (rest.empty() ||
       !std::all_of(rest.begin(), rest.end(), [](char c) { return c >= '0' && c <= '9'; })) {
-    throw InvalidArgument("not a decimal integer: " + quoted_excerpt(text));
+    return std::nullopt;
   }
+  return rest;
+}
+
+DecimalText decimal_text(std::string_view text) {
+  DecimalText d;
+  const auto digits = decimal_digits(text);
+  if (!digits) throw InvalidArgument("not a decimal integer: " + quoted_excerpt(text));
+  d.negative = text.front() == '-';
+  std::string_view rest = *digits;
   while (!rest.empty() && rest.front() == '0') rest.remove_prefix(1);
   d.digits = rest;
   if (rest.empty()) d.negative = false; // -0 is 0
@@ -99,8 +106,12 @@ Checked<T> accumulate(const DecimalText& d) {
 
 } // namespace
 
-template <class T>
-requires TowerInt<T> ||(MachineInt<T> && sizeof(T) <= 8) T parse_integer(std::string_view text) {
+bool is_decimal_integer(std::string_view text) {
+  return decimal_digits(text).has_value();
+}
+
+template <ParsableInt T>
+T parse_integer(std::string_view text) {
   const DecimalText d = decimal_text(text);
   if constexpr (std::same_as<T, BigInt>) {
     BigInt r;

@@ -266,6 +266,12 @@ To int_cast(const From& v) {
   }
 }
 
+/// The types parse_integer reads: the tower, and the machine integers of at most 64 bits.
+template <class T>
+concept SmallMachineInt = MachineInt<T> && sizeof(T) <= 8;
+template <class T>
+concept ParsableInt = TowerInt<T> || SmallMachineInt<T>;
+
 /// The one parser of integer text in zdg (command-line arguments, point and half-plane files,
 /// Freeman chains, image headers, configuration values; rationals are built on it).
 ///
@@ -277,8 +283,13 @@ To int_cast(const From& v) {
 /// any length, through GMP's subquadratic base-10 conversion) or a machine integer of
 /// at most 64 bits (int, unsigned, std::int64_t, std::uint64_t, ...; "-0" is 0 for unsigned
 /// types). Every type gives the same value whenever it fits.
-template <class T>
-requires TowerInt<T> ||(MachineInt<T> && sizeof(T) <= 8) T parse_integer(std::string_view text);
+template <ParsableInt T>
+T parse_integer(std::string_view text);
+
+/// True when parse_integer accepts the text for some type (an optional sign, then digits):
+/// the syntax alone, so that a composite text (a fraction "P/Q") is rejected for its syntax
+/// before any part is converted, whatever the type.
+bool is_decimal_integer(std::string_view text);
 
 // --- division, modulo, gcd (every sign) ----------------------------------------------------
 

@@ -17,6 +17,9 @@ Rational<I> parse_rational(std::string_view text) {
   };
   if (auto slash = text.find('/'); slash != std::string_view::npos) {
     std::string_view ps = text.substr(0, slash), qs = text.substr(slash + 1);
+    // Syntax first: a malformed part is InvalidArgument for every type, even when the other
+    // part would not fit the type.
+    if (!is_decimal_integer(ps) || !is_decimal_integer(qs)) throw bad();
     I p, q;
     try {
       p = parse_integer<I>(ps);

@@ -375,7 +375,9 @@ void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
     auto* sub = tr->add_subcommand(s.name, s.help);
     sub->add_option("IN", args->input, "input image (.npy, .pgm, .vol)")->required();
     sub->add_option("-o,--output", args->output, "output file (written atomically)")->required();
-    sub->add_option("--metric", args->metric, "l1, l2, linf or lP (P >= 1)")->capture_default_str();
+    sub->add_option("--metric", args->metric,
+                    "l1, l2, linf or lP (1 <= P <= 1000 and L^P < 2^4096, L the longest line)")
+        ->capture_default_str();
     sub->add_option("--torus", args->torus, "periodic axes: comma list (0,2) or 'all'");
     sub->add_option("--lower", args->lower, "lower bounds of the domain, comma list (default 0)");
     sub->add_option("--threads", args->threads, "worker threads, 0..1024 (0 = all cores)")

@@ -83,6 +83,18 @@ TYPED_TEST(RationalTest, TextIsDecimalWhateverTheLeadingZeros) {
   });
 }
 
+// Found by the number fuzz target (tests/fuzz/regressions/number/): a numerator too large for
+// int64 with a malformed denominator was OverflowError on Int64 but InvalidArgument on BigInt;
+// the syntax is now decided first, the same for every type.
+TYPED_TEST(RationalTest, RegressionMalformedTextIsInvalidForEveryTypeEvenWhenAPartOverflows) {
+  using I = TypeParam;
+  EXPECT_THROW(parse_rational<I>("17014118346046923173713/6037158841\x9a"
+                                 "05720"),
+               InvalidArgument);
+  EXPECT_THROW(parse_rational<I>("1701411834604692317371317014118346046923173713/x"),
+               InvalidArgument);
+}
+
 // Issue #18: "010/3" was read as 8/3 (octal) by the BigInt parser.
 TYPED_TEST(RationalTest, RegressionLeadingZerosAreDecimal) {
   using I = TypeParam;
