@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <utility>
 
 namespace zdg {
@@ -146,6 +145,22 @@ LatticeWidth<I> lattice_width(std::span<const Point2<I>> v) {
 
 // --- incremental measures ----------------------------------------------------------------
 
+namespace {
+// Stein's binary gcd: shifts and subtractions, no division (the meter's hot path).
+std::uint64_t binary_gcd(std::uint64_t a, std::uint64_t b) {
+  if (a == 0) return b;
+  if (b == 0) return a;
+  const int shift = __builtin_ctzll(a | b);
+  a >>= __builtin_ctzll(a);
+  do {
+    b >>= __builtin_ctzll(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
+  } while (b != 0);
+  return a << shift;
+}
+} // namespace
+
 void LatticePolygonMeter::big_edge(const BigInt& ax, const BigInt& ay, const BigInt& bx,
                                    const BigInt& by, BigInt& area, BigInt& boundary) const {
   area += ax * by - bx * ay;
@@ -177,7 +192,7 @@ void LatticePolygonMeter::edge_to(std::int64_t x, std::int64_t y) {
   const int128_t dx = static_cast<int128_t>(x) - x_, dy = static_cast<int128_t>(y) - y_;
   std::uint64_t a = static_cast<std::uint64_t>(dx < 0 ? -dx : dx);
   std::uint64_t b = static_cast<std::uint64_t>(dy < 0 ? -dy : dy);
-  const std::uint64_t g = std::gcd(a, b);
+  const std::uint64_t g = binary_gcd(a, b);
   boundary_ += g;
   if (n_ == 1) first_edge_gcd_ = BigInt(g);
   x_ = x;

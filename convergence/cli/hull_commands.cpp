@@ -18,6 +18,7 @@
 #include <zdg/kernel/output_files.hpp>
 #include <zdg/kernel/point_file.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -43,10 +44,11 @@ struct HullOptions {
 };
 
 // Buffered output to stdout or to the staging file of -o: fast enough for millions of
-// vertices (std::to_chars into a 1 MiB buffer, fwrite).
+// vertices (std::to_chars straight into a 1 MiB buffer, one fwrite per MiB).
 class Writer {
 public:
-  explicit Writer(const HullOptions& o) : policy_(o.force ? Existing::replace : Existing::refuse) {
+  explicit Writer(const HullOptions& o)
+      : set_(o.force ? Existing::replace : Existing::refuse), buf_(new char[kBuffer + kSlack]) {
     if (o.output.empty()) {
       file_ = stdout;
       name_ = "stdout";
@@ -59,7 +61,6 @@ public:
       owned_ = true;
       name_ = o.output;
     }
-    buf_.reserve(kBuffer + 256);
   }
   ~Writer() {
     if (owned_ && file_ != nullptr) std::fclose(file_);
@@ -68,29 +69,40 @@ public:
   Writer& operator=(const Writer&) = delete;
 
   Writer& operator<<(std::string_view s) {
-    buf_.append(s);
-    if (buf_.size() >= kBuffer) flush();
+    while (!s.empty()) {
+      const std::size_t n = std::min(s.size(), kBuffer + kSlack - pos_);
+      std::memcpy(buf_.get() + pos_, s.data(), n);
+      pos_ += n;
+      s.remove_prefix(n);
+      if (pos_ >= kBuffer) flush();
+    }
     return *this;
   }
-  Writer& operator<<(char c) {
-    buf_.push_back(c);
+  Writer& operator<<(const std::string& s) { return *this << std::string_view(s); }
+  Writer& operator<<(const char* s) { return *this << std::string_view(s); }
+  Writer& operator<<(char c) { return *this << std::string_view(&c, 1); }
+  // A string literal, copied without strlen (the hot path of the vertex lines).
+  template <std::size_t N>
+  Writer& literal(const char (&s)[N]) {
+    std::memcpy(buf_.get() + pos_, s, N - 1);
+    pos_ += N - 1;
     return *this;
   }
   Writer& integer(std::int64_t v) {
-    char tmp[24];
-    auto r = std::to_chars(tmp, tmp + sizeof tmp, v);
-    buf_.append(tmp, r.ptr);
+    pos_ = static_cast<std::size_t>(
+        std::to_chars(buf_.get() + pos_, buf_.get() + kBuffer + kSlack, v).ptr - buf_.get());
     return *this;
   }
   Writer& integer(const BigInt& v) { return *this << v.str(); }
+  // Called after each small piece: the slack past kBuffer holds one vertex line.
   void maybe_flush() {
-    if (buf_.size() >= kBuffer) flush();
+    if (pos_ >= kBuffer) flush();
   }
   void flush() {
-    if (!buf_.empty() && std::fwrite(buf_.data(), 1, buf_.size(), file_) != buf_.size()) {
+    if (pos_ > 0 && std::fwrite(buf_.get(), 1, pos_, file_) != pos_) {
       throw IoError(name_ + ": write failed (" + std::strerror(errno) + ")");
     }
-    buf_.clear();
+    pos_ = 0;
   }
   /// Flushes, and for -o closes the file and moves it in place.
   void finish() {
@@ -106,14 +118,14 @@ public:
   }
 
 private:
-  static constexpr std::size_t kBuffer = 1 << 20;
-  Existing policy_;
-  OutputSet set_{policy_};
+  static constexpr std::size_t kBuffer = 1 << 20, kSlack = 4096;
+  OutputSet set_;
+  std::unique_ptr<char[]> buf_;
+  std::size_t pos_ = 0;
   std::filesystem::path staging_;
   std::FILE* file_ = nullptr;
   bool owned_ = false;
   std::string name_;
-  std::string buf_;
 };
 
 Rational<BigInt> arg_rational(const std::string& name, const std::string& text) {
@@ -166,13 +178,17 @@ public:
   void vertex(std::int64_t x, std::int64_t y) override {
     meter_.add(x, y);
     if (json_) {
-      out_ << (meter_.count() == 1 ? "\n    [\"" : ",\n    [\"");
-      out_.integer(x) << "\", \"";
-      out_.integer(y) << "\"]";
+      if (meter_.count() == 1) {
+        out_.literal("\n    [\"");
+      } else {
+        out_.literal(",\n    [\"");
+      }
+      out_.integer(x).literal("\", \"");
+      out_.integer(y).literal("\"]");
     } else {
-      out_ << "  ";
-      out_.integer(x) << ' ';
-      out_.integer(y) << '\n';
+      out_.literal("  ");
+      out_.integer(x).literal(" ");
+      out_.integer(y).literal("\n");
     }
     out_.maybe_flush();
     if (progress_ && (meter_.count() & 0xffff) == 0)

@@ -24,6 +24,8 @@
 #include <vector>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -265,6 +267,35 @@ TEST(CliContract, BadInputGivesOneLineExitTwoAndTouchesNothing) {
     EXPECT_EQ(snapshot(dir), before) << "files created or changed";
     fs::remove_all(dir);
   }
+}
+
+// Output that cannot be written (a full disk) is an error too, not a silent exit 0.
+TEST(CliContract, StdoutThatCannotBeWrittenIsAnError) {
+  const fs::path dir = zdg::test::scratch_dir("contract");
+  const std::string cmd = std::string("'") + ZDG_CLI_PATH + "' cf 415/93 --json >/dev/full 2>'" +
+                          (dir / "err").string() + "'";
+  const int raw = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 2);
+  const std::string err = zdg::test::read_file(dir / "err");
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_NE(err.find("zdg: cannot write the output to stdout"), std::string::npos) << err;
+  fs::remove_all(dir);
+}
+
+// Issue #18, reproducer 2: an unwritable output folder (meaningless for root, who may write
+// anywhere: skipped then).
+TEST(CliContract, UnwritableOutputFolderIsOneLine) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders";
+  const fs::path dir = zdg::test::scratch_dir("contract");
+  fs::create_directories(dir / "ro");
+  fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+  const auto r = zdg::test::run_zdg("hull disc 0 0 5 -o " + (dir / "ro" / "h.txt").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("is not writable"), std::string::npos) << r.err;
+  fs::permissions(dir / "ro", fs::perms::owner_all);
+  fs::remove_all(dir);
 }
 
 // The answers of issue #18's first reproducer: integer and rational text is decimal whatever
