@@ -76,7 +76,8 @@ void check_integer(std::string_view text, Outcome ref, const std::optional<BigIn
 }
 
 template <TowerInt I>
-void check_rational(std::string_view text, Outcome ref, const std::optional<Rational<BigInt>>& big) {
+void check_rational(std::string_view text, Outcome ref,
+                    const std::optional<Rational<BigInt>>& big) {
   std::optional<Rational<I>> r;
   const Outcome o = attempt<Rational<I>>([&] { return parse_rational<I>(text); }, r);
   if (ref == Outcome::invalid) {
