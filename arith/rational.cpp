@@ -20,6 +20,10 @@ Rational<I> parse_rational(std::string_view text) {
     // Syntax first: a malformed part is InvalidArgument for every type, even when the other
     // part would not fit the type.
     if (!is_decimal_integer(ps) || !is_decimal_integer(qs)) throw bad();
+    // A zero denominator is in the text ("0", "-000"): the same error for every type.
+    if (qs.find_first_not_of("+-0") == std::string_view::npos) {
+      throw InvalidArgument("zero denominator in '" + std::string(text.substr(0, 40)) + "'");
+    }
     I p, q;
     try {
       p = parse_integer<I>(ps);

@@ -286,8 +286,8 @@ void run_ellipse(const std::vector<std::string>& args, const HullOptions& o) {
 }
 
 void run_points(const std::string& path, const HullOptions& o) {
+  Writer out(o); // the output is checked before the input is read
   auto pts = read_point_file(path, {2, 3});
-  Writer out(o);
   const std::size_t n = pts.size();
   if (pts.dim == 2) {
     std::vector<Point2<BigInt>> big;
@@ -339,8 +339,8 @@ void run_points(const std::string& path, const HullOptions& o) {
 }
 
 void run_halfplanes(const std::string& path, const HullOptions& o) {
-  auto hs = read_halfplane_file(path);
   Writer out(o);
+  auto hs = read_halfplane_file(path);
   auto r = halfplane_hull_exact(std::span<const HalfPlane<BigInt>>(hs));
   if (r.region != RegionKind::bounded) {
     if (o.json) {

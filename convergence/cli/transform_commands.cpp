@@ -134,6 +134,7 @@ void check_paths(TransformArgs& a) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (a.output.empty()) throw InvalidArgument("no output file (-o OUT)");
+  parse_metric(a.metric); // a metric out of the supported range fails before the input is read
   if (fs::exists(a.output, ec) && fs::equivalent(a.input, a.output, ec)) {
     throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
   }

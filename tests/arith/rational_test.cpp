@@ -93,6 +93,10 @@ TYPED_TEST(RationalTest, RegressionMalformedTextIsInvalidForEveryTypeEvenWhenAPa
                InvalidArgument);
   EXPECT_THROW(parse_rational<I>("1701411834604692317371317014118346046923173713/x"),
                InvalidArgument);
+  // The second finding: a zero denominator after a numerator beyond int64.
+  EXPECT_THROW(parse_rational<I>("-92233753284607758088/0"), InvalidArgument);
+  EXPECT_THROW(parse_rational<I>("99999999999999999999999999999999999999999/-000"),
+               InvalidArgument);
 }
 
 // Issue #18: "010/3" was read as 8/3 (octal) by the BigInt parser.
