@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 namespace zdg {
 
@@ -54,31 +55,105 @@ BigInt to_bigint(Int128 v) {
   return neg ? BigInt(-r) : r;
 }
 
-template <TowerInt I>
-I parse_integer(std::string_view text) {
-  std::string_view digits = text;
-  bool neg = false;
-  if (!digits.empty() && (digits.front() == '+' || digits.front() == '-')) {
-    neg = digits.front() == '-';
-    digits.remove_prefix(1);
+namespace {
+
+// The text of a decimal integer: its sign and its digits without leading zeros ("" for zero).
+struct DecimalText {
+  bool negative = false;
+  std::string_view digits;
+};
+
+std::string quoted_excerpt(std::string_view text) {
+  constexpr std::size_t kShown = 40;
+  std::string s(text.substr(0, kShown));
+  for (char& c : s) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
   }
-  if (digits.empty() ||
-      !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
-    throw InvalidArgument("not an integer: '" + std::string(text) + "'");
+  return "'" + s +
+         (text.size() > kShown ? "...' (" + std::to_string(text.size()) + " characters)" : "'");
+}
+
+// The digits after an optional sign, when the text is [+-]digits.
+std::optional<std::string_view> decimal_digits(std::string_view text) {
+  std::string_view rest = text;
+  if (!rest.empty() && (rest.front() == '+' || rest.front() == '-')) rest.remove_prefix(1);
+  if (rest.empty() ||
+      !std::all_of(rest.begin(), rest.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    return std::nullopt;
   }
-  if constexpr (std::same_as<I, BigInt>) {
-    BigInt r{std::string(digits)};
-    return neg ? BigInt(-r) : r;
+  return rest;
+}
+
+DecimalText decimal_text(std::string_view text) {
+  DecimalText d;
+  const auto digits = decimal_digits(text);
+  if (!digits) throw InvalidArgument("not a decimal integer: " + quoted_excerpt(text));
+  d.negative = text.front() == '-';
+  std::string_view rest = *digits;
+  while (!rest.empty() && rest.front() == '0') rest.remove_prefix(1);
+  d.digits = rest;
+  if (rest.empty()) d.negative = false; // -0 is 0
+  return d;
+}
+
+// Accumulates negatively so that the minimum of a checked type parses.
+template <BuiltinInt T>
+Checked<T> accumulate(const DecimalText& d) {
+  Checked<T> r = 0;
+  for (char c : d.digits) r = r * 10 - (c - '0');
+  return d.negative ? r : Checked<T>(-r);
+}
+
+} // namespace
+
+bool is_decimal_integer(std::string_view text) {
+  return decimal_digits(text).has_value();
+}
+
+template <ParsableInt T>
+T parse_integer(std::string_view text) {
+  const DecimalText d = decimal_text(text);
+  if constexpr (std::same_as<T, BigInt>) {
+    BigInt r;
+    if (d.digits.empty()) return r;
+    // GMP reads the digits in base 10 as told: the leading zeros are gone, no prefix remains.
+    const std::string digits(d.digits);
+    if (mpz_set_str(r.backend().data(), digits.c_str(), 10) != 0) {
+      throw InvalidArgument("not a decimal integer: " + quoted_excerpt(text));
+    }
+    return d.negative ? BigInt(-r) : r;
+  } else if constexpr (TowerInt<T>) {
+    try {
+      return accumulate<typename T::value_type>(d);
+    } catch (const OverflowError&) {
+      throw OverflowError("integer " + quoted_excerpt(text) + " does not fit " + T::type_name);
+    }
   } else {
-    // Accumulate negatively so that the minimum parses.
-    I r = 0;
-    for (char c : digits) r = r * 10 - (c - '0');
-    return neg ? r : I(-r);
+    // A machine type of at most 64 bits: read on 128 bits (every uint64 fits), then narrow.
+    int128_t wide = 0;
+    bool fits = d.digits.size() <= 20;
+    if (fits) {
+      wide = accumulate<int128_t>(d).value();
+      fits = wide >= static_cast<int128_t>(std::numeric_limits<T>::min()) &&
+             wide <= static_cast<int128_t>(std::numeric_limits<T>::max());
+    }
+    if (!fits) {
+      throw OverflowError("integer " + quoted_excerpt(text) + " is out of range for " +
+                          (std::is_signed_v<T> ? "a signed " : "an unsigned ") +
+                          std::to_string(8 * sizeof(T)) + "-bit integer");
+    }
+    return static_cast<T>(wide);
   }
 }
 
 template Int64 parse_integer<Int64>(std::string_view);
 template Int128 parse_integer<Int128>(std::string_view);
 template BigInt parse_integer<BigInt>(std::string_view);
+template int parse_integer<int>(std::string_view);
+template unsigned parse_integer<unsigned>(std::string_view);
+template long parse_integer<long>(std::string_view);
+template unsigned long parse_integer<unsigned long>(std::string_view);
+template long long parse_integer<long long>(std::string_view);
+template unsigned long long parse_integer<unsigned long long>(std::string_view);
 
 } // namespace zdg

@@ -117,10 +117,30 @@ To int_cast(const From& v) {
   }
 }
 
-/// Parses an optionally signed decimal integer ("-123", "+7"); throws InvalidArgument for
-/// anything else (naming the text) and OverflowError when it does not fit I.
-template <TowerInt I>
-I parse_integer(std::string_view text);
+/// The types parse_integer reads: the tower, and the machine integers of at most 64 bits.
+template <class T>
+concept SmallMachineInt = MachineInt<T> && sizeof(T) <= 8;
+template <class T>
+concept ParsableInt = TowerInt<T> || SmallMachineInt<T>;
+
+/// The one parser of integer text in zdg (command-line arguments, point and half-plane files,
+/// Freeman chains, image headers, configuration values; rationals are built on it).
+///
+/// Accepts exactly an optional sign '+' or '-' followed by one or more digits 0-9: always
+/// decimal, so leading zeros are allowed and mean nothing ("010" is ten, "-007" is -7, never
+/// octal), and there is no base prefix ("0x10"), space, digit separator or exponent. Anything
+/// else throws InvalidArgument naming the text (cut to its first 40 characters); a value that
+/// does not fit T throws OverflowError. T is a tower type (Int64, Int128, BigInt: BigInt takes
+/// any length, through GMP's subquadratic base-10 conversion) or a machine integer of
+/// at most 64 bits (int, unsigned, std::int64_t, std::uint64_t, ...; "-0" is 0 for unsigned
+/// types). Every type gives the same value whenever it fits.
+template <ParsableInt T>
+T parse_integer(std::string_view text);
+
+/// True when parse_integer accepts the text for some type (an optional sign, then digits):
+/// the syntax alone, so that a composite text (a fraction "P/Q") is rejected for its syntax
+/// before any part is converted, whatever the type.
+bool is_decimal_integer(std::string_view text);
 
 // --- division, modulo, gcd (every sign) ----------------------------------------------------
 

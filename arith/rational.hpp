@@ -92,9 +92,11 @@ private:
   }
 };
 
-/// Parses "7", "-3/4", "+5/10" or a decimal "1000.5", "-.25", "3."; throws InvalidArgument
-/// naming the text when it is none of these (or has a zero denominator), OverflowError when
-/// it does not fit I.
+/// Parses "7", "-3/4", "+5/10" or a decimal "1000.5", "-.25", "3."; every integer part is read
+/// by parse_integer (arith/integer.hpp), so it is decimal whatever its leading zeros ("010/3"
+/// is 10/3, "0.010" is 1/100). Throws InvalidArgument naming the text when it is none of
+/// these (or has a zero denominator), OverflowError when it does not fit I (the value before
+/// reduction: "20/10" needs 20 to fit).
 template <TowerInt I>
 Rational<I> parse_rational(std::string_view text);
 

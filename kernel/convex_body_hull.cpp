@@ -7,6 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <numbers>
 #include <string>
 
 namespace zdg {
@@ -149,7 +153,15 @@ QuadraticBody<I> disc_body(const Rational<I>& cx, const Rational<I>& cy, const R
   I D = lcm(cx.den(), cy.den());
   I rd2 = r.den() * r.den();
   I g = D * r.num();
-  return make_quadratic(cx, cy, rd2, rd2, I(g * g), r, r);
+  QuadraticBody<I> b = make_quadratic(cx, cy, rd2, rd2, I(g * g), r, r);
+  // A disc is scanned by rows whatever its box: the second row from the bottom already holds
+  // a lattice point when r >= 1 (its chord is at least 2 sqrt(2r - 1) long), and the first
+  // vertex found, the leftmost point of the lowest row, is then the first of the output (the
+  // walk can be streamed).
+  b.u = {I(0), I(1)};
+  b.tlo = b.ylo;
+  b.thi = b.yhi;
+  return b;
 }
 
 template <TowerInt I>
@@ -417,9 +429,9 @@ std::optional<Point2<I>> first_direction(const Body& K, const ScanFrame<I>& F, c
 } // namespace detail
 
 template <TowerInt I, class Body>
-std::vector<Point2<I>> convex_body_hull(const Body& K) {
-  std::vector<Point2<I>> out;
-  if (K.tlo > K.thi || K.ylo > K.yhi || K.xlo > K.xhi) return out;
+std::size_t convex_body_hull_walk(const Body& K,
+                                  const std::function<void(const Point2<I>&)>& emit) {
+  if (K.tlo > K.thi || K.ylo > K.yhi || K.xlo > K.xhi) return 0;
   const auto F = detail::scan_frame(K.u);
   // The first scan line meeting the lattice; its first point along v is a hull vertex.
   std::optional<Point2<I>> p0;
@@ -434,19 +446,21 @@ std::vector<Point2<I>> convex_body_hull(const Body& K) {
     }
     if (++empty > detail::kMaxEmptyRows) detail::throw_thin(to_string(K.tlo));
   }
-  if (!p0) return out;
-  out.push_back(*p0);
+  if (!p0) return 0;
+  emit(*p0);
+  std::size_t count = 1;
   Point2<I> P, d;
   if (kr > 0) {
     P = *p0 + kr * F.v;
     d = F.v;
   } else {
     auto e = detail::first_direction(K, F, *p0, t0);
-    if (!e) return out;
+    if (!e) return count;
     P = *p0 + K.last_inside(*p0, *e) * *e;
     d = *e;
   }
-  out.push_back(P);
+  emit(P);
+  ++count;
   Point2<I> w = detail::unimodular_partner(d);
   for (;;) {
     auto e = detail::next_direction(K, P, d, w);
@@ -455,9 +469,17 @@ std::vector<Point2<I>> convex_body_hull(const Body& K) {
     w = e->second;
     Point2<I> Q = P + K.last_inside(P, d) * d;
     if (Q == *p0) break;
-    out.push_back(Q);
+    emit(Q);
+    ++count;
     P = Q;
   }
+  return count;
+}
+
+template <TowerInt I, class Body>
+std::vector<Point2<I>> convex_body_hull(const Body& K) {
+  std::vector<Point2<I>> out;
+  convex_body_hull_walk<I, Body>(K, [&out](const Point2<I>& p) { out.push_back(p); });
   // Start at the lowest, then leftmost vertex (a segment: its lowest-then-leftmost end).
   auto lowest =
       std::min_element(out.begin(), out.end(), [](const Point2<I>& a, const Point2<I>& b) {
@@ -530,6 +552,95 @@ Escalated<BodyHull> halfplane_hull_exact(std::span<const HalfPlane<BigInt>> hs) 
   });
 }
 
+namespace {
+
+// Hands a vertex of type I to the sink (int64 when it fits).
+template <TowerInt I>
+void send(HullVertexSink& sink, const Point2<I>& p) {
+  if constexpr (std::same_as<I, Int64>) {
+    sink.vertex(p.x.value(), p.y.value());
+  } else if constexpr (std::same_as<I, Int128>) {
+    const auto lo = static_cast<int128_t>(INT64_MIN), hi = static_cast<int128_t>(INT64_MAX);
+    if (p.x.value() >= lo && p.x.value() <= hi && p.y.value() >= lo && p.y.value() <= hi) {
+      sink.vertex(static_cast<std::int64_t>(p.x.value()), static_cast<std::int64_t>(p.y.value()));
+    } else {
+      sink.vertex(to_bigint(p.x), to_bigint(p.y));
+    }
+  } else {
+    sink.vertex(p.x, p.y);
+  }
+}
+
+// Streams the hull of a quadratic body, escalating: a run that overflows has handed over a
+// prefix of the vertex sequence (the hull and the walk do not depend on the type), so the
+// next type skips as many vertices as were already sent.
+template <class MakeBody>
+StreamedHull stream_quadratic(HullVertexSink& sink, MakeBody&& make_body) {
+  std::size_t sent = 0;
+  auto res = escalate([&]<class I>(std::type_identity<I>) {
+    const QuadraticBody<I> body = make_body(std::type_identity<I>{});
+    std::size_t index = 0;
+    if (body.u == Point2<I>{I(0), I(1)}) {
+      // Row scan: the walk starts at the lowest-then-leftmost vertex, the output order.
+      return convex_body_hull_walk<I>(body, [&](const Point2<I>& p) {
+        if (index++ < sent) return;
+        send(sink, p);
+        ++sent;
+      });
+    }
+    // Column scan (a tall ellipse): the hull is buffered and rotated to the output order.
+    auto v = convex_body_hull<I>(body);
+    for (std::size_t k = sent; k < v.size(); ++k) send(sink, v[k]);
+    sent = v.size();
+    return v.size();
+  });
+  return {res.value, res.served};
+}
+
+} // namespace
+
+StreamedHull disc_hull_stream(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
+                              const Rational<BigInt>& r, HullVertexSink& sink) {
+  if (r < Rational<BigInt>(0)) throw InvalidArgument("negative radius " + r.str());
+  return stream_quadratic(sink, [&]<class I>(std::type_identity<I>) {
+    return disc_body<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(r));
+  });
+}
+
+StreamedHull ellipse_hull_stream(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
+                                 const Rational<BigInt>& a, const Rational<BigInt>& b,
+                                 HullVertexSink& sink) {
+  ellipse_body(cx, cy, a, b); // validates a, b > 0 before any escalation
+  return stream_quadratic(sink, [&]<class I>(std::type_identity<I>) {
+    return ellipse_body<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(a), narrow<I>(b));
+  });
+}
+
+namespace {
+// An upper bound on a nonnegative rational, as a double rounded up (+inf past the range).
+double upper_double(const Rational<BigInt>& q) {
+  const double v = q.to_double();
+  if (!std::isfinite(v)) return std::numeric_limits<double>::infinity();
+  return std::nextafter(v * (1 + 1e-12), std::numeric_limits<double>::infinity());
+}
+} // namespace
+
+std::uint64_t disc_hull_max_vertices(const Rational<BigInt>& r) {
+  if (r < Rational<BigInt>(0)) throw InvalidArgument("negative radius " + r.str());
+  // The hull lies in the disc: its perimeter is at most 2 pi r.
+  return convex_lattice_polygon_max_vertices(2 * std::numbers::pi * upper_double(r));
+}
+
+std::uint64_t ellipse_hull_max_vertices(const Rational<BigInt>& a, const Rational<BigInt>& b) {
+  if (!(a > Rational<BigInt>(0)) || !(b > Rational<BigInt>(0))) {
+    throw InvalidArgument("ellipse semi-axes " + a.str() + ", " + b.str() + " must be > 0");
+  }
+  // The perimeter of an ellipse is at most pi sqrt(2 (a^2 + b^2)) (Euler's upper bound).
+  const double A = upper_double(a), B = upper_double(b);
+  return convex_lattice_polygon_max_vertices(std::numbers::pi * std::sqrt(2 * (A * A + B * B)) *
+                                             (1 + 1e-12));
+}
+
 #define ZDG_INSTANTIATE(I)                                                                         \
   template I floor_sqrt<I>(const I&);                                                              \
   template struct QuadraticBody<I>;                                                                \
@@ -540,6 +651,10 @@ Escalated<BodyHull> halfplane_hull_exact(std::span<const HalfPlane<BigInt>> hs) 
                                             const Rational<I>&, const Rational<I>&);               \
   template std::pair<RegionKind, PolygonBody<I>> polygon_body<I>(std::span<const HalfPlane<I>>);   \
   template std::vector<Point2<I>> convex_body_hull<I, QuadraticBody<I>>(const QuadraticBody<I>&);  \
+  template std::size_t convex_body_hull_walk<I, QuadraticBody<I>>(                                 \
+      const QuadraticBody<I>&, const std::function<void(const Point2<I>&)>&);                      \
+  template std::size_t convex_body_hull_walk<I, PolygonBody<I>>(                                   \
+      const PolygonBody<I>&, const std::function<void(const Point2<I>&)>&);                        \
   template std::vector<Point2<I>> convex_body_hull<I, PolygonBody<I>>(const PolygonBody<I>&);      \
   template std::vector<Point2<I>> disc_hull<I>(const Rational<I>&, const Rational<I>&,             \
                                                const Rational<I>&);                                \

@@ -2,6 +2,9 @@
 
 #include <zdg/arith/error.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace zdg {
@@ -138,6 +141,141 @@ LatticeWidth<I> lattice_width(std::span<const Point2<I>> v) {
   r.width = wa;
   r.direction = a;
   return r;
+}
+
+// --- incremental measures ----------------------------------------------------------------
+
+namespace {
+// Stein's binary gcd: shifts and subtractions, no division (the meter's hot path).
+std::uint64_t binary_gcd(std::uint64_t a, std::uint64_t b) {
+  if (a == 0) return b;
+  if (b == 0) return a;
+  const int shift = __builtin_ctzll(a | b);
+  a >>= __builtin_ctzll(a);
+  do {
+    b >>= __builtin_ctzll(b);
+    if (a > b) std::swap(a, b);
+    b -= a;
+  } while (b != 0);
+  return a << shift;
+}
+} // namespace
+
+void LatticePolygonMeter::big_edge(const BigInt& ax, const BigInt& ay, const BigInt& bx,
+                                   const BigInt& by, BigInt& area, BigInt& boundary) const {
+  area += ax * by - bx * ay;
+  boundary += gcd(BigInt(bx - ax), BigInt(by - ay));
+}
+
+void LatticePolygonMeter::to_big() {
+  big_ = true;
+  bx0_ = x0_;
+  by0_ = y0_;
+  bx_ = x_;
+  by_ = y_;
+}
+
+void LatticePolygonMeter::edge_to(std::int64_t x, std::int64_t y) {
+  // The shoelace term on 128 bits: each product fits, their difference may not (only when
+  // coordinates are near +-2^63).
+  const int128_t p = static_cast<int128_t>(x_) * y, q = static_cast<int128_t>(x) * y_;
+  int128_t term;
+  if (__builtin_sub_overflow(p, q, &term)) {
+    big_area_ += BigInt(x_) * BigInt(y) - BigInt(x) * BigInt(y_);
+  } else if (int128_t sum; __builtin_add_overflow(area_, term, &sum)) {
+    big_area_ += to_bigint(Int128(area_)) + to_bigint(Int128(term));
+    area_ = 0;
+  } else {
+    area_ = sum;
+  }
+  // |dx|, |dy| <= 2^64 - 1: a gcd on 64 bits.
+  const int128_t dx = static_cast<int128_t>(x) - x_, dy = static_cast<int128_t>(y) - y_;
+  std::uint64_t a = static_cast<std::uint64_t>(dx < 0 ? -dx : dx);
+  std::uint64_t b = static_cast<std::uint64_t>(dy < 0 ? -dy : dy);
+  const std::uint64_t g = binary_gcd(a, b);
+  boundary_ += g;
+  if (n_ == 1) first_edge_gcd_ = BigInt(g);
+  x_ = x;
+  y_ = y;
+}
+
+void LatticePolygonMeter::add(std::int64_t x, std::int64_t y) {
+  if (big_) {
+    add(BigInt(x), BigInt(y));
+    return;
+  }
+  if (n_ == 0) {
+    x0_ = x_ = x;
+    y0_ = y_ = y;
+  } else {
+    edge_to(x, y);
+  }
+  ++n_;
+}
+
+void LatticePolygonMeter::add(const BigInt& x, const BigInt& y) {
+  if (!big_) to_big();
+  if (n_ == 0) {
+    bx0_ = bx_ = x;
+    by0_ = by_ = y;
+  } else {
+    BigInt b;
+    big_edge(bx_, by_, x, y, big_area_, b);
+    if (n_ == 1) first_edge_gcd_ = b;
+    big_boundary_ += b;
+    bx_ = x;
+    by_ = y;
+  }
+  ++n_;
+}
+
+LatticePolygonMeasures<BigInt> LatticePolygonMeter::finish() const {
+  LatticePolygonMeasures<BigInt> m;
+  if (n_ == 0) return m;
+  if (n_ == 1) {
+    m.boundary = 1;
+    return m;
+  }
+  if (n_ == 2) {
+    m.boundary = first_edge_gcd_ + 1;
+    return m;
+  }
+  BigInt area = big_area_ + to_bigint(Int128(area_));
+  BigInt boundary = big_boundary_ + to_bigint(Int128(boundary_));
+  if (big_) {
+    big_edge(bx_, by_, bx0_, by0_, area, boundary);
+  } else {
+    big_edge(BigInt(x_), BigInt(y_), BigInt(x0_), BigInt(y0_), area, boundary);
+  }
+  m.area2 = area;
+  m.boundary = boundary;
+  m.interior = (area - boundary + 2) / 2;
+  return m;
+}
+
+// --- vertex bound ---------------------------------------------------------------------------
+
+std::uint64_t convex_lattice_polygon_max_vertices(double perimeter) {
+  if (!(perimeter >= 0)) return 1; // NaN or negative: a point at most
+  // L(V) from the header, in long double; 1e-9 of slack covers its rounding (L is increasing).
+  auto L = [](long double V) {
+    const long double pi = 3.141592653589793238462643383279502884L;
+    const long double integral =
+        2.0L / (3.0L * std::sqrt(pi)) * (std::pow(V + 1, 1.5L) - 1) - V * std::sqrt(0.5L);
+    return std::max(V, integral) * (1 - 1e-9L);
+  };
+  const std::uint64_t cap = std::uint64_t{1} << 62;
+  if (L(static_cast<long double>(cap)) <= perimeter) return UINT64_MAX;
+  std::uint64_t lo = 1, hi = cap; // L(hi) > perimeter; the answer is in [lo, hi)
+  while (hi - lo > 1) {
+    const std::uint64_t mid = lo + (hi - lo) / 2;
+    if (L(static_cast<long double>(mid)) <= perimeter) {
+      lo = mid;
+    } else {
+      hi = mid;
+    }
+  }
+  return lo;
 }
 
 #define ZDG_INSTANTIATE(I)                                                                         \

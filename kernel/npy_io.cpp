@@ -3,14 +3,19 @@
 #include <zdg/kernel/output_files.hpp>
 
 #include <zdg/arith/error.hpp>
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/input_file.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <string_view>
 #include <unistd.h>
+#include <utility>
 
 namespace zdg {
 
@@ -43,22 +48,207 @@ const DTypeInfo& info(DType t) {
   throw IoError(path + ": " + what);
 }
 
-// The value of key 'key' in the header dict, as raw text up to the next top-level comma.
-std::string dict_value(const std::string& path, const std::string& header, const std::string& key) {
-  auto k = header.find("'" + key + "'");
-  if (k == std::string::npos) fail(path, "npy header has no '" + key + "' entry");
-  auto colon = header.find(':', k);
-  if (colon == std::string::npos) fail(path, "malformed npy header");
-  std::size_t i = colon + 1;
-  while (i < header.size() && header[i] == ' ') ++i;
-  if (i < header.size() && header[i] == '(') {
-    auto close = header.find(')', i);
-    if (close == std::string::npos) fail(path, "malformed shape in npy header");
-    return header.substr(i, close - i + 1);
+// The header of an npy file: its dict parsed (a Python literal restricted to what numpy
+// writes: string keys; string, True/False and tuple-of-integers values), and where the data
+// start.
+struct NpyHeader {
+  DType dtype = DType::U8;
+  std::vector<std::int64_t> shape;
+  std::size_t data_offset = 0;  // bytes before the array data
+  std::uint64_t data_bytes = 0; // count * itemsize (checked against overflow)
+};
+
+// The fixed prefix: magic, version, header length. Returns the header length and the offset
+// of the header text; needs the first 12 bytes (or fewer for a short file: an error then).
+std::pair<std::size_t, std::size_t> npy_prefix(const std::string& source, std::string_view data) {
+  if (data.empty()) fail(source, "empty file (not an npy array)");
+  if (data.size() < 6 || data.compare(0, 6, "\x93NUMPY") != 0) {
+    fail(source, "not an npy file (missing \\x93NUMPY magic)");
   }
-  auto end = header.find_first_of(",}", i);
-  if (end == std::string::npos) fail(path, "malformed npy header");
-  return header.substr(i, end - i);
+  if (data.size() < 10) fail(source, "truncated npy header");
+  const auto major = static_cast<unsigned char>(data[6]);
+  if (major == 1) {
+    const std::size_t hlen = static_cast<unsigned char>(data[8]) |
+                             (static_cast<std::size_t>(static_cast<unsigned char>(data[9])) << 8);
+    return {hlen, 10};
+  }
+  if (major == 2 || major == 3) {
+    if (data.size() < 12) fail(source, "truncated npy header");
+    std::size_t hlen = 0;
+    for (int k = 3; k >= 0; --k)
+      hlen = (hlen << 8) | static_cast<unsigned char>(data[8 + static_cast<std::size_t>(k)]);
+    return {hlen, 12};
+  }
+  fail(source, "unsupported npy format version " + std::to_string(major));
+}
+
+// A cursor over the header text.
+class HeaderText {
+public:
+  HeaderText(const std::string& source, std::string_view text) : source_(source), t_(text) {}
+
+  [[noreturn]] void bad(const std::string& what) const {
+    fail(source_, "malformed npy header (" + what + ")");
+  }
+  void skip() {
+    while (i_ < t_.size() && (t_[i_] == ' ' || t_[i_] == '\t' || t_[i_] == '\n' || t_[i_] == '\r'))
+      ++i_;
+  }
+  bool at(char c) {
+    skip();
+    return i_ < t_.size() && t_[i_] == c;
+  }
+  void expect(char c) {
+    if (!at(c)) bad(std::string("expected '") + c + "'");
+    ++i_;
+  }
+  bool done() {
+    skip();
+    return i_ == t_.size();
+  }
+  std::string string_literal() {
+    skip();
+    if (i_ >= t_.size() || (t_[i_] != '\'' && t_[i_] != '"')) bad("expected a quoted string");
+    const char q = t_[i_++];
+    const std::size_t b = i_;
+    while (i_ < t_.size() && t_[i_] != q) {
+      if (t_[i_] == '\\') bad("escape in a string");
+      ++i_;
+    }
+    if (i_ >= t_.size()) bad("unterminated string");
+    return std::string(t_.substr(b, i_++ - b));
+  }
+  bool boolean() {
+    skip();
+    if (t_.substr(i_, 4) == "True") {
+      i_ += 4;
+      return true;
+    }
+    if (t_.substr(i_, 5) == "False") {
+      i_ += 5;
+      return false;
+    }
+    bad("fortran_order must be True or False");
+  }
+  // (n0, n1, ...) with an optional trailing comma; "()" is a 0-d array.
+  std::vector<std::int64_t> tuple() {
+    expect('(');
+    std::vector<std::int64_t> out;
+    while (!at(')')) {
+      skip();
+      const std::size_t b = i_;
+      while (i_ < t_.size() && t_[i_] >= '0' && t_[i_] <= '9') ++i_;
+      if (i_ == b) bad("shape entries must be non-negative integers");
+      try {
+        out.push_back(parse_integer<std::int64_t>(t_.substr(b, i_ - b)));
+      } catch (const Error&) {
+        fail(source_, "shape entry " +
+                          std::string(t_.substr(b, std::min<std::size_t>(i_ - b, 40))) +
+                          " too large");
+      }
+      if (i_ < t_.size() && t_[i_] == 'L') ++i_; // Python 2 long
+      if (at(',')) {
+        ++i_;
+      } else if (!at(')')) {
+        bad("expected ',' or ')' in the shape");
+      }
+    }
+    ++i_;
+    return out;
+  }
+
+private:
+  const std::string& source_;
+  std::string_view t_;
+  std::size_t i_ = 0;
+};
+
+DType dtype_of(const std::string& source, const std::string& d) {
+  for (const auto& t : kTypes) {
+    const std::string want = t.descr;
+    // byte-sized types may be written with '|', '<' or '='; wider ones with '<' or '='.
+    bool match = d == want || (d.size() == 3 && (d[0] == '<' || d[0] == '=' || d[0] == '|') &&
+                               d.substr(1) == want.substr(1) && (t.size == 1 || d[0] != '|'));
+    if (match) return t.t;
+  }
+  std::string shown = d.substr(0, 40);
+  if (!d.empty() && d[0] == '>') {
+    fail(source, "big-endian dtype '" + shown + "' is not supported (use little-endian)");
+  }
+  fail(source, "dtype '" + shown + "' is not supported (bool, uint8/16/32/64, int8/16/32/64 only)");
+}
+
+// Parses the dict {'descr': ..., 'fortran_order': ..., 'shape': (...), } (keys in any order,
+// each exactly once) and computes the data size without overflow.
+NpyHeader parse_header(const std::string& source, std::string_view text, std::size_t offset) {
+  HeaderText h(source, text);
+  NpyHeader out;
+  out.data_offset = offset;
+  bool has_descr = false, has_order = false, has_shape = false;
+  h.expect('{');
+  while (!h.at('}')) {
+    const std::string key = h.string_literal();
+    h.expect(':');
+    bool* seen = nullptr;
+    if (key == "descr") {
+      out.dtype = dtype_of(source, h.string_literal());
+      seen = &has_descr;
+    } else if (key == "fortran_order") {
+      if (h.boolean()) {
+        fail(source, "Fortran-order arrays are not supported (save with np.ascontiguousarray)");
+      }
+      seen = &has_order;
+    } else if (key == "shape") {
+      out.shape = h.tuple();
+      seen = &has_shape;
+    } else {
+      h.bad("unknown key '" + key.substr(0, 40) + "'");
+    }
+    if (*seen) h.bad("key '" + key + "' given twice");
+    *seen = true;
+    if (h.at(',')) {
+      h.expect(',');
+    } else if (!h.at('}')) {
+      h.bad("expected ',' or '}'");
+    }
+  }
+  h.expect('}');
+  if (!h.done()) h.bad("text after the dict");
+  if (!has_descr) fail(source, "npy header has no 'descr' entry");
+  if (!has_order) fail(source, "npy header has no 'fortran_order' entry");
+  if (!has_shape) fail(source, "npy header has no 'shape' entry");
+  std::uint64_t count = 1;
+  for (auto e : out.shape) {
+    if (__builtin_mul_overflow(count, static_cast<std::uint64_t>(e), &count)) {
+      fail(source, "shape too large (more than 2^64 elements)");
+    }
+  }
+  if (__builtin_mul_overflow(count, static_cast<std::uint64_t>(dtype_size(out.dtype)),
+                             &out.data_bytes)) {
+    fail(source, "shape too large (more than 2^64 bytes)");
+  }
+  if (count > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+    fail(source, "shape too large (more than 2^63 elements)");
+  }
+  return out;
+}
+
+std::string shape_text(const std::vector<std::int64_t>& shape) {
+  std::string s = "(";
+  for (std::size_t k = 0; k < shape.size() && k < 8; ++k)
+    s += (k ? ", " : "") + std::to_string(shape[k]);
+  if (shape.size() > 8) s += ", ...";
+  return s + (shape.size() == 1 ? ",)" : ")");
+}
+
+// The data must be exactly count * itemsize bytes.
+void check_data_size(const std::string& source, const NpyHeader& h, std::uint64_t have) {
+  if (have < h.data_bytes) {
+    fail(source, "truncated data: " + std::to_string(have) + " bytes for shape " +
+                     shape_text(h.shape) + " of " + dtype_name(h.dtype) + " (" +
+                     std::to_string(h.data_bytes) + " needed)");
+  }
+  if (have > h.data_bytes) fail(source, "trailing bytes after the array data");
 }
 
 } // namespace
@@ -124,6 +314,18 @@ std::int64_t NpyArray::get(std::int64_t i) const {
   return 0;
 }
 
+NpyArray parse_npy(std::string_view data, const std::string& source) {
+  const auto [hlen, hstart] = npy_prefix(source, data);
+  if (data.size() - hstart < hlen) fail(source, "truncated npy header");
+  const NpyHeader h = parse_header(source, data.substr(hstart, hlen), hstart + hlen);
+  check_data_size(source, h, data.size() - h.data_offset);
+  NpyArray a;
+  a.dtype = h.dtype;
+  a.shape = h.shape;
+  a.bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(h.data_offset), data.end());
+  return a;
+}
+
 double NpyArray::get_double(std::int64_t i) const {
   const unsigned char* p = bytes.data() + static_cast<std::size_t>(i) * dtype_size(dtype);
   switch (dtype) {
@@ -160,108 +362,62 @@ DType dtype_from_name(const std::string& name) {
 }
 
 NpyArray read_npy(const std::string& path) {
+  // Header first, then the data straight into the array, once its size has been checked
+  // against the file's: nothing is allocated on the header's word alone.
+  const std::uint64_t size = input_file_size(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, "cannot open for reading");
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (data.empty()) fail(path, "empty file (not an npy array)");
-  if (data.size() < 10 || data.compare(0, 6, "\x93NUMPY") != 0) {
-    fail(path, "not an npy file (missing \\x93NUMPY magic)");
-  }
-  auto major = static_cast<unsigned char>(data[6]);
-  std::size_t hlen = 0, hstart = 0;
-  if (major == 1) {
-    hlen = static_cast<unsigned char>(data[8]) |
-           (static_cast<std::size_t>(static_cast<unsigned char>(data[9])) << 8);
-    hstart = 10;
-  } else if (major == 2 || major == 3) {
-    if (data.size() < 12) fail(path, "truncated npy header");
-    for (int k = 3; k >= 0; --k)
-      hlen = (hlen << 8) | static_cast<unsigned char>(data[8 + static_cast<std::size_t>(k)]);
-    hstart = 12;
-  } else {
-    fail(path, "unsupported npy format version " + std::to_string(major));
-  }
-  if (data.size() < hstart + hlen) fail(path, "truncated npy header");
-  std::string header = data.substr(hstart, hlen);
+  std::string prefix(static_cast<std::size_t>(std::min<std::uint64_t>(size, 12)), '\0');
+  in.read(prefix.data(), static_cast<std::streamsize>(prefix.size()));
+  const auto [hlen, hstart] = npy_prefix(path, prefix);
+  if (size - hstart < hlen) fail(path, "truncated npy header");
+  std::string header(hlen, '\0');
+  in.seekg(static_cast<std::streamoff>(hstart));
+  in.read(header.data(), static_cast<std::streamsize>(hlen));
+  if (!in) fail(path, "read error in the npy header");
+  const NpyHeader h = parse_header(path, header, hstart + hlen);
+  check_data_size(path, h, size - h.data_offset);
   NpyArray a;
-  std::string descr = dict_value(path, header, "descr");
-  std::string d = descr;
-  if (d.size() >= 2 && (d.front() == '\'' || d.front() == '"')) d = d.substr(1, d.size() - 2);
-  bool found = false;
-  for (const auto& t : kTypes) {
-    std::string want = t.descr;
-    // byte-sized types may be written with '|', '<' or '='; wider ones with '<' or '='.
-    bool match = d == want || (d.size() == 3 && (d[0] == '<' || d[0] == '=' || d[0] == '|') &&
-                               d.substr(1) == want.substr(1) && (t.size == 1 || d[0] != '|'));
-    if (match) {
-      a.dtype = t.t;
-      found = true;
-      break;
-    }
-  }
-  if (!found) {
-    if (!d.empty() && d[0] == '>') {
-      fail(path, "big-endian dtype '" + d + "' is not supported (use little-endian)");
-    }
-    fail(path, "dtype '" + d +
-                   "' is not supported (bool, uint8/16/32/64, int8/16/32/64, float32/64 only)");
-  }
-  std::string fo = dict_value(path, header, "fortran_order");
-  if (fo.find("True") != std::string::npos) {
-    fail(path, "Fortran-order arrays are not supported (save with np.ascontiguousarray)");
-  }
-  if (fo.find("False") == std::string::npos) fail(path, "malformed fortran_order in npy header");
-  std::string shape = dict_value(path, header, "shape");
-  std::string num;
-  for (char c : shape.substr(1)) {
-    if (c >= '0' && c <= '9') {
-      num.push_back(c);
-    } else if (c == ',' || c == ')') {
-      if (!num.empty()) {
-        if (num.size() > 18) fail(path, "shape entry " + num + " too large");
-        a.shape.push_back(std::stoll(num));
-      }
-      num.clear();
-    } else if (c != ' ' && c != 'L') {
-      fail(path, "malformed shape " + shape + " in npy header");
-    }
-  }
-  std::int64_t count = 1;
-  for (auto s : a.shape) {
-    if (s != 0 && count > std::numeric_limits<std::int64_t>::max() / s / 8) {
-      fail(path, "shape " + shape + " too large");
-    }
-    count *= s;
-  }
-  std::size_t need = static_cast<std::size_t>(count) * dtype_size(a.dtype);
-  std::size_t have = data.size() - hstart - hlen;
-  if (have < need) {
-    fail(path, "truncated data: " + std::to_string(have) + " bytes for shape " + shape + " of " +
-                   dtype_name(a.dtype) + " (" + std::to_string(need) + " needed)");
-  }
-  if (have > need) fail(path, "trailing bytes after the array data");
-  a.bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(hstart + hlen), data.end());
+  a.dtype = h.dtype;
+  a.shape = h.shape;
+  a.bytes.resize(static_cast<std::size_t>(h.data_bytes));
+  in.read(reinterpret_cast<char*>(a.bytes.data()), static_cast<std::streamsize>(a.bytes.size()));
+  if (!in && !a.bytes.empty()) fail(path, "read error in the array data");
   return a;
 }
 
-void write_npy(const std::string& path, const NpyArray& a) {
+std::string npy_file_bytes(const NpyArray& a) {
   std::ostringstream h;
   h << "{'descr': '" << info(a.dtype).descr << "', 'fortran_order': False, 'shape': (";
   for (std::size_t k = 0; k < a.shape.size(); ++k)
     h << a.shape[k] << (a.shape.size() == 1 ? "," : (k + 1 < a.shape.size() ? ", " : ""));
   h << "), }";
   std::string header = h.str();
-  std::size_t total = 10 + header.size() + 1;
+  // Version 1.0 holds a header of up to 65535 bytes (2-byte length), 2.0 up to 4 GiB (4-byte
+  // length); the header is ASCII, so 3.0 (UTF-8) is never needed. The whole prefix is padded
+  // with spaces to a multiple of 64 bytes and ends with '\n', as numpy writes it.
+  const bool v1 = 10 + header.size() + 1 + 63 <= 65535 + 10;
+  const std::size_t prefix = v1 ? 10 : 12;
+  const std::size_t total = prefix + header.size() + 1;
   header.append((64 - total % 64) % 64, ' ');
   header.push_back('\n');
+  if (header.size() > 0xffffffffULL) {
+    throw InvalidArgument("npy header of " + std::to_string(header.size()) +
+                          " bytes: more than npy's 4 GiB limit");
+  }
   std::string out = "\x93NUMPY";
-  out.push_back('\x01');
+  out.push_back(v1 ? '\x01' : '\x02');
   out.push_back('\x00');
-  out.push_back(static_cast<char>(header.size() & 0xff));
-  out.push_back(static_cast<char>(header.size() >> 8));
+  const std::size_t len = header.size();
+  for (std::size_t k = 0; k < (v1 ? 2u : 4u); ++k)
+    out.push_back(static_cast<char>((len >> (8 * k)) & 0xff));
   out += header;
   out.append(reinterpret_cast<const char*>(a.bytes.data()), a.bytes.size());
-  write_file_atomically(path, out);
+  return out;
+}
+
+void write_npy(const std::string& path, const NpyArray& a) {
+  write_file_atomically(path, npy_file_bytes(a));
 }
 
 NpyArray make_npy(DType t, std::vector<std::int64_t> shape, const std::vector<std::int64_t>& v) {

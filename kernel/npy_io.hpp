@@ -1,16 +1,25 @@
 // NumPy .npy files (format versions 1.0, 2.0 and 3.0): read and write n-D arrays.
 //
 // Accepted dtypes: bool, uint8, uint16, uint32, uint64, int8, int16, int32, int64, float32,
-// float64 (little-endian or byte-sized), C order. Fortran order, big-endian or other dtypes
-// (float16, complex, structured), malformed headers and truncated data are IoError naming the
-// file and the problem. Writing goes to a temporary file in the same directory, then renamed
-// over the target.
+// float64 (little-endian or byte-sized), C order. The header dict is parsed as the Python literal
+// numpy writes (keys 'descr', 'fortran_order', 'shape', each once; shape entries decimal integers);
+// Fortran order, big-endian or other dtypes (float16, complex, structured), malformed headers,
+// truncated data and trailing bytes are IoError naming the file and the problem. The data size
+// implied by the header (a product checked against overflow) must equal what the file holds, and it
+// is checked before anything is allocated: a short file cannot ask for a huge array. Writing:
+// version 1.0 while the header fits its 2-byte length (65535 bytes), else 2.0 (4-byte length;
+// headers are ASCII, so 3.0 is never needed), padded to 64 bytes as numpy does; the file is written
+// atomically (kernel/output_files.hpp).
+//
+// parse_npy works on the bytes of a whole file (the fuzz target); read_npy reads a file without
+// holding it twice (header first, then the data straight into the array).
 #pragma once
 
 #include <zdg/kernel/image.hpp>
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace zdg {
@@ -40,7 +49,11 @@ bool dtype_is_float(DType t);
 /// The dtype named "bool", "uint8", ..., "float64" (InvalidArgument for another name).
 DType dtype_from_name(const std::string& name);
 
+/// The array stored in the bytes of an npy file (source names it in errors).
+NpyArray parse_npy(std::string_view bytes, const std::string& source);
 NpyArray read_npy(const std::string& path);
+/// The bytes of the npy file of a (version 1.0, or 2.0 for a header past 65535 bytes).
+std::string npy_file_bytes(const NpyArray& a);
 /// Writes atomically (temporary file + rename). IoError on failure.
 void write_npy(const std::string& path, const NpyArray& a);
 

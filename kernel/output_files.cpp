@@ -62,6 +62,18 @@ fs::path OutputSet::add(const fs::path& final_path) {
   return staging;
 }
 
+void OutputSet::drop(const fs::path& final_path) {
+  for (auto it = entries_.begin(); it != entries_.end(); ++it) {
+    if (it->final_path == final_path) {
+      std::error_code ec;
+      fs::remove(it->staging, ec);
+      entries_.erase(it);
+      return;
+    }
+  }
+  throw IoError(final_path.string() + ": not an output of this set");
+}
+
 void OutputSet::commit() {
   // Every staging file must exist before anything is renamed.
   for (const auto& e : entries_) {

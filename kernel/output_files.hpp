@@ -33,6 +33,9 @@ public:
 
   /// Declares an output; returns the staging path its content must be written to.
   std::filesystem::path add(const std::filesystem::path& final_path);
+  /// Gives up an output declared by add() (an optional output that could not be made): its
+  /// staging file is removed and commit() leaves that output as it was.
+  void drop(const std::filesystem::path& final_path);
   /// Renames every staged file onto its output (in the order added).
   void commit();
 

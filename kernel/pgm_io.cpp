@@ -1,30 +1,33 @@
 #include <zdg/kernel/pgm_io.hpp>
 
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/integer.hpp>
+#include <zdg/kernel/input_file.hpp>
 #include <zdg/kernel/output_files.hpp>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
+#include <cstdint>
+#include <string_view>
 
 namespace zdg {
 
 namespace {
 
 struct Cursor {
-  const std::string& path;
-  const std::string& data;
+  const std::string& source;
+  std::string_view data;
   std::size_t pos = 0;
   int line = 1;
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw IoError(path + ":" + std::to_string(line) + ": " + what);
+    throw IoError(source + ":" + std::to_string(line) + ": " + what);
   }
   void skip_space_and_comments() {
     while (pos < data.size()) {
       char c = data[pos];
       if (c == '#') {
         while (pos < data.size() && data[pos] != '\n') ++pos;
-      } else if (c == ' ' || c == '\t' || c == '\r' || c == '\n') {
+      } else if (c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f') {
         if (c == '\n') ++line;
         ++pos;
       } else {
@@ -32,49 +35,61 @@ struct Cursor {
       }
     }
   }
+  // A decimal number of the header or of a P2 raster (parse_integer: "010" is ten).
   std::int64_t number(const char* what) {
     skip_space_and_comments();
     if (pos >= data.size()) fail(std::string("truncated file: missing ") + what);
-    std::int64_t v = 0;
-    std::size_t start = pos;
-    while (pos < data.size() && data[pos] >= '0' && data[pos] <= '9') {
-      v = v * 10 + (data[pos] - '0');
-      if (v > (std::int64_t{1} << 40)) fail(std::string(what) + " too large");
-      ++pos;
+    const std::size_t start = pos;
+    while (pos < data.size() && data[pos] >= '0' && data[pos] <= '9') ++pos;
+    if (pos == start) {
+      const char c = data[pos];
+      const bool printable = c >= 0x20 && c < 0x7f;
+      fail(std::string("expected ") + what + ", found " +
+           (printable ? std::string("'") + c + "'"
+                      : "byte " + std::to_string(static_cast<unsigned char>(c))));
     }
-    if (pos == start) fail(std::string("expected ") + what + ", found '" + data[pos] + "'");
-    return v;
+    try {
+      return parse_integer<std::int64_t>(data.substr(start, pos - start));
+    } catch (const OverflowError&) {
+      fail(std::string(what) + " too large");
+    }
   }
 };
 
 } // namespace
 
-Image<std::uint16_t> read_pgm(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open for reading");
-  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  Cursor c{path, data};
+Image<std::uint16_t> parse_pgm(std::string_view data, const std::string& source) {
+  Cursor c{source, data};
   if (data.empty()) c.fail("empty file (not a PGM image)");
   if (data.size() < 2 || data[0] != 'P' || (data[1] != '2' && data[1] != '5')) {
     c.fail("not a PGM image (magic P2 or P5 expected)");
   }
-  bool binary = data[1] == '5';
+  const bool binary = data[1] == '5';
   c.pos = 2;
-  std::int64_t w = c.number("width"), h = c.number("height"), maxval = c.number("maxval");
+  const std::int64_t w = c.number("width"), h = c.number("height"), maxval = c.number("maxval");
   if (w < 1 || h < 1) c.fail("empty image " + std::to_string(w) + "x" + std::to_string(h));
   if (maxval < 1 || maxval > 65535)
     c.fail("maxval " + std::to_string(maxval) + " not in [1, 65535]");
+  // The raster the header announces must be in the file before anything is allocated: w h
+  // pixels of 1 or 2 bytes (P5), or of at least one digit and one separator each (P2, the
+  // last separator optional). The products are checked against overflow.
+  const std::uint64_t rest = c.pos < data.size() ? data.size() - c.pos : 0;
+  const std::uint64_t bpp = binary ? (maxval < 256 ? 1 : 2) : 2;
+  std::uint64_t pixels = 0, need = 0;
+  const bool overflow = __builtin_mul_overflow(static_cast<std::uint64_t>(w),
+                                               static_cast<std::uint64_t>(h), &pixels) ||
+                        __builtin_mul_overflow(pixels, bpp, &need);
+  const std::uint64_t have = binary ? (rest > 0 ? rest - 1 : 0) : rest + 1;
+  if (overflow || need > have) {
+    c.fail("truncated pixel data: the header announces " + std::to_string(w) + "x" +
+           std::to_string(h) + " pixels, the file holds " + std::to_string(rest) +
+           " bytes after it" + (binary ? "" : " (ASCII: at least 2 bytes a pixel)"));
+  }
   Image<std::uint16_t> img(Domain({h, w}));
+  const auto n = static_cast<std::int64_t>(pixels);
   if (binary) {
-    if (c.pos >= data.size()) c.fail("truncated file: no pixel data");
     ++c.pos; // the single whitespace after maxval
-    std::size_t bpp = maxval < 256 ? 1 : 2;
-    std::size_t need = static_cast<std::size_t>(w * h) * bpp;
-    if (data.size() - c.pos < need) {
-      c.fail("truncated pixel data: " + std::to_string(data.size() - c.pos) + " bytes, " +
-             std::to_string(need) + " needed");
-    }
-    for (std::int64_t i = 0; i < w * h; ++i) {
+    for (std::int64_t i = 0; i < n; ++i) {
       std::size_t p = c.pos + static_cast<std::size_t>(i) * bpp;
       std::uint16_t v =
           bpp == 1 ? static_cast<unsigned char>(data[p])
@@ -84,7 +99,7 @@ Image<std::uint16_t> read_pgm(const std::string& path) {
       img[i] = v;
     }
   } else {
-    for (std::int64_t i = 0; i < w * h; ++i) {
+    for (std::int64_t i = 0; i < n; ++i) {
       std::int64_t v = c.number("pixel value");
       if (v > maxval)
         c.fail("pixel value " + std::to_string(v) + " above maxval " + std::to_string(maxval));
@@ -92,6 +107,10 @@ Image<std::uint16_t> read_pgm(const std::string& path) {
     }
   }
   return img;
+}
+
+Image<std::uint16_t> read_pgm(const std::string& path) {
+  return parse_pgm(read_input_file(path), path);
 }
 
 void write_pgm(const std::string& path, const Image<std::uint64_t>& image) {

@@ -387,6 +387,25 @@ EnvelopeBounds envelope_bounds(const Domain& dom, const TransformOptions& opt,
     throw InvalidArgument("torus: " + std::to_string(opt.torus.size()) + " flags for a " +
                           std::to_string(dom.dim()) + "-D image");
   }
+  if (!mt.is_inf()) {
+    // The bit budget of the p-th powers (kernel/lp_metric.hpp), checked before any of them is
+    // computed: p log2(L) < kMaxMetricBits - 8 leaves room for the sums and the factor 2.
+    std::int64_t l = 1;
+    for (int k = 0; k < dom.dim(); ++k) {
+      l = std::max(l, opt.periodic(k) ? 3 * dom.extent(k) : dom.extent(k));
+    }
+    const double bits = mt.p * std::log2(static_cast<double>(l));
+    const int budget = kMaxMetricBits - 8;
+    if (bits > budget) {
+      throw InvalidArgument(
+          "metric " + mt.name() + ": its exact values on lines of " + std::to_string(l) +
+          " points would need about " + std::to_string(static_cast<long long>(bits)) +
+          " bits; zdg supports l_p while L^p < 2^" + std::to_string(kMaxMetricBits) +
+          " (here p <= " +
+          std::to_string(static_cast<long long>(budget / std::log2(static_cast<double>(l)))) +
+          "; linf is the limit of l_p)");
+    }
+  }
   BigInt vmax = 0;
   std::int64_t lmax = 1;
   for (int k = 0; k < dom.dim(); ++k) {
@@ -446,8 +465,13 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt, const st
     }
     pw.resize(static_cast<std::size_t>(lmax) + 1);
     for (std::int64_t t = 0; t <= lmax; ++t) {
-      V v = 1;
-      for (int i = 0; i < mt.p; ++i) v *= small<V>(t);
+      // t^p by square-and-multiply (p <= kMaxMetricP; the bound checked at entry holds it).
+      V v = 1, b = small<V>(t);
+      for (unsigned e = static_cast<unsigned>(mt.p);; b *= b) {
+        if (e & 1u) v *= b;
+        e >>= 1;
+        if (e == 0) break;
+      }
       pw[static_cast<std::size_t>(t)] = v;
     }
     run_passes<kLp>(dom, opt, mask, f, inf, sites, pw);

@@ -6,6 +6,10 @@ one colour per shape with the band of the translations (min to max of their l_in
 fitted slope in the legend, and reference slope triangles for the proven rates.
 
 Usage: /usr/bin/python3 papers/plot_convergence.py DIR
+       /usr/bin/python3 papers/plot_convergence.py --csv RESULTS --summary SUMMARY \
+           --png PNG --svg SVG
+The second form (used by zdg converge) reads and writes the given paths, whatever their names:
+zdg hands over its staging files and moves them in place only when everything succeeded.
 """
 import csv
 import json
@@ -20,10 +24,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
-def main(directory):
-    with open(os.path.join(directory, "results.csv"), newline="") as f:
+def main(csv_path, summary_path, outputs):
+    with open(csv_path, newline="") as f:
         rows = list(csv.DictReader(f))
-    with open(os.path.join(directory, "summary.json")) as f:
+    with open(summary_path) as f:
         summary = json.load(f)
     fits = {(x["shape"], x["estimator"]): x for x in summary["fits"] if x["norm"] == "linf"}
     estimators = []
@@ -84,13 +88,28 @@ def main(directory):
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    for ext in ("png", "svg"):
-        tmp = os.path.join(directory, "convergence.tmp." + ext)
-        fig.savefig(tmp, dpi=120)
-        os.replace(tmp, os.path.join(directory, "convergence." + ext))
+    for ext, path in outputs:
+        if path is None:
+            # DIR form: a temporary file beside the target, then a rename.
+            tmp = os.path.join(os.path.dirname(csv_path), "convergence.tmp." + ext)
+            fig.savefig(tmp, dpi=120, format=ext)
+            os.replace(tmp, os.path.join(os.path.dirname(csv_path), "convergence." + ext))
+        else:
+            fig.savefig(path, dpi=120, format=ext)
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit("usage: plot_convergence.py DIR")
-    main(sys.argv[1])
+    import argparse
+
+    if len(sys.argv) == 2 and not sys.argv[1].startswith("-"):
+        d = sys.argv[1]
+        main(os.path.join(d, "results.csv"), os.path.join(d, "summary.json"),
+             [("png", None), ("svg", None)])
+    else:
+        ap = argparse.ArgumentParser(description="Draw the convergence plot of a zdg run.")
+        ap.add_argument("--csv", required=True)
+        ap.add_argument("--summary", required=True)
+        ap.add_argument("--png", required=True)
+        ap.add_argument("--svg", required=True)
+        a = ap.parse_args()
+        main(a.csv, a.summary, [("png", a.png), ("svg", a.svg)])

@@ -5,7 +5,14 @@
 // - `--json` prints machine-readable output on stdout; integers that may exceed 64 bits are
 //   decimal strings;
 // - bad input throws zdg::Error (or a CLI11 parse error): main() prints one line
-//   "zdg: <what was wrong>" on stderr and exits with status 2;
+//   "zdg: <what was wrong>" on stderr and exits with status 2 (also for the standard
+//   exceptions of the environment: filesystem and system errors, out of memory); any other
+//   exception is a bug: "zdg: internal error: ..." and status 3 (main.cpp);
+// - numbers are read by zdg::parse_integer / parse_rational (decimal; main() routes every
+//   integer option through parse_integer);
+// - every file a command writes goes through an OutputSet (kernel/output_files.hpp): checked
+//   before any work, refused when it exists unless --force, staged and renamed at the end;
+// - bad-input rows for a new command go to tests/convergence/cli/contract_test.cpp;
 // - a subcommand that finishes but whose checks fail (a theory check, for instance) sets
 //   Context::exit_code to 1.
 #pragma once

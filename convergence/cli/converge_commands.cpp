@@ -21,6 +21,7 @@
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/convergence/experiment.hpp>
 #include <zdg/convergence/shape.hpp>
+#include <zdg/kernel/output_files.hpp>
 
 #include <array>
 #include <cstdio>
@@ -192,17 +193,13 @@ nlohmann::json config_json(const ExperimentConfig& c, const ExperimentResult& r,
           {"config_file", o.config_file}};
 }
 
-// Writes text to path through a temporary file and a rename.
-void write_atomic(const fs::path& path, const std::string& text) {
-  fs::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw IoError("cannot write '" + tmp.string() + "'");
-    out << text;
-    if (!out) throw IoError("cannot write '" + tmp.string() + "'");
-  }
-  fs::rename(tmp, path);
+// Writes text to a staging file of an OutputSet.
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw IoError("cannot write '" + path.string() + "'");
+  out << text;
+  out.flush();
+  if (!out) throw IoError("cannot write '" + path.string() + "' (disk full?)");
 }
 
 std::string parameters_text(const Estimator& e) {
@@ -213,6 +210,89 @@ std::string parameters_text(const Estimator& e) {
   }
   return out;
 }
+
+// The outputs of a run in DIR (results.csv, summary.json, convergence.png and .svg): checked
+// before any work, written to staging files, moved in place together at the end
+// (kernel/output_files.hpp). A DIR created for the run is removed again when the run fails.
+class ConvergeOutputs {
+public:
+  ConvergeOutputs(const std::string& output, bool force, bool plot) : dir_(output) {
+    if (fs::exists(dir_) && !fs::is_directory(dir_)) {
+      throw IoError("'" + output + "' exists and is not a directory");
+    }
+    if (!fs::exists(dir_)) {
+      // The first missing ancestor is what this run creates (and removes on failure).
+      fs::path top = dir_;
+      while (top.has_parent_path() && !top.parent_path().empty() && !fs::exists(top.parent_path()))
+        top = top.parent_path();
+      fs::create_directories(dir_);
+      created_ = top;
+    }
+    try {
+      set_ = std::make_unique<OutputSet>(force ? Existing::replace : Existing::refuse);
+      csv_ = set_->add(dir_ / "results.csv");
+      json_ = set_->add(dir_ / "summary.json");
+      if (plot) {
+        png_ = set_->add(dir_ / "convergence.png");
+        svg_ = set_->add(dir_ / "convergence.svg");
+      }
+    } catch (...) {
+      discard();
+      throw;
+    }
+  }
+  ~ConvergeOutputs() {
+    if (!committed_) discard();
+  }
+  ConvergeOutputs(const ConvergeOutputs&) = delete;
+  ConvergeOutputs& operator=(const ConvergeOutputs&) = delete;
+
+  const fs::path& dir() const { return dir_; }
+
+  // Writes everything to the staging files, draws the plot from them, then commits. A plot
+  // that cannot be drawn is a warning: its outputs are left as they were. Returns whether
+  // the plot was drawn.
+  bool write(const std::string& csv, const std::string& summary) {
+    write_text(csv_, csv);
+    write_text(json_, summary);
+    if (!png_.empty()) {
+      const std::string script = source_dir() + "/papers/plot_convergence.py";
+      auto q = [](const fs::path& p) { // a shell word: '...' with each ' as '\''
+        std::string w = "'";
+        for (char c : p.string()) w += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return w + "'";
+      };
+      const std::string cmd = "/usr/bin/python3 " + q(script) + " --csv " + q(csv_) +
+                              " --summary " + q(json_) + " --png " + q(png_) + " --svg " + q(svg_) +
+                              " >/dev/null 2>&1";
+      if (!fs::exists(script) || std::system(cmd.c_str()) != 0 || !fs::exists(png_) ||
+          !fs::exists(svg_)) {
+        std::cerr << "zdg: warning: the plot could not be drawn (" << script
+                  << " with /usr/bin/python3 and matplotlib); convergence.png and .svg left "
+                     "as they were\n";
+        set_->drop(dir_ / "convergence.png");
+        set_->drop(dir_ / "convergence.svg");
+      }
+    }
+    set_->commit();
+    committed_ = true;
+    return !png_.empty() && fs::exists(dir_ / "convergence.png");
+  }
+
+private:
+  fs::path dir_, created_;
+
+  void discard() {
+    set_.reset(); // the staging files first
+    if (!created_.empty()) {
+      std::error_code ec;
+      fs::remove_all(created_, ec);
+    }
+  }
+  std::unique_ptr<OutputSet> set_;
+  fs::path csv_, json_, png_, svg_;
+  bool committed_ = false;
+};
 
 void print_list() {
   std::cout << "shapes:\n";
@@ -268,17 +348,10 @@ void run_converge(ConvergeOptions o, Context& ctx) {
   }
   ExperimentConfig config = make_config(o);
   if (o.output.empty() && !o.json) throw InvalidArgument("no output directory given (-o DIR)");
-  fs::path dir(o.output);
-  if (!o.output.empty()) {
-    if (fs::exists(dir) && !fs::is_directory(dir)) {
-      throw IoError("'" + o.output + "' exists and is not a directory");
-    }
-    if (!o.force && (fs::exists(dir / "results.csv") || fs::exists(dir / "summary.json"))) {
-      throw IoError("'" + o.output +
-                    "' already holds results.csv or summary.json (use --force to replace)");
-    }
-    fs::create_directories(dir);
-  }
+  // Every output is checked (and DIR created) before any work.
+  std::unique_ptr<ConvergeOutputs> outputs;
+  if (!o.output.empty()) outputs = std::make_unique<ConvergeOutputs>(o.output, o.force, !o.no_plot);
+  const fs::path dir(o.output);
   const bool show = !o.quiet && isatty(2) != 0;
   ProgressFn progress;
   if (show) {
@@ -302,21 +375,10 @@ void run_converge(ConvergeOptions o, Context& ctx) {
         {"grid_step", "the double nearest to each h, used as an exact dyadic rational"},
         {"seed", config.seed}}}};
   bool plotted = false; // the plot line is printed only for a plot that was drawn
-  if (!o.output.empty()) {
+  if (outputs) {
     std::ostringstream csv;
     write_results_csv(result, csv);
-    write_atomic(dir / "results.csv", csv.str());
-    write_atomic(dir / "summary.json", summary.dump(2) + "\n");
-    if (!o.no_plot) {
-      std::string script = source_dir() + "/papers/plot_convergence.py";
-      std::string cmd = "/usr/bin/python3 '" + script + "' '" + dir.string() + "' >/dev/null 2>&1";
-      if (fs::exists(script) && std::system(cmd.c_str()) == 0) {
-        plotted = true;
-      } else {
-        std::cerr << "zdg: warning: the plot could not be drawn (" << script
-                  << " with /usr/bin/python3 and matplotlib)\n";
-      }
-    }
+    plotted = outputs->write(csv.str(), summary.dump(2) + "\n");
   }
   if (o.json) {
     print_json({{"runs", runs_json(result)}, {"fits", fits_json(result)}});

@@ -1,18 +1,17 @@
 // zdg dss recognize | cover | subsegment: digital straight segments on the command line.
-// Input files hold one point "x y" per line (blank lines and lines starting with '#' are
-// skipped) or, on their first data line, a Freeman chain "x0 y0 0123...". Integers are read
-// exactly; errors name the file and line and exit with status 2.
+// Input files hold one point "x y" per line ('#' starts a comment, blank lines are skipped) or,
+// on their first data line, a Freeman chain "x0 y0 0123..." (kernel/point_file.hpp). Integers
+// are read exactly, in decimal; errors name the file and line and exit with status 2.
 #include <zdg/arith/dsl_subsegment.hpp>
 #include <zdg/arith/dss_recognizer.hpp>
 #include <zdg/arith/escalate.hpp>
 #include <zdg/convergence/cli/commands.hpp>
 #include <zdg/kernel/freeman_chain.hpp>
 #include <zdg/kernel/maximal_segments.hpp>
+#include <zdg/kernel/point_file.hpp>
 
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -20,59 +19,26 @@ namespace zdg::cli {
 
 namespace {
 
+// The path of a file: its points (BigInt) and the line of each.
 struct PointFile {
   std::vector<Point2<BigInt>> pts;
   std::vector<std::size_t> lines; // line number of each point (the chain's line for all)
   bool freeman = false;
 };
 
-std::vector<std::string> split(const std::string& line) {
-  std::istringstream in(line);
-  std::vector<std::string> t;
-  std::string w;
-  while (in >> w) t.push_back(w);
-  return t;
-}
-
 PointFile read_points(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw IoError("cannot open '" + path + "'");
+  DigitalPathFile file = read_digital_path_file(path);
   PointFile f;
-  std::string line;
-  std::size_t no = 0;
-  while (std::getline(in, line)) {
-    ++no;
-    auto t = split(line);
-    if (t.empty() || t[0][0] == '#') continue;
-    auto where = path + ":" + std::to_string(no) + ": ";
-    if (f.pts.empty() && !f.freeman && t.size() >= 3) { // a Freeman chain
-      FreemanChain c;
-      try {
-        c = parse_freeman_chain(line);
-      } catch (const Error& e) {
-        throw InvalidArgument(where + e.what());
-      }
-      for (const auto& p : freeman_points(c)) {
-        f.pts.push_back({BigInt(p.x), BigInt(p.y)});
-        f.lines.push_back(no);
-      }
-      f.freeman = true;
-      continue;
+  if (file.chain) {
+    for (const auto& p : freeman_points(*file.chain)) {
+      f.pts.push_back({BigInt(p.x), BigInt(p.y)});
+      f.lines.push_back(file.chain_line);
     }
-    if (f.freeman) throw InvalidArgument(where + "unexpected text after the Freeman chain");
-    if (t.size() != 2) {
-      throw InvalidArgument(where + "expected a point 'x y', got '" + line + "'");
-    }
-    Point2<BigInt> p;
-    try {
-      p = {parse_integer<BigInt>(t[0]), parse_integer<BigInt>(t[1])};
-    } catch (const Error&) {
-      throw InvalidArgument(where + "expected two integers 'x y', got '" + line + "'");
-    }
-    f.pts.push_back(p);
-    f.lines.push_back(no);
+    f.freeman = true;
+  } else {
+    f.pts = std::move(file.points);
+    f.lines = std::move(file.lines);
   }
-  if (f.pts.empty()) throw InvalidArgument(path + ": no point");
   return f;
 }
 

@@ -1,10 +1,12 @@
 // zdg transform dt|voronoi|power|rdt|rma: the separable exact l_p transforms on images read
-// from .npy (any dimension), .pgm (2D) or .vol (3D); results written atomically (temporary
-// file, then rename), never over the input.
+// from .npy (any dimension), .pgm (2D) or .vol (3D); the result is written through an
+// OutputSet (checked before any work, staged, renamed at the end), never over the input and
+// never over an existing file unless --force.
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/cli/commands.hpp>
 #include <zdg/kernel/distance_transform.hpp>
 #include <zdg/kernel/npy_io.hpp>
+#include <zdg/kernel/output_files.hpp>
 #include <zdg/kernel/pgm_io.hpp>
 #include <zdg/kernel/power_map.hpp>
 #include <zdg/kernel/reduced_medial_axis.hpp>
@@ -28,7 +30,10 @@ namespace {
 struct TransformArgs {
   std::string input, output, metric = "l2", torus, lower;
   unsigned threads = 0;
-  bool json = false;
+  bool json = false, force = false;
+  // The file the result is written to before it is moved onto `output` (set by check_paths).
+  std::shared_ptr<OutputSet> outputs;
+  std::string staged;
 };
 
 std::string extension(const std::string& path) {
@@ -39,21 +44,17 @@ std::string extension(const std::string& path) {
 
 std::vector<std::int64_t> parse_int_list(const std::string& text, const std::string& what) {
   std::vector<std::int64_t> out;
-  std::string cur;
-  for (std::size_t i = 0; i <= text.size(); ++i) {
-    if (i == text.size() || text[i] == ',') {
-      try {
-        std::size_t used = 0;
-        long long v = std::stoll(cur, &used);
-        if (used != cur.size()) throw std::invalid_argument("trailing");
-        out.push_back(v);
-      } catch (const std::exception&) {
-        throw InvalidArgument(what + ": '" + cur + "' is not an integer (in '" + text + "')");
-      }
-      cur.clear();
-    } else {
-      cur.push_back(text[i]);
+  std::string_view rest = text;
+  for (;;) {
+    const auto comma = rest.find(',');
+    const std::string_view item = rest.substr(0, comma);
+    try {
+      out.push_back(parse_integer<std::int64_t>(item));
+    } catch (const Error& e) {
+      throw InvalidArgument(what + ": " + e.what() + " (in the list '" + text + "')");
     }
+    if (comma == std::string_view::npos) break;
+    rest.remove_prefix(comma + 1);
   }
   return out;
 }
@@ -126,23 +127,39 @@ TransformOptions make_options(const TransformArgs& a, int dim) {
   return opt;
 }
 
-void check_paths(const TransformArgs& a) {
+// Checks the output before any work (OutputSet: the folder exists, the output is not a
+// folder, an existing file is refused unless --force, the output is not the input) and
+// prepares its staging file.
+void check_paths(TransformArgs& a) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (a.output.empty()) throw InvalidArgument("no output file (-o OUT)");
+  parse_metric(a.metric); // a metric out of the supported range fails before the input is read
   if (fs::exists(a.output, ec) && fs::equivalent(a.input, a.output, ec)) {
     throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
   }
+  const std::string e = extension(a.output);
+  if (e != ".npy" && e != ".pgm" && e != ".vol") {
+    throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
+  }
+  a.outputs = std::make_shared<OutputSet>(a.force ? Existing::replace : Existing::refuse);
+  a.staged = a.outputs->add(a.output).string();
+}
+
+void commit(const TransformArgs& a) {
+  a.outputs->commit();
 }
 
 std::vector<std::int64_t> shape_of(const Domain& d) {
   return d.extents();
 }
 
-// Writes an image of unsigned values in the format of the output's extension.
-void write_unsigned(const std::string& path, const Domain& dom, const std::vector<std::uint64_t>& v,
+// Writes an image of unsigned values to the staging file, in the format of the output's
+// extension.
+void write_unsigned(const TransformArgs& a, const Domain& dom, const std::vector<std::uint64_t>& v,
                     DType dtype) {
-  std::string e = extension(path);
+  const std::string& path = a.staged;
+  std::string e = extension(a.output);
   if (e == ".pgm") {
     write_pgm(path, Image<std::uint64_t>(dom, v));
   } else if (e == ".vol") {
@@ -155,7 +172,7 @@ void write_unsigned(const std::string& path, const Domain& dom, const std::vecto
       write_npy(path, make_npy(dtype, shape_of(dom), s));
     }
   } else {
-    throw IoError(path + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
+    throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
   }
 }
 
@@ -217,18 +234,19 @@ double since(std::chrono::steady_clock::time_point t0) {
 }
 
 template <class T>
-void run_dt_as(const TransformArgs& a, const Image<std::uint8_t>& mask, const TransformOptions& opt,
+void run_dt_as(TransformArgs& a, const Image<std::uint8_t>& mask, const TransformOptions& opt,
                DType dtype, std::chrono::steady_clock::time_point t0) {
   auto dt = distance_transform<T>(mask, opt);
   double secs = since(t0);
   std::vector<std::uint64_t> v(dt.values().begin(), dt.values().end());
   std::uint64_t mx = 0;
   for (auto x : v) mx = std::max(mx, x);
-  write_unsigned(a.output, mask.domain(), v, dtype);
+  write_unsigned(a, mask.domain(), v, dtype);
+  commit(a);
   report(a, "dt", mask.domain(), opt, dtype_name(dtype), std::to_string(mx), secs);
 }
 
-void run_dt(const TransformArgs& a) {
+void run_dt(TransformArgs& a) {
   check_paths(a);
   auto mask = read_mask(a);
   auto opt = make_options(a, mask.dim());
@@ -255,12 +273,13 @@ void run_dt(const TransformArgs& a) {
     std::vector<std::uint64_t> v;
     v.reserve(dt.values().size());
     for (const auto& x : dt.values()) v.push_back(x.convert_to<std::uint64_t>());
-    write_unsigned(a.output, mask.domain(), v, DType::U64);
+    write_unsigned(a, mask.domain(), v, DType::U64);
+    commit(a);
     report(a, "dt", mask.domain(), opt, "uint64", mx.str(), secs);
   }
 }
 
-void run_voronoi(const TransformArgs& a) {
+void run_voronoi(TransformArgs& a) {
   check_paths(a);
   require_npy(a.output, "the Voronoi map");
   auto mask = read_mask(a);
@@ -268,11 +287,12 @@ void run_voronoi(const TransformArgs& a) {
   auto t0 = std::chrono::steady_clock::now();
   auto map = voronoi_map(mask, opt);
   double secs = since(t0);
-  write_npy(a.output, sites_array(mask.domain(), map.site));
+  write_npy(a.staged, sites_array(mask.domain(), map.site));
+  commit(a);
   report(a, "voronoi", mask.domain(), opt, "int64", "", secs);
 }
 
-void run_power(const TransformArgs& a) {
+void run_power(TransformArgs& a) {
   check_paths(a);
   require_npy(a.output, "the power map");
   auto w = read_values(a);
@@ -280,11 +300,12 @@ void run_power(const TransformArgs& a) {
   auto t0 = std::chrono::steady_clock::now();
   auto map = power_map(w, opt);
   double secs = since(t0);
-  write_npy(a.output, sites_array(w.domain(), map.site));
+  write_npy(a.staged, sites_array(w.domain(), map.site));
+  commit(a);
   report(a, "power", w.domain(), opt, "int64", "", secs);
 }
 
-void run_rdt(const TransformArgs& a) {
+void run_rdt(TransformArgs& a) {
   check_paths(a);
   auto v = read_values(a);
   auto opt = make_options(a, v.dim());
@@ -293,13 +314,14 @@ void run_rdt(const TransformArgs& a) {
   double secs = since(t0);
   std::uint64_t count = 0;
   for (auto x : r.values()) count += x;
-  write_unsigned(a.output, r.domain(),
-                 std::vector<std::uint64_t>(r.values().begin(), r.values().end()), DType::U8);
+  write_unsigned(a, r.domain(), std::vector<std::uint64_t>(r.values().begin(), r.values().end()),
+                 DType::U8);
+  commit(a);
   report(a, "rdt", r.domain(), opt, "uint8", count > 0 ? "1" : "0", secs,
          {{"points", std::to_string(count)}});
 }
 
-void run_rma(const TransformArgs& a) {
+void run_rma(TransformArgs& a) {
   check_paths(a);
   require_npy(a.output, "the medial axis");
   auto mask = read_mask(a);
@@ -315,9 +337,10 @@ void run_rma(const TransformArgs& a) {
     rows.push_back(b.value);
     mx = std::max(mx, b.value);
   }
-  write_npy(a.output,
+  write_npy(a.staged,
             make_npy<std::int64_t>(
                 {static_cast<std::int64_t>(balls.size()), static_cast<std::int64_t>(d + 1)}, rows));
+  commit(a);
   report(a, "rma", mask.domain(), opt, "int64", std::to_string(mx), secs,
          {{"balls", balls.size()}});
 }
@@ -331,7 +354,7 @@ void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
   struct Spec {
     const char* name;
     const char* help;
-    void (*run)(const TransformArgs&);
+    void (*run)(TransformArgs&);
   };
   static const Spec specs[] = {
       {"dt",
@@ -353,11 +376,15 @@ void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
     auto* sub = tr->add_subcommand(s.name, s.help);
     sub->add_option("IN", args->input, "input image (.npy, .pgm, .vol)")->required();
     sub->add_option("-o,--output", args->output, "output file (written atomically)")->required();
-    sub->add_option("--metric", args->metric, "l1, l2, linf or lP (P >= 1)")->capture_default_str();
+    sub->add_option("--metric", args->metric,
+                    "l1, l2, linf or lP (1 <= P <= 1000 and L^P < 2^4096, L the longest line)")
+        ->capture_default_str();
     sub->add_option("--torus", args->torus, "periodic axes: comma list (0,2) or 'all'");
     sub->add_option("--lower", args->lower, "lower bounds of the domain, comma list (default 0)");
-    sub->add_option("--threads", args->threads, "worker threads (0 = all cores)")
+    sub->add_option("--threads", args->threads, "worker threads, 0..1024 (0 = all cores)")
+        ->check(CLI::Range(0u, 1024u))
         ->capture_default_str();
+    sub->add_flag("--force", args->force, "replace the output file if it exists");
     sub->add_flag("--json", args->json, "print a JSON summary on stdout");
     auto run = s.run;
     sub->callback([args, run] { run(*args); });

@@ -6,6 +6,9 @@
 
 #include <cstdint>
 #include <limits>
+#include <sstream>
+#include <string>
+#include <tuple>
 
 namespace {
 
@@ -165,4 +168,179 @@ namespace {
 TEST(TowerDivisionRegression, ModuloByInt64Minimum) {
   EXPECT_EQ(zdg::mod(zdg::Int64(-50), zdg::Int64::min()), zdg::Int64(9223372036854775758));
 }
+} // namespace
+
+// --- decimal text: one parser for every type ------------------------------------------------
+
+namespace {
+
+using namespace zdg;
+using test::check_property;
+
+bool fits_int64_(const BigInt& v) {
+  return v >= BigInt(std::numeric_limits<std::int64_t>::min()) &&
+         v <= BigInt(std::numeric_limits<std::int64_t>::max());
+}
+
+namespace decimal {
+
+struct DecimalCase {
+  std::string text;  // what is parsed
+  BigInt value;      // the oracle: Horner's rule on the digits, in BigInt arithmetic
+  std::string canon; // the canonical decimal text of value (no '+', no leading zero, no "-0")
+};
+
+// Random decimal text: an optional sign, up to 6 leading zeros, then digits (short ones near
+// the machine limits as often as huge ones); the oracle reads the digits one by one.
+rc::Gen<DecimalCase> decimal_case() {
+  auto digits = rc::gen::oneOf(
+      rc::gen::container<std::string>(rc::gen::inRange('0', static_cast<char>('9' + 1))),
+      rc::gen::mapcat(rc::gen::inRange(1, 45),
+                      [](int n) {
+                        return rc::gen::container<std::string>(
+                            static_cast<std::size_t>(n),
+                            rc::gen::inRange('0', static_cast<char>('9' + 1)));
+                      }),
+      rc::gen::map(test::edgy_int64(), [](std::int64_t v) {
+        std::string s = std::to_string(v);
+        return s[0] == '-' ? s.substr(1) : s;
+      }));
+  return rc::gen::map(
+      rc::gen::tuple(rc::gen::element<std::string>("", "+", "-"), rc::gen::inRange(0, 7), digits),
+      [](const std::tuple<std::string, int, std::string>& t) {
+        auto [sign, zeros, body] = t;
+        if (body.empty()) body = "0";
+        DecimalCase c;
+        c.text = sign + std::string(static_cast<std::size_t>(zeros), '0') + body;
+        BigInt v = 0;
+        for (char d : body) v = v * 10 + (d - '0');
+        c.value = sign == "-" ? BigInt(-v) : v;
+        std::ostringstream o;
+        o << c.value; // GMP's printing, independent of the parser
+        c.canon = o.str();
+        return c;
+      });
+}
+
+template <class T>
+bool fits(const BigInt& v) {
+  using L = std::numeric_limits<T>;
+  return v >= BigInt(L::min()) && v <= BigInt(L::max());
+}
+
+// parse_integer<T> agrees with the oracle for a machine type T: the value when it fits, else
+// OverflowError.
+template <class T>
+void check_machine(const DecimalCase& c) {
+  if (fits<T>(c.value)) {
+    RC_ASSERT(BigInt(parse_integer<T>(c.text)) == c.value);
+  } else {
+    RC_ASSERT_THROWS_AS(parse_integer<T>(c.text), OverflowError);
+  }
+}
+
+} // namespace decimal
+
+template <class I>
+class DecimalText : public ::testing::Test {};
+TYPED_TEST_SUITE(DecimalText, test::TowerTypes, test::TowerNames);
+
+// Theorem: integer text is decimal for every type: parse_integer<I>(s) is the value of the
+// digits read by Horner's rule in base 10 (leading zeros included, never octal) whenever it
+// fits I, OverflowError exactly when it does not; printing the result gives the canonical
+// text back, and parsing a printed value gives the value (round trip).
+TYPED_TEST(DecimalText, EveryTypeReadsDecimalAndRoundTrips) {
+  using I = TypeParam;
+  check_property([] {
+    const auto c = *decimal::decimal_case();
+    const bool in_range = [&] {
+      if constexpr (std::same_as<I, BigInt>) {
+        return true;
+      } else if constexpr (std::same_as<I, Int64>) {
+        return fits_int64_(c.value);
+      } else {
+        return c.value >= to_bigint(Int128::min()) && c.value <= to_bigint(Int128::max());
+      }
+    }();
+    if (!in_range) {
+      RC_ASSERT_THROWS_AS(parse_integer<I>(c.text), OverflowError);
+      return;
+    }
+    const I v = parse_integer<I>(c.text);
+    RC_ASSERT(to_bigint(v) == c.value);
+    RC_ASSERT(to_string(v) == c.canon);
+    RC_ASSERT(parse_integer<I>(to_string(v)) == v);
+  });
+}
+
+// Theorem: the machine-integer parsers (the command line's int and unsigned options) agree
+// with the BigInt parser on every text: same value when it fits the type, OverflowError
+// otherwise.
+TEST(DecimalText, MachineTypesAgreeWithBigInt) {
+  check_property([] {
+    const auto c = *decimal::decimal_case();
+    RC_ASSERT(parse_integer<BigInt>(c.text) == c.value);
+    decimal::check_machine<int>(c);
+    decimal::check_machine<unsigned>(c);
+    decimal::check_machine<std::int64_t>(c);
+    decimal::check_machine<std::uint64_t>(c);
+  });
+}
+
+// Theorem: text that is not [+-]digits is rejected by every parser with InvalidArgument (a
+// character that is not a digit inserted anywhere in a valid text, or a sign alone).
+TEST(DecimalText, AnythingButSignAndDigitsIsRejectedByEveryType) {
+  check_property([] {
+    auto c = *decimal::decimal_case();
+    const char bad = *rc::gen::element(' ', 'x', 'e', '.', '_', '\n', '\0', 'O', '/', '+', '-');
+    const auto at = *rc::gen::inRange<std::size_t>(0, c.text.size() + 1);
+    std::string s = c.text;
+    // A sign is still valid in front of digits: put it after the first character instead.
+    const bool is_sign = bad == '+' || bad == '-';
+    s.insert(is_sign ? std::max<std::size_t>(at, 1) : at, 1, bad);
+    RC_ASSERT_THROWS_AS(parse_integer<Int64>(s), InvalidArgument);
+    RC_ASSERT_THROWS_AS(parse_integer<Int128>(s), InvalidArgument);
+    RC_ASSERT_THROWS_AS(parse_integer<BigInt>(s), InvalidArgument);
+    RC_ASSERT_THROWS_AS(parse_integer<int>(s), InvalidArgument);
+    RC_ASSERT_THROWS_AS(parse_integer<unsigned>(s), InvalidArgument);
+  });
+}
+
+// The reproducers of issue #18: "010" was read as octal eight by the BigInt parser (Boost's
+// string constructor), "08" and "09" aborted the program.
+TEST(DecimalText, RegressionLeadingZerosAreDecimalNotOctal) {
+  EXPECT_EQ(parse_integer<BigInt>("010"), BigInt(10));
+  EXPECT_EQ(parse_integer<BigInt>("08"), BigInt(8));
+  EXPECT_EQ(parse_integer<BigInt>("09"), BigInt(9));
+  EXPECT_EQ(parse_integer<BigInt>("-0077"), BigInt(-77));
+  EXPECT_EQ(parse_integer<BigInt>("+000"), BigInt(0));
+  EXPECT_EQ(parse_integer<Int64>("010"), Int64(10));
+  EXPECT_EQ(parse_integer<Int128>("-010"), Int128(-10));
+  EXPECT_EQ(parse_integer<int>("010"), 10);
+  EXPECT_EQ(parse_integer<unsigned>("-0"), 0u);
+  EXPECT_EQ(parse_integer<std::uint64_t>("018446744073709551615"),
+            std::numeric_limits<std::uint64_t>::max());
+  EXPECT_THROW(parse_integer<std::uint64_t>("18446744073709551616"), OverflowError);
+  EXPECT_THROW(parse_integer<unsigned>("-1"), OverflowError);
+  EXPECT_THROW(parse_integer<int>("2147483648"), OverflowError);
+  EXPECT_EQ(parse_integer<int>("-2147483648"), std::numeric_limits<int>::min());
+  for (const char* bad : {"0x10", "0X1", "1e3", " 1", "1 ", "", "+", "-", "--1", "+-1", "1_000",
+                          "0b1", "0o7", "\xd9\xa3" /* Arabic-Indic three */}) {
+    EXPECT_THROW(parse_integer<BigInt>(bad), InvalidArgument) << bad;
+    EXPECT_THROW(parse_integer<Int64>(bad), InvalidArgument) << bad;
+    EXPECT_THROW(parse_integer<unsigned>(bad), InvalidArgument) << bad;
+  }
+}
+
+TEST(DecimalText, ErrorsNameAShortExcerptOfTheText) {
+  try {
+    parse_integer<BigInt>(std::string(1000, '7') + "x");
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    const std::string what = e.what();
+    EXPECT_LT(what.size(), 120u);
+    EXPECT_NE(what.find("1001 characters"), std::string::npos) << what;
+  }
+}
+
 } // namespace

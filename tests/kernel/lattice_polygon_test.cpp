@@ -4,6 +4,9 @@
 #include <zdg/kernel/lattice_polygon.hpp>
 
 #include "tests/support/tower.hpp"
+#include <cmath>
+#include <limits>
+#include <numeric>
 #include <zdg/kernel/lattice_hull_2d.hpp>
 
 #include <vector>
@@ -126,6 +129,97 @@ TEST(LatticePolygonExamples, ExactMeasuresEscalate) {
   std::vector<Point2<BigInt>> near = {{0, 0}, {4, 0}, {0, 3}};
   EXPECT_EQ(lattice_polygon_measures_exact(std::span<const Point2<BigInt>>(near)).served,
             IntKind::int64);
+}
+
+// The incremental meter gives the batch measures (which Pick's enumeration above checks), on
+// polygons of every size, including coordinates near +-2^63 where the 128-bit running sums
+// spill into BigInt and vertices given as BigInt.
+TEST(LatticePolygonMeter, AgreesWithTheBatchMeasures) {
+  test::check_property([] {
+    int n = *rc::gen::inRange(0, 14);
+    const bool huge = *rc::gen::arbitrary<bool>();
+    std::vector<Point2<BigInt>> pts;
+    for (int i = 0; i < n; ++i) {
+      pts.push_back({BigInt(*test::edgy_int64()), BigInt(*test::edgy_int64())});
+      if (!huge) pts.back() = {pts.back().x % 100, pts.back().y % 100};
+    }
+    auto v = lattice_hull_2d<BigInt>(std::span<const Point2<BigInt>>(pts));
+    const auto want = lattice_polygon_measures<BigInt>(std::span<const Point2<BigInt>>(v));
+    LatticePolygonMeter meter;
+    const bool as_big = *rc::gen::arbitrary<bool>();
+    for (const auto& p : v) {
+      if (as_big) {
+        meter.add(p.x, p.y);
+      } else {
+        meter.add(p.x.convert_to<std::int64_t>(), p.y.convert_to<std::int64_t>());
+      }
+    }
+    const auto got = meter.finish();
+    RC_ASSERT(meter.count() == v.size());
+    RC_ASSERT(got.area2 == want.area2);
+    RC_ASSERT(got.boundary == want.boundary);
+    RC_ASSERT(got.interior == want.interior);
+  });
+}
+
+TEST(LatticePolygonMeter, RegressionExtremeCrossTermsSpillIntoBigInt) {
+  const std::int64_t m = std::numeric_limits<std::int64_t>::min();
+  const std::int64_t M = std::numeric_limits<std::int64_t>::max();
+  // A triangle whose shoelace terms are about 2^127 each.
+  std::vector<Point2<BigInt>> v{
+      {BigInt(m), BigInt(m)}, {BigInt(M), BigInt(m)}, {BigInt(M), BigInt(M)}};
+  LatticePolygonMeter meter;
+  for (const auto& p : v) meter.add(p.x.convert_to<std::int64_t>(), p.y.convert_to<std::int64_t>());
+  const auto want = lattice_polygon_measures<BigInt>(std::span<const Point2<BigInt>>(v));
+  EXPECT_EQ(meter.finish().area2, want.area2);
+  EXPECT_EQ(meter.finish().boundary, want.boundary);
+}
+
+// Theorem (the bound of the header): a convex lattice polygon of perimeter P has at most
+// convex_lattice_polygon_max_vertices(P) vertices. Oracle: the hulls of random point sets
+// (perimeter computed in long double, rounded up), and the extremal polygons built from the
+// shortest primitive edge vectors sorted by angle (the most vertices for their perimeter).
+TEST(LatticePolygonVertexBound, BoundsEveryConvexLatticePolygon) {
+  test::check_property([] {
+    int n = *rc::gen::inRange(1, 40);
+    const std::int64_t span = *rc::gen::inRange<std::int64_t>(1, 1000);
+    std::vector<Point2<Int64>> pts;
+    for (int i = 0; i < n; ++i) {
+      pts.push_back({Int64(*rc::gen::inRange<std::int64_t>(-span, span + 1)),
+                     Int64(*rc::gen::inRange<std::int64_t>(-span, span + 1))});
+    }
+    auto v = lattice_hull_2d<Int64>(std::span<const Point2<Int64>>(pts));
+    long double perimeter = 0;
+    for (std::size_t i = 0; v.size() > 1 && i < v.size(); ++i) {
+      const auto& a = v[i];
+      const auto& b = v[(i + 1) % v.size()];
+      perimeter += std::hypot(static_cast<long double>((b.x - a.x).value()),
+                              static_cast<long double>((b.y - a.y).value()));
+    }
+    RC_ASSERT(v.size() <=
+              convex_lattice_polygon_max_vertices(static_cast<double>(perimeter) * (1 + 1e-12)));
+  });
+  // Extremal polygons: all primitive vectors of norm <= t, sorted by angle, form a convex
+  // lattice polygon (their sum is 0 by symmetry).
+  for (int t : {1, 2, 3, 5, 8, 13, 30, 60}) {
+    std::size_t count = 0;
+    long double perimeter = 0;
+    for (int x = -t; x <= t; ++x) {
+      for (int y = -t; y <= t; ++y) {
+        if (x * x + y * y == 0 || x * x + y * y > t * t || std::gcd(x, y) != 1) continue;
+        ++count;
+        perimeter += std::sqrt(static_cast<long double>(x * x + y * y));
+      }
+    }
+    EXPECT_LE(count,
+              convex_lattice_polygon_max_vertices(static_cast<double>(perimeter) * (1 + 1e-12)))
+        << "t = " << t;
+    // ... and the bound is not far off for them (within a factor 2.5).
+    EXPECT_LE(convex_lattice_polygon_max_vertices(static_cast<double>(perimeter)),
+              5 * count / 2 + 4);
+  }
+  EXPECT_EQ(convex_lattice_polygon_max_vertices(0), 1u);
+  EXPECT_EQ(convex_lattice_polygon_max_vertices(1e300), UINT64_MAX);
 }
 
 } // namespace

@@ -99,6 +99,81 @@ TEST(NpyIo, MalformedFilesAreClearErrors) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue #18: headers past 65535 bytes wrapped the 2-byte length of version 1.0. Arrays with
+// thousands of axes of extent 1 have long headers: they are written as version 2.0 (4-byte
+// length), padded to 64 bytes, and read back; short headers stay version 1.0.
+TEST(NpyIo, LongHeadersRoundTripAsVersion2) {
+  for (std::size_t dims : {1u, 3u, 21000u, 22000u, 40000u}) {
+    std::vector<std::int64_t> shape(dims, 1);
+    shape[dims / 2] = 2;
+    const NpyArray a = make_npy(DType::I16, shape, {-7, 300});
+    const std::string bytes = npy_file_bytes(a);
+    const bool v2 = bytes[6] == '\x02';
+    const std::size_t prefix = v2 ? 12 : 10;
+    std::size_t hlen = 0;
+    for (std::size_t k = prefix; k-- > 8;) hlen = hlen * 256 + static_cast<unsigned char>(bytes[k]);
+    EXPECT_EQ(v2, dims >= 22000) << dims; // about 3 header bytes an axis
+    EXPECT_EQ(bytes.size(), prefix + hlen + 4) << dims;
+    EXPECT_EQ((prefix + hlen) % 64, 0u);
+    EXPECT_EQ(bytes[prefix + hlen - 1], '\n');
+    const NpyArray b = parse_npy(bytes, "mem");
+    EXPECT_EQ(b.shape, shape);
+    EXPECT_EQ(b.dtype, DType::I16);
+    EXPECT_EQ(b.bytes, a.bytes);
+  }
+  // And through a file.
+  auto dir = test::scratch_dir("npy");
+  std::vector<std::int64_t> shape(30000, 1);
+  write_npy((dir / "long.npy").string(), make_npy(DType::U8, shape, {42}));
+  auto back = read_npy((dir / "long.npy").string());
+  EXPECT_EQ(back.shape, shape);
+  EXPECT_EQ(back.get(0), 42);
+  std::filesystem::remove_all(dir);
+}
+
+// A header may announce any shape: the data size (a product checked against overflow) is
+// compared with the bytes present before anything is allocated, so a 100-byte file claiming
+// 2^40 elements, or a product past 2^64, is an immediate error.
+TEST(NpyIo, HeaderSizesAreCheckedBeforeAllocation) {
+  auto expect_error = [](const std::string& bytes, const std::string& msg) {
+    try {
+      parse_npy(bytes, "mem");
+      ADD_FAILURE() << "accepted";
+    } catch (const IoError& e) {
+      EXPECT_NE(std::string(e.what()).find(msg), std::string::npos) << e.what();
+    }
+  };
+  expect_error(npy_bytes("{'descr': '<i8', 'fortran_order': False, 'shape': (1099511627776,), }",
+                         "12345678"),
+               "truncated data: 8 bytes");
+  expect_error(npy_bytes("{'descr': '<i8', 'fortran_order': False, 'shape': (4294967296, "
+                         "4294967296, 4294967296), }",
+                         ""),
+               "shape too large");
+  expect_error(npy_bytes("{'descr': '<i8', 'fortran_order': False, 'shape': "
+                         "(99999999999999999999,), }",
+                         ""),
+               "too large");
+  // Issue #18: 'shape': } threw std::out_of_range (an abort of the command line).
+  expect_error(npy_bytes("{'descr': '<i8', 'fortran_order': False, 'shape': }", ""),
+               "malformed npy header");
+  expect_error(npy_bytes("{'descr': '<i8', 'fortran_order': False, 'shape': (-1,), }", ""),
+               "malformed npy header");
+  expect_error(
+      npy_bytes("{'descr': '<i8', 'descr': '<i8', 'fortran_order': False, 'shape': (), }", ""),
+      "given twice");
+  expect_error(
+      npy_bytes("{'descr': '<i8', 'fortran_order': False, 'shape': (1,), 'x': 1}", "12345678"),
+      "unknown key");
+  expect_error(std::string("\x93NUMPY\x02\x00\xff\xff\xff\xff{", 13), "truncated npy header");
+  expect_error(std::string("\x93NUMPY\x07\x00\x00\x00", 10), "version 7");
+  // Leading zeros in a shape are decimal.
+  auto a = parse_npy(npy_bytes("{'descr': '|u1', 'fortran_order': False, 'shape': (010,), }",
+                               std::string(10, 'x')),
+                     "mem");
+  EXPECT_EQ(a.shape, (std::vector<std::int64_t>{10}));
+}
+
 } // namespace
 } // namespace zdg
 

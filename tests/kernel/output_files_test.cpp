@@ -100,6 +100,22 @@ TEST(OutputFiles, CommitFailsWhenAnOutputWasNotWritten) {
   EXPECT_FALSE(fs::exists(s.dir / "a"));
 }
 
+// An optional output given up (a plot that could not be drawn) leaves its file as it was,
+// the others are committed, and no staging file remains.
+TEST(OutputFiles, DroppedOutputIsLeftAsItWas) {
+  Scratch s;
+  write(s.dir / "plot.png", "old plot");
+  OutputSet out(Existing::replace);
+  write(out.add(s.dir / "a.csv"), "new a");
+  write(out.add(s.dir / "plot.png"), "half a plot");
+  out.drop(s.dir / "plot.png");
+  EXPECT_THROW(out.drop(s.dir / "never.txt"), zdg::IoError);
+  out.commit();
+  EXPECT_EQ(read(s.dir / "a.csv"), "new a");
+  EXPECT_EQ(read(s.dir / "plot.png"), "old plot");
+  EXPECT_EQ(s.entries(), 2u);
+}
+
 TEST(OutputFiles, WriteFileAtomically) {
   Scratch s;
   zdg::write_file_atomically((s.dir / "f").string(), "one");

@@ -44,5 +44,34 @@ TEST(PgmIo, MalformedFilesNameTheLine) {
   std::filesystem::remove_all(dir);
 }
 
+// Issue #18: a 32-byte PGM claiming width 2^40 asked for 2 TiB, a 21-byte one claiming
+// 20000x20000 took 0.9 GB before saying "truncated". The raster the header announces is
+// checked against the bytes present before the image is allocated (products checked against
+// overflow), in P5 and in P2.
+TEST(PgmIo, HeaderSizesAreCheckedBeforeAllocation) {
+  auto expect_error = [](const std::string& bytes, const std::string& msg) {
+    try {
+      parse_pgm(bytes, "mem");
+      ADD_FAILURE() << "accepted: " << bytes;
+    } catch (const IoError& e) {
+      EXPECT_NE(std::string(e.what()).find(msg), std::string::npos) << e.what();
+    }
+  };
+  const std::string wide = "P5\n1099511627776 1\n255\nabcdefghi";
+  EXPECT_EQ(wide.size(), 32u);
+  expect_error(wide, "truncated pixel data: the header announces 1099511627776x1 pixels");
+  const std::string square = "P5 20000 20000 255\nab";
+  EXPECT_EQ(square.size(), 21u);
+  expect_error(square, "20000x20000");
+  expect_error("P2 20000 20000 255\n1 2 3", "ASCII");
+  expect_error("P5 4294967296 4294967296 65535\n", "truncated pixel data");
+  expect_error("P5 99999999999999999999 1 255\n", "width too large");
+  expect_error("P5 2 1 255\n\x01", "truncated pixel data");
+  // Numbers are decimal whatever their leading zeros.
+  auto img = parse_pgm("P2 02 01 010\n09 010\n", "mem");
+  EXPECT_EQ(img.domain().extent(1), 2);
+  EXPECT_EQ(img.values(), (std::vector<std::uint16_t>{9, 10}));
+}
+
 } // namespace
 } // namespace zdg

@@ -34,8 +34,8 @@ TEST(TransformCommands, DtWritesTheDistanceTransform) {
   auto shape = small_shape();
   write_npy(f.path("in.npy"), make_npy<std::uint8_t>({4, 5}, shape.values()));
   for (const std::string metric : {"l1", "l2", "l3", "linf"}) {
-    auto r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") + " --metric " +
-                           metric + " --torus 1 --threads 2 --json");
+    auto r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") +
+                           " --force --metric " + metric + " --torus 1 --threads 2 --json");
     ASSERT_EQ(r.status, 0) << r.err;
     auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["metric"], metric);
@@ -62,7 +62,8 @@ TEST(TransformCommands, OutputDtypeIsTheNarrowestForTheBound) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["dtype"], "uint32"); // 299^2 > 65535
   EXPECT_EQ(read_npy(f.path("out.npy")).dtype, DType::U32);
   EXPECT_EQ(npy_to_int64(read_npy(f.path("out.npy"))).values()[299], 299 * 299);
-  r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") + " --metric l1 --json");
+  r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") +
+                    " --force --metric l1 --json");
   EXPECT_EQ(nlohmann::json::parse(r.out)["dtype"], "uint16");
 }
 

@@ -1,0 +1,343 @@
+// The command line's contract with a hostile user (issue #18), table-driven: for every class
+// of bad input, `zdg ARGS` exits with status 2, prints exactly one line "zdg: ..." on stderr
+// (naming what was wrong), creates no file, and leaves every existing file (outputs included,
+// read-only or not) as it was. A second table checks that numbers are decimal (the answers of
+// the issue's first reproducer).
+//
+// Adding a row (every engineer who adds a command or an input format should): append a
+// BadInput to bad_inputs() below:
+//   {"what is wrong (the class of input)",
+//    "the arguments; {dir} is the scratch folder of the row",
+//    {{"input.txt", "bytes of an input file the row creates first"}, ...},
+//    {"out.npy", ...},   // outputs that already exist (content "keep", mode 0444): untouched
+//    "a piece of the expected error line"}
+// Files may be in sub-folders ("out/results.csv"); a name ending in '/' makes a folder.
+#include "tests/support/cli.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BadInput {
+  std::string what;                         // the class of bad input
+  std::string args;                         // "{dir}" stands for the scratch folder
+  std::map<std::string, std::string> files; // created before the run ("name/" = a folder)
+  std::vector<std::string> existing; // pre-existing outputs, mode 0444, must stay as they are
+  std::string message;               // must appear in the error line
+};
+
+std::string npy(const std::string& dict, const std::string& data) {
+  std::string h = dict;
+  const std::size_t total = 10 + h.size() + 1;
+  h.append((64 - total % 64) % 64, ' ');
+  h.push_back('\n');
+  std::string out = "\x93NUMPY";
+  out += '\x01';
+  out += '\0';
+  out += static_cast<char>(h.size() & 0xff);
+  out += static_cast<char>(h.size() >> 8);
+  return out + h + data;
+}
+
+// A valid 4x4 uint8 image with background (a transform input).
+std::string small_npy() {
+  return npy("{'descr': '|u1', 'fortran_order': False, 'shape': (4, 4), }",
+             std::string("\0\0\0\0\0\1\1\0\0\1\1\0\0\0\0\0", 16));
+}
+
+std::vector<BadInput> bad_inputs() {
+  const std::string converge = "converge --shape ball:5 --estimator gauss-area --h 1:0.5:3 ";
+  return {
+      // --- 1. numbers: decimal only, one parser -------------------------------------------
+      {"hexadecimal fraction", "cf 0x10/3", {}, {}, "'0x10/3'"},
+      {"exponent in an integer", "floor-sum 1e3 3 1 0", {}, {}, "N: '1e3' is not an integer"},
+      {"zero denominator", "cf 010/000", {}, {}, "zero denominator"},
+      {"hexadecimal dss argument", "dss subsegment 3 7 0x1 0 3", {}, {}, "MU = '0x1'"},
+      {"hexadecimal hull radius", "hull disc 0 0 0x5", {}, {}, "R: '0x5'"},
+      {"octal-looking option out of its set",
+       "dss cover {dir}/p.txt --connectivity 010",
+       {{"p.txt", "0 0\n1 0\n"}},
+       {},
+       "--connectivity: 10 not in {4,8}"},
+      {"hexadecimal integer option",
+       "transform dt {dir}/in.npy -o {dir}/out.npy --threads 0x10",
+       {{"in.npy", small_npy()}},
+       {},
+       "--threads: not a decimal integer: '0x10'"},
+      {"integer option beyond 64 bits",
+       "transform dt {dir}/in.npy -o {dir}/out.npy --threads 99999999999999999999",
+       {{"in.npy", small_npy()}},
+       {},
+       "out of range"},
+      {"point file with a hexadecimal coordinate",
+       "hull points {dir}/p.txt",
+       {{"p.txt", "0 0\n0x10 1\n"}},
+       {},
+       "p.txt:2: '0x10' is not an integer"},
+      {"half-plane file with an exponent",
+       "hull halfplanes {dir}/h.txt",
+       {{"h.txt", "1 0 3\n1e2 0 1\n"}},
+       {},
+       "h.txt:2:"},
+      {"Freeman chain with a bad code",
+       "dss cover {dir}/c.txt",
+       {{"c.txt", "0 0 0105\n"}},
+       {},
+       "c.txt:1: Freeman chain: invalid code '5'"},
+      {"Freeman chain start beyond int64",
+       "dss cover {dir}/c.txt",
+       {{"c.txt", "99999999999999999999 0 01\n"}},
+       {},
+       "is not a 64-bit integer"},
+      // --- 2. exceptions of the environment and of malformed files: one line, exit 2 ----------
+      {"npy header 'shape': } (std::out_of_range before)",
+       "transform dt {dir}/bad.npy -o {dir}/out.npy",
+       {{"bad.npy", npy("{'descr': '<i8', 'fortran_order': False, 'shape': }", "")}},
+       {},
+       "malformed npy header"},
+      {"output below a file (filesystem_error before)",
+       "transform dt {dir}/in.npy -o {dir}/file.txt/sub.npy",
+       {{"in.npy", small_npy()}, {"file.txt", "a file"}},
+       {},
+       "is not a folder"},
+      {"output in a missing folder",
+       "transform dt {dir}/in.npy -o {dir}/missing/out.npy",
+       {{"in.npy", small_npy()}},
+       {},
+       "does not exist"},
+      {"output is a folder",
+       "transform dt {dir}/in.npy -o {dir}/out.npy",
+       {{"in.npy", small_npy()}, {"out.npy/", ""}},
+       {},
+       "is a folder"},
+      {"thread count past the limit (thread creation failure before)",
+       "transform dt {dir}/in.npy -o {dir}/out.npy --threads 100000",
+       {{"in.npy", small_npy()}},
+       {},
+       "--threads"},
+      {"input is a folder", "hull points {dir}/sub", {{"sub/", ""}}, {}, "is a folder"},
+      {"input is a device", "hull points /dev/zero", {}, {}, "not a regular file"},
+      {"missing input", "dss recognize {dir}/missing.txt", {}, {}, "no such file"},
+      // --- 3. converge's outputs are all or nothing ---------------------------------------------
+      {"a folder named summary.json in the output folder",
+       converge + "-o {dir}/out --force --no-plot",
+       {{"out/summary.json/", ""}},
+       {"out/results.csv"},
+       "summary.json: is a folder"},
+      {"existing results without --force",
+       converge + "-o {dir}/out --no-plot",
+       {},
+       {"out/results.csv"},
+       "results.csv: exists (use --force to replace it)"},
+      // --- 4. an existing output is refused unless --force --------------------------------------
+      {"existing transform output",
+       "transform dt {dir}/in.npy -o {dir}/out.npy",
+       {{"in.npy", small_npy()}},
+       {"out.npy"},
+       "out.npy: exists (use --force"},
+      {"existing hull output",
+       "hull disc 0 0 5 -o {dir}/hull.txt",
+       {},
+       {"hull.txt"},
+       "hull.txt: exists (use --force"},
+      {"existing hull points output",
+       "hull points {dir}/p.txt --json -o {dir}/hull.json",
+       {{"p.txt", "0 0\n1 0\n0 1\n"}},
+       {"hull.json"},
+       "exists"},
+      // --- 5. sizes announced by headers are checked before allocation ------------------------
+      {"PGM claiming width 2^40 in 32 bytes",
+       "transform dt {dir}/w.pgm -o {dir}/out.npy",
+       {{"w.pgm", "P5\n1099511627776 1\n255\nabcdefghi"}},
+       {},
+       "truncated pixel data"},
+      {"PGM claiming 20000x20000 in 21 bytes",
+       "transform dt {dir}/s.pgm -o {dir}/out.npy",
+       {{"s.pgm", "P5 20000 20000 255\nab"}},
+       {},
+       "20000x20000"},
+      {"npy claiming 2^40 elements",
+       "transform dt {dir}/big.npy -o {dir}/out.npy",
+       {{"big.npy",
+         npy("{'descr': '<i8', 'fortran_order': False, 'shape': (1099511627776,), }", "12345678")}},
+       {},
+       "truncated data"},
+      {"npy shape product past 2^64",
+       "transform dt {dir}/big.npy -o {dir}/out.npy",
+       {{"big.npy", npy("{'descr': '|u1', 'fortran_order': False, 'shape': (4294967296, "
+                        "4294967296, 4294967296), }",
+                        "")}},
+       {},
+       "shape too large"},
+      // --- 7. bounded work from small inputs ----------------------------------------------------
+      {"l_p with a huge p",
+       "transform dt {dir}/in.npy -o {dir}/out.npy --metric l1000000",
+       {{"in.npy", small_npy()}},
+       {},
+       "l1000000 is beyond the supported l1 .. l1000"},
+      {"l_p whose exact powers pass 4096 bits",
+       "transform dt {dir}/in.npy -o {dir}/out.npy --metric l1000",
+       {{"in.npy", npy("{'descr': '|u1', 'fortran_order': False, 'shape': (2, 64), }",
+                       std::string(127, '\1') + std::string(1, '\0'))}},
+       {},
+       "zdg supports l_p while L^p < 2^4096 (here p <= 681"},
+      {"disc hull with 10^12 radius",
+       "hull disc 0 0 1000000000000",
+       {},
+       {},
+       "could have up to 653509645 vertices (about 3.45e+08 expected"},
+      {"disc hull with radius 2^63 - 1",
+       "hull disc 0 0 9223372036854775807 --json",
+       {},
+       {},
+       "more than --max-vertices 100000000"},
+      {"disc hull over a lowered --max-vertices",
+       "hull disc 0 0 1000 --max-vertices 10",
+       {},
+       {},
+       "more than --max-vertices 10 "},
+      {"exponent in a hull argument", "hull ellipse 0 0 1e12 1", {}, {}, "'1e12'"},
+      {"ellipse hull with huge axes",
+       "hull ellipse 0 0 1000000000000 1000000000000",
+       {},
+       {},
+       "more than --max-vertices"},
+  };
+}
+
+// Every file under dir with its content and mode: what a run must not change.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> out;
+  for (const auto& e : fs::recursive_directory_iterator(dir)) {
+    const std::string rel = fs::relative(e.path(), dir).string();
+    if (e.is_directory()) {
+      out[rel + "/"] = "";
+      continue;
+    }
+    struct stat st {};
+    ::stat(e.path().c_str(), &st);
+    out[rel] = std::to_string(st.st_mode) + ":" + zdg::test::read_file(e.path());
+  }
+  return out;
+}
+
+TEST(CliContract, BadInputGivesOneLineExitTwoAndTouchesNothing) {
+  for (const auto& c : bad_inputs()) {
+    SCOPED_TRACE(c.what + ": zdg " + c.args);
+    const fs::path dir = zdg::test::scratch_dir("contract");
+    for (const auto& [name, bytes] : c.files) {
+      if (name.back() == '/') {
+        fs::create_directories(dir / name);
+        continue;
+      }
+      fs::create_directories((dir / name).parent_path());
+      std::ofstream(dir / name, std::ios::binary) << bytes;
+    }
+    for (const auto& name : c.existing) {
+      fs::create_directories((dir / name).parent_path());
+      std::ofstream(dir / name, std::ios::binary) << "keep";
+      fs::permissions(dir / name,
+                      fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    }
+    const auto before = snapshot(dir);
+    std::string args = c.args;
+    for (std::size_t at; (at = args.find("{dir}")) != std::string::npos;) {
+      args.replace(at, 5, dir.string());
+    }
+    const auto run = zdg::test::run_zdg(args);
+    EXPECT_EQ(run.status, 2) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_FALSE(run.err.empty() || run.err.back() != '\n') << run.err;
+    EXPECT_EQ(run.err.rfind("zdg: ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos)
+        << "expected '" << c.message << "' in: " << run.err;
+    EXPECT_EQ(snapshot(dir), before) << "files created or changed";
+    fs::remove_all(dir);
+  }
+}
+
+// Output that cannot be written (a full disk) is an error too, not a silent exit 0.
+TEST(CliContract, StdoutThatCannotBeWrittenIsAnError) {
+  const fs::path dir = zdg::test::scratch_dir("contract");
+  const std::string cmd = std::string("'") + ZDG_CLI_PATH + "' cf 415/93 --json >/dev/full 2>'" +
+                          (dir / "err").string() + "'";
+  const int raw = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 2);
+  const std::string err = zdg::test::read_file(dir / "err");
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_NE(err.find("zdg: cannot write the output to stdout"), std::string::npos) << err;
+  fs::remove_all(dir);
+}
+
+// Issue #18, reproducer 2: an unwritable output folder (meaningless for root, who may write
+// anywhere: skipped then).
+TEST(CliContract, UnwritableOutputFolderIsOneLine) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root writes into read-only folders";
+  const fs::path dir = zdg::test::scratch_dir("contract");
+  fs::create_directories(dir / "ro");
+  fs::permissions(dir / "ro", fs::perms::owner_read | fs::perms::owner_exec);
+  const auto r = zdg::test::run_zdg("hull disc 0 0 5 -o " + (dir / "ro" / "h.txt").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("is not writable"), std::string::npos) << r.err;
+  fs::permissions(dir / "ro", fs::perms::owner_all);
+  fs::remove_all(dir);
+}
+
+// The answers of issue #18's first reproducer: integer and rational text is decimal whatever
+// its leading zeros, on every path into zdg.
+struct DecimalAnswer {
+  std::string args, same_as; // `zdg args` prints what `zdg same_as` prints
+};
+
+TEST(CliContract, LeadingZerosAreDecimalOnEveryPath) {
+  const fs::path dir = zdg::test::scratch_dir("contract");
+  std::ofstream(dir / "p010.txt") << "010 0\n0 010\n0 0\n";
+  std::ofstream(dir / "p10.txt") << "10 0\n0 10\n0 0\n";
+  std::ofstream(dir / "h010.txt") << "01 0 010\n-1 0 0\n0 1 010/01\n0 -1 0.0\n";
+  std::ofstream(dir / "h10.txt") << "1 0 10\n-1 0 0\n0 1 10\n0 -1 0\n";
+  std::ofstream(dir / "c010.txt") << "010 010 0011\n";
+  std::ofstream(dir / "c10.txt") << "10 10 0011\n";
+  const std::string d = dir.string();
+  const DecimalAnswer cases[] = {
+      {"cf 010/3 --json", "cf 10/3 --json"},
+      {"cf 09/08 --json", "cf 9/8 --json"},
+      {"floor-sum 010 03 01 00 --json", "floor-sum 10 3 1 0 --json"},
+      {"christoffel 010/03 --json", "christoffel 10/3 --json"},
+      {"dss subsegment 03 07 00 00 010 --json", "dss subsegment 3 7 0 0 10 --json"},
+      {"hull disc 0 0 010 --json", "hull disc 0 0 10 --json"},
+      {"hull disc 0.50 00 010.0 --json", "hull disc 1/2 0 10 --json"},
+      {"hull points " + d + "/p010.txt --json", "hull points " + d + "/p10.txt --json"},
+      {"hull halfplanes " + d + "/h010.txt --json", "hull halfplanes " + d + "/h10.txt --json"},
+      {"dss recognize " + d + "/c010.txt --json", "dss recognize " + d + "/c10.txt --json"},
+      {"hull disc 0 0 1000 --max-vertices 0100", "hull disc 0 0 1000 --max-vertices 100"},
+  };
+  for (const auto& c : cases) {
+    const auto a = zdg::test::run_zdg(c.args), b = zdg::test::run_zdg(c.same_as);
+    EXPECT_EQ(a.status, b.status) << c.args << ": " << a.err;
+    EXPECT_EQ(a.out, b.out) << c.args;
+    EXPECT_EQ(a.err, b.err) << c.args;
+  }
+  const auto cf = zdg::test::run_zdg("cf 010/3 --json");
+  ASSERT_EQ(cf.status, 0) << cf.err;
+  const auto j = nlohmann::json::parse(cf.out);
+  EXPECT_EQ(j["p"], "10"); // was "8" (octal), issue #18
+  EXPECT_EQ(j["q"], "3");
+  fs::remove_all(dir);
+}
+
+} // namespace
