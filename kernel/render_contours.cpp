@@ -28,6 +28,11 @@ RgbImage render_contours(const Image<std::uint8_t>& image,
   if (image.dim() != 2)
     throw InvalidArgument("render: contours are drawn over a 2D image, not a " +
                           std::to_string(image.dim()) + "-D one");
+  for (int k = 0; k < 2; ++k) {
+    if (image.domain().extent(k) > (std::int64_t{1} << 24))
+      throw InvalidArgument("render: image extent " + std::to_string(image.domain().extent(k)) +
+                            " beyond 2^24");
+  }
   if (opt.width < 200 || opt.height < 150 || opt.width > 8192 || opt.height > 8192)
     throw InvalidArgument("render: picture size " + std::to_string(opt.width) + "x" +
                           std::to_string(opt.height) + " (200x150 .. 8192x8192)");
@@ -38,6 +43,16 @@ RgbImage render_contours(const Image<std::uint8_t>& image,
       throw InvalidArgument("render: a contour has " + std::to_string(c.values.size()) +
                             " values for " + std::to_string(c.points.size()) + " points");
     have_values = have_values || !c.values.empty();
+    const auto& d = image.domain();
+    for (const auto& p : c.points) {
+      // Contours of the image lie within one pixel of its box (NaN fails the test too).
+      if (!(p.x >= static_cast<double>(d.lower(1)) - 1 &&
+            p.x <= static_cast<double>(d.upper(1)) + 1 &&
+            p.y >= static_cast<double>(d.lower(0)) - 1 &&
+            p.y <= static_cast<double>(d.upper(0)) + 1))
+        throw InvalidArgument("render: contour point (" + short_number(p.x) + ", " +
+                              short_number(p.y) + ") is outside the image");
+    }
     all.insert(all.end(), c.values.begin(), c.values.end());
   }
   const bool bar = have_values;

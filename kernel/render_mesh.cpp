@@ -53,6 +53,11 @@ RgbImage render_mesh(const PolygonMesh& mesh, const std::string& field,
                           std::to_string(opt.height) + " (200x150 .. 8192x8192)");
   if (mesh.face_count() >= std::numeric_limits<std::int32_t>::max())
     throw InvalidArgument("render: more than 2^31 - 2 faces");
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const auto& p = mesh.vertices[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw InvalidArgument("render: vertex " + std::to_string(i) + " is not finite");
+  }
   const std::vector<double>* values = nullptr;
   for (const auto& [name, v] : mesh.face_scalars) {
     if (name == field) values = &v;
@@ -158,10 +163,17 @@ RgbImage render_mesh(const PolygonMesh& mesh, const std::string& field,
         const float ax = px[i0], ay = py[i0], bx = px[i1], by = py[i1], cx = px[i2], cy = py[i2];
         const float area = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
         if (area == 0.0f) continue;
-        const int xa = std::max(0, static_cast<int>(std::floor(std::min({ax, bx, cx}))));
-        const int xb = std::min(SW - 1, static_cast<int>(std::ceil(std::max({ax, bx, cx}))));
-        const int ya = std::max(y0, static_cast<int>(std::floor(std::min({ay, by, cy}))));
-        const int yb = std::min(y1 - 1, static_cast<int>(std::ceil(std::max({ay, by, cy}))));
+        const float x_lo = std::min({ax, bx, cx}), x_hi = std::max({ax, bx, cx});
+        const float y_lo = std::min({ay, by, cy}), y_hi = std::max({ay, by, cy});
+        // Off the picture (or not finite: every comparison with NaN is false): skipped, so
+        // that the casts below only see values in range.
+        if (!(x_hi >= 0.0f && x_lo <= static_cast<float>(SW) && y_hi >= static_cast<float>(y0) &&
+              y_lo <= static_cast<float>(y1)))
+          continue;
+        const int xa = static_cast<int>(std::max(0.0f, std::floor(x_lo)));
+        const int xb = static_cast<int>(std::min(static_cast<float>(SW - 1), std::ceil(x_hi)));
+        const int ya = static_cast<int>(std::max(static_cast<float>(y0), std::floor(y_lo)));
+        const int yb = static_cast<int>(std::min(static_cast<float>(y1 - 1), std::ceil(y_hi)));
         const float inv = 1.0f / area;
         const float za = pz[i0], zb = pz[i1], zc = pz[i2];
         for (int y = ya; y <= yb; ++y) {

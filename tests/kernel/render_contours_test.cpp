@@ -71,6 +71,11 @@ TEST(RenderContours, DiscWithSignedValues) {
   ContourPolyline bad = c;
   bad.values.pop_back();
   EXPECT_THROW(render_contours(img, {bad}, "x"), InvalidArgument);
+  ContourPolyline far = c;
+  far.points[3].x = 1e30;
+  EXPECT_THROW(render_contours(img, {far}, "x"), InvalidArgument);
+  far.points[3].x = std::nan("");
+  EXPECT_THROW(render_contours(img, {far}, "x"), InvalidArgument);
   EXPECT_THROW(render_contours(Image<std::uint8_t>(Domain({2, 2, 2})), {}, ""), InvalidArgument);
   // No values: black contours, no colour bar.
   ContourPolyline plain = c;

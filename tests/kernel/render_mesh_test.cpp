@@ -117,6 +117,9 @@ TEST(RenderMesh, SignedFieldsDivergeAndErrors) {
   const Rgb g = grey.at(opt.width / 2, (first + last) / 2);
   EXPECT_LE(std::abs(int(g.r) - int(g.g)), 3);
   EXPECT_THROW(render_mesh(m, "ii-mean", opt), InvalidArgument);
+  PolygonMesh nan_mesh = m;
+  nan_mesh.vertices[0].x = std::nan("");
+  EXPECT_THROW(render_mesh(nan_mesh, "", opt), InvalidArgument);
   opt.width = 10;
   EXPECT_THROW(render_mesh(m, "", opt), InvalidArgument);
 }
