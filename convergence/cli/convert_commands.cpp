@@ -37,11 +37,13 @@ void run_convert(const ConvertArgs& a) {
   OutputSet out(a.force ? Existing::replace : Existing::refuse);
   const fs::path staging = out.add(a.output); // checked before the input is read
   const bool mask = has_selection(a.in);
+  // PGM holds 2D images: a 3D volume of one slice is read as the 2D image it is.
+  const int dim = out_format == VolumeFormat::pgm ? 2 : 0;
   ScalarVolume v;
   nlohmann::json input;
   double read_s = 0, select_s = 0;
   if (mask) {
-    LoadedObject obj = load_object(a.in, 0, a.threads, !a.quiet);
+    LoadedObject obj = load_object(a.in, dim, a.threads, !a.quiet);
     v = make_scalar_volume(obj.mask);
     v.spacing = obj.volume.spacing;
     v.origin = obj.volume.origin;
@@ -49,7 +51,7 @@ void run_convert(const ConvertArgs& a) {
     read_s = obj.read_seconds;
     select_s = obj.select_seconds;
   } else {
-    LoadedVolume lv = load_volume(a.in, 0, !a.quiet);
+    LoadedVolume lv = load_volume(a.in, dim, !a.quiet);
     v = std::move(lv.volume);
     input = std::move(lv.json);
     read_s = lv.read_seconds;

@@ -115,27 +115,32 @@ TEST(NiftiIo, BoolIsStoredAsUint8AndNamesAreChecked) {
 TEST(NiftiIo, NibabelReadsWhatZdgWrites) {
   if (!test::python_has("nibabel, numpy")) GTEST_SKIP() << "python3-nibabel is not installed";
   const auto dir = test::scratch_dir("nifti");
+  // One Python run reads every file (importing nibabel costs about a second).
   const std::string code = R"(
 import sys, json, numpy as np, nibabel as nib
-img = nib.load(sys.argv[1])
-raw = np.asarray(img.dataobj.get_unscaled())
-slope, inter = img.dataobj.slope, img.dataobj.inter  # nibabel moves scl_* there on load
-print(json.dumps({"dtype": str(img.header.get_data_dtype().newbyteorder('<')),
-  "shape": list(raw.shape), "pixdim": [float(x) for x in img.header['pixdim'][1:raw.ndim + 1]],
-  "slope": float(slope), "inter": float(inter),
-  "offset": [float(x) for x in img.affine[:3, 3]],
-  "bytes": np.ascontiguousarray(raw.transpose()).astype(raw.dtype.newbyteorder('<')).tobytes().hex()}))
+out = []
+for path in sys.argv[1:]:
+    img = nib.load(path)
+    raw = np.asarray(img.dataobj.get_unscaled())
+    slope, inter = img.dataobj.slope, img.dataobj.inter  # nibabel moves scl_* there on load
+    out.append({"dtype": str(img.header.get_data_dtype().newbyteorder('<')),
+      "shape": list(raw.shape), "pixdim": [float(x) for x in img.header['pixdim'][1:raw.ndim + 1]],
+      "slope": float(slope), "inter": float(inter),
+      "offset": [float(x) for x in img.affine[:3, 3]],
+      "bytes": np.ascontiguousarray(raw.transpose()).astype(raw.dtype.newbyteorder('<')).tobytes().hex()})
+print(json.dumps(out))
 )";
   const char* names[] = {"uint8", "int8",   "uint16", "int16",   "uint32",
                          "int32", "uint64", "int64",  "float32", "float64"};
+  std::vector<ScalarVolume> written;
+  std::vector<std::string> paths, expected_dtype;
   int i = 0;
   for (std::size_t ti = 0; ti < std::size(kNiftiTypes); ++ti) {
-    const DType t = kNiftiTypes[ti];
     for (bool gz : {false, true}) {
-      SCOPED_TRACE(dtype_name(t) + (gz ? ".nii.gz" : ".nii"));
-      ScalarVolume v = sample_volume(
-          t, i % 2 == 0 ? std::vector<std::int64_t>{3, 4, 5} : std::vector<std::int64_t>{4, 5},
-          static_cast<unsigned>(i));
+      ScalarVolume v = sample_volume(kNiftiTypes[ti],
+                                     i % 2 == 0 ? std::vector<std::int64_t>{3, 4, 5}
+                                                : std::vector<std::int64_t>{4, 5},
+                                     static_cast<unsigned>(i));
       v.spacing.back() = 0.5;
       v.spacing.front() = 2.25;
       v.origin.back() = -10.5;
@@ -143,28 +148,36 @@ print(json.dumps({"dtype": str(img.header.get_data_dtype().newbyteorder('<')),
         v.slope = 2.5;
         v.inter = -1.0;
       }
-      const std::string path = (dir / (std::to_string(i) + (gz ? ".nii.gz" : ".nii"))).string();
-      write_nifti(path, v);
-      const auto r = test::run_python(code, {path});
-      ASSERT_EQ(r.status, 0) << r.err;
-      const auto j = nlohmann::json::parse(r.out);
-      EXPECT_EQ(j["dtype"], names[ti]);
-      std::vector<std::int64_t> shape(v.array.shape.rbegin(), v.array.shape.rend());
-      EXPECT_EQ(j["shape"].get<std::vector<std::int64_t>>(), shape);
-      std::vector<double> pixdim(v.spacing.rbegin(), v.spacing.rend());
-      EXPECT_EQ(j["pixdim"].get<std::vector<double>>(), pixdim);
-      EXPECT_EQ(j["offset"][0].get<double>(), -10.5);
-      EXPECT_EQ(j["slope"].get<double>(), v.slope);
-      EXPECT_EQ(j["inter"].get<double>(), v.inter);
-      std::string hex;
-      for (unsigned char c : v.array.bytes) {
-        const char* digits = "0123456789abcdef";
-        hex.push_back(digits[c >> 4]);
-        hex.push_back(digits[c & 15]);
-      }
-      EXPECT_EQ(j["bytes"], hex);
+      paths.push_back((dir / (std::to_string(i) + (gz ? ".nii.gz" : ".nii"))).string());
+      write_nifti(paths.back(), v);
+      written.push_back(v);
+      expected_dtype.push_back(names[ti]);
       ++i;
     }
+  }
+  const auto r = test::run_python(code, paths);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto all = nlohmann::json::parse(r.out);
+  ASSERT_EQ(all.size(), written.size());
+  for (std::size_t k = 0; k < written.size(); ++k) {
+    SCOPED_TRACE(paths[k]);
+    const auto& v = written[k];
+    const auto& j = all[k];
+    EXPECT_EQ(j["dtype"], expected_dtype[k]);
+    std::vector<std::int64_t> shape(v.array.shape.rbegin(), v.array.shape.rend());
+    EXPECT_EQ(j["shape"].get<std::vector<std::int64_t>>(), shape);
+    std::vector<double> pixdim(v.spacing.rbegin(), v.spacing.rend());
+    EXPECT_EQ(j["pixdim"].get<std::vector<double>>(), pixdim);
+    EXPECT_EQ(j["offset"][0].get<double>(), -10.5);
+    EXPECT_EQ(j["slope"].get<double>(), v.slope);
+    EXPECT_EQ(j["inter"].get<double>(), v.inter);
+    std::string hex;
+    for (unsigned char c : v.array.bytes) {
+      const char* digits = "0123456789abcdef";
+      hex.push_back(digits[c >> 4]);
+      hex.push_back(digits[c & 15]);
+    }
+    EXPECT_EQ(j["bytes"], hex);
   }
   fs::remove_all(dir);
 }
