@@ -78,26 +78,36 @@ ImageSurfaces image_surfaces(const Image<std::uint8_t>& image, const ImageSurfel
   std::vector<std::vector<std::pair<std::uint64_t, std::uint64_t>>> cross(
       static_cast<std::size_t>(chunks));
   std::vector<std::int64_t> pinches(static_cast<std::size_t>(chunks), 0);
+  std::vector<std::int64_t> linel_sightings(static_cast<std::size_t>(chunks), 0);
   parallel_for(chunks, static_cast<unsigned>(chunks), [&](std::int64_t t) {
     const std::int64_t q = n / chunks, r = n % chunks;
     const std::int64_t b = q * t + r * t / chunks, e = q * (t + 1) + r * (t + 1) / chunks;
     auto& my_cross = cross[std::size_t(t)];
-    std::int64_t my_pinches = 0;
+    std::int64_t my_pinches = 0, my_linels = 0;
     for (std::int64_t i = b; i < e; ++i) {
       const std::uint64_t code = surfels.codes[std::size_t(i)];
       int own = 0;
+      SurfelCorner k[4];
+      std::uint8_t config[4];
+      const PointelStar* st[4];
       for (int c = 0; c < 4; ++c) {
-        const SurfelCorner k = surfel_corner(g, code, c);
-        const std::uint8_t config = pointel_configuration(g, data, k.q[0], k.q[1], k.q[2]);
-        const PointelStar& st = pointel_star(config, convention.linels);
-        const int f = k.face;
-        if (st.owner[std::size_t(f)] == f) {
+        k[c] = surfel_corner(g, code, c);
+        config[c] = pointel_configuration(g, data, k[c].q[0], k[c].q[1], k[c].q[2]);
+        st[c] = &pointel_star(config[c], convention.linels);
+      }
+      for (int c = 0; c < 4; ++c) {
+        const int f = k[c].face;
+        if (st[c]->owner[std::size_t(f)] == f) {
           ++own;
-          if (st.cycle[std::size_t(f)] == 0 && convention.pinched(config)) ++my_pinches;
+          if (st[c]->cycle[std::size_t(f)] == 0 && convention.pinched(config[c])) ++my_pinches;
         }
-        const int nf = st.next[std::size_t(f)];
+        // The edge from corner c - 1 to corner c: joined at both of its ends.
+        const int p = (c + 3) % 4;
+        if (st[c]->entering_joined[std::size_t(f)] && st[p]->leaving_joined[std::size_t(k[p].face)])
+          ++my_linels;
+        const int nf = st[c]->next[std::size_t(f)];
         if (nf < 0) throw Error("image_surfaces: a surfel corner is not a boundary face");
-        const std::int64_t j = surfels.find(local_face_code(g, k.q, nf, config));
+        const std::int64_t j = surfels.find(local_face_code(g, k[c].q, nf, config[c]));
         if (j < 0) throw Error("image_surfaces: a neighbour surfel is missing from the list");
         if (j >= b && j < e) {
           unite(parent, std::uint64_t(i), std::uint64_t(j));
@@ -108,10 +118,14 @@ ImageSurfaces image_surfaces(const Image<std::uint8_t>& image, const ImageSurfel
       owned[std::size_t(i)] = static_cast<std::uint8_t>(own);
     }
     pinches[std::size_t(t)] = my_pinches;
+    linel_sightings[std::size_t(t)] = my_linels;
   });
   for (const auto& list : cross)
     for (const auto& [i, j] : list) unite(parent, i, j);
   for (auto p : pinches) out.pinched_pointels += p;
+  // Each pinched linel is an edge of its four surfels.
+  for (auto p : linel_sightings) out.pinched_linels += p;
+  out.pinched_linels /= 4;
 
   // Labels in place: parents precede children, so one ascending pass relabels.
   std::uint64_t next = 0;

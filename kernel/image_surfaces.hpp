@@ -23,6 +23,9 @@
 //     sum_S chi(S) = 2 (b0 - b1 + b2) + 2 (pinched pointels),
 // and object_euler() below is exact for the four pairs.
 //
+// Pinched linels (kernel/pointel_cycles.hpp) are counted too: the surface is a 2-manifold
+// there (its edges are the adjacent surfel pairs), but its quad mesh repeats an edge.
+//
 // Enclosed volume: the signed number of voxels enclosed by the oriented surface (divergence
 // theorem with the field (x, 0, 0): the sum over its x-surfels of +-x of their plane),
 // positive for a surface bounding a component from outside, negative for a cavity's.
@@ -75,6 +78,9 @@ struct ImageSurfaces {
   std::vector<std::uint64_t> surface_of; ///< per surfel (sorted code order): its surface
   std::vector<BoundarySurface> surfaces; ///< in the order of their first surfel
   std::int64_t pinched_pointels = 0;
+  /// Linels where the two passages of a surface meet the same vertices at both ends
+  /// (kernel/pointel_cycles.hpp): edges that a quad mesh sees in four faces.
+  std::int64_t pinched_linels = 0;
 
   /// Sum of the Euler characteristics of the surfaces.
   std::int64_t euler_sum() const;

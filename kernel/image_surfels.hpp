@@ -72,6 +72,23 @@ struct VoxelGrid {
   }
 };
 
+/// Where a voxel grid sits in physical space: the centre of voxel (i, j, k) (indices from 0)
+/// is origin + (sx i, sy j, sz k). The default puts the voxels at their points of Z^3
+/// (lattice(grid)); a file's voxel size and position give another.
+struct VoxelPlacement {
+  Point3<double> spacing{1, 1, 1};
+  Point3<double> origin{0, 0, 0};
+
+  static VoxelPlacement lattice(const VoxelGrid& g) {
+    return {{1, 1, 1}, {double(g.lower.x), double(g.lower.y), double(g.lower.z)}};
+  }
+  /// The physical point of the grid point (i, j, k) (fractional indices allowed: the pointel
+  /// of index q is at q - 1/2).
+  Point3<double> at(double i, double j, double k) const {
+    return {origin.x + spacing.x * i, origin.y + spacing.y * j, origin.z + spacing.z * k};
+  }
+};
+
 /// All boundary surfels of a binary image, sorted by code, with the row index.
 struct ImageSurfels {
   VoxelGrid grid;

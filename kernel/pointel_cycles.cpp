@@ -68,6 +68,28 @@ PointelStar build_star(std::uint8_t config, SurfelAdjacency adjacency) {
       if (st.cycle[std::size_t(h)] == st.cycles) st.length[std::size_t(h)] = std::int8_t(n);
     ++st.cycles;
   }
+  // Joined linels: four boundary faces around the linel, all on one cycle.
+  for (int f = 0; f < 12; ++f) {
+    if (!((st.faces >> f) & 1)) continue;
+    const Surfel s = local_surfel(f, config);
+    const auto corners = surfel_pointels(s);
+    const auto at = std::find(corners.begin(), corners.end(), KPoint{0, 0, 0}) - corners.begin();
+    for (int side = 0; side < 2; ++side) {
+      const KPoint other = corners[std::size_t((at + (side == 0 ? 3 : 1)) % 4)];
+      const KPoint linel{other.x / 2, other.y / 2, other.z / 2};
+      int around = 0;
+      bool one_cycle = true;
+      for (int g = 0; g < 12; ++g) {
+        if (!((st.faces >> g) & 1)) continue;
+        const auto ls = surfel_linels(local_surfel(g, config));
+        if (std::find(ls.begin(), ls.end(), linel) == ls.end()) continue;
+        ++around;
+        one_cycle = one_cycle && st.cycle[std::size_t(g)] == st.cycle[std::size_t(f)];
+      }
+      (side == 0 ? st.entering_joined : st.leaving_joined)[std::size_t(f)] =
+          around == 4 && one_cycle;
+    }
+  }
   return st;
 }
 

@@ -21,6 +21,14 @@
 // cycle), oriented outwards (marching cubes, kernel/marching_cubes.hpp). Cycles are numbered
 // by increasing smallest face; the smallest face of a cycle is its owner.
 //
+// Pinched linels. A linel whose four voxels are two diagonal pairs has four boundary faces,
+// paired in two by the adjacency: two passages of the surface along the linel. When at BOTH
+// ends of the linel the two passages lie on the same cycle, the two passages join the same
+// two vertices: a quad mesh whose edges are vertex pairs sees that edge in four faces, though
+// the surface itself (edges = adjacent surfel pairs) is a 2-manifold. The surface is a tube
+// squeezed onto the linel (a neck of the object under interior adjacency, of the background
+// under exterior); no vertex copies can open it. entering_joined / leaving_joined find them.
+//
 // Pinches. Which cycles one sheet would need to join, and cannot with quads: for an object
 // taken 26-connected, the configuration where X is exactly two opposite voxels of the block
 // (two sheets meeting at p only, but X connected through p); for a background taken
@@ -50,6 +58,10 @@ struct PointelStar {
   std::array<std::int8_t, 12> cycle{};  ///< cycle of the face (-1: not a boundary face)
   std::array<std::int8_t, 12> owner{};  ///< smallest face of the face's cycle (-1: none)
   std::array<std::int8_t, 12> length{}; ///< number of faces of the face's cycle (0: none)
+  /// The linel of face f that enters (resp. leaves) the pointel is a "joined" linel here: its
+  /// four voxels are two diagonal pairs (four boundary faces around it) and both pairs of
+  /// faces at it lie on the same cycle at this pointel.
+  std::array<bool, 12> entering_joined{}, leaving_joined{};
 };
 
 /// The star of the configuration byte under the surfel adjacency (tables built once).
