@@ -24,6 +24,12 @@ SurfaceConvention SurfaceConvention::of(int k, int kbar) {
   return c;
 }
 
+SurfaceConvention SurfaceConvention::of(const AdjacencyPair& pair) {
+  if (pair.dim != 3)
+    throw InvalidArgument("adjacency pair " + pair.name() + " is not a pair of a volume");
+  return of(pair.object, pair.background);
+}
+
 bool SurfaceConvention::pinched(std::uint8_t configuration) const {
   return (object_pinches && is_opposite_pair(configuration)) ||
          (background_pinches && is_opposite_pair(static_cast<std::uint8_t>(~configuration)));

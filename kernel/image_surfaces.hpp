@@ -40,6 +40,7 @@
 // int64 (it is at most the number of voxels).
 #pragma once
 
+#include <zdg/kernel/adjacency.hpp>
 #include <zdg/kernel/digital_surface.hpp>
 #include <zdg/kernel/image.hpp>
 #include <zdg/kernel/image_surfels.hpp>
@@ -59,6 +60,8 @@ struct SurfaceConvention {
   /// The convention of (k, kbar) in {(6,26), (6,18), (18,6), (26,6)}; InvalidArgument
   /// naming the pair otherwise.
   static SurfaceConvention of(int k, int kbar);
+  /// The convention of a 3D pair (InvalidArgument for a 2D one).
+  static SurfaceConvention of(const AdjacencyPair& pair);
   /// True at a pointel of this configuration byte that the pair's analog pinches.
   bool pinched(std::uint8_t configuration) const;
 };

@@ -2,6 +2,7 @@
 
 #include <zdg/kernel/digital_surface.hpp>
 
+#include "tests/support/binary_images.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/volumes.hpp"
 
@@ -63,7 +64,7 @@ TEST(ImageSurfels, SameSurfelsAsTheSliceScanOfDigitalSurface) {
 }
 
 TEST(ImageSurfels, ThreadsDoNotChangeTheResult) {
-  const auto img = zdg::test::ball_image(21, 60);
+  const auto img = zdg::test::ball_image(9, 60);
   const auto a = zdg::image_surfels(img, 1), b = zdg::image_surfels(img, 3);
   EXPECT_EQ(a.codes, b.codes);
   EXPECT_EQ(a.row_start, b.row_start);

@@ -1,6 +1,6 @@
 #include <zdg/kernel/marching_cubes.hpp>
 
-#include "tests/support/cubical_homology.hpp"
+#include "tests/support/binary_images.hpp"
 #include "tests/support/mesh_checks.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/volumes.hpp"
@@ -76,7 +76,7 @@ TEST(MarchingCubes, BinaryVerticesAreSurfelCentres) {
 TEST(MarchingCubes, EnclosedVolumeConvergesOnDigitizedBalls) {
   double previous = 1;
   for (std::int64_t r : {4, 8, 16, 32}) {
-    const auto img = zdg::test::ball_image(2 * r + 5, r * r);
+    const auto img = zdg::test::ball_image(r + 1, r * r);
     const auto sf = zdg::image_surfels(img);
     const auto mesh = zdg::marching_cubes(img, sf, SurfaceConvention::of(6, 26),
                                           zdg::VoxelPlacement::lattice(sf.grid));
@@ -126,7 +126,7 @@ TEST(MarchingCubes, InterpolatedLevelFollowsTheGreyValues) {
 }
 
 TEST(MarchingCubes, ThreadsDoNotChangeTheResult) {
-  const auto img = zdg::test::ball_image(21, 61);
+  const auto img = zdg::test::ball_image(9, 61);
   const auto sf = zdg::image_surfels(img, 1);
   const auto conv = SurfaceConvention::of(6, 26);
   const auto a =

@@ -2,6 +2,7 @@
 
 #include <zdg/kernel/image_surfels.hpp>
 
+#include "tests/support/binary_images.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/volumes.hpp"
 

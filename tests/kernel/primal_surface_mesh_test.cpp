@@ -2,7 +2,7 @@
 
 #include <zdg/kernel/pointel_cycles.hpp>
 
-#include "tests/support/cubical_homology.hpp"
+#include "tests/support/binary_images.hpp"
 #include "tests/support/mesh_checks.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/volumes.hpp"
@@ -102,7 +102,7 @@ TEST(PrimalSurfaceMesh, FacesAreTheSurfelsAtTheirPlace) {
 }
 
 TEST(PrimalSurfaceMesh, ThreadsDoNotChangeTheResult) {
-  const auto img = zdg::test::ball_image(19, 50);
+  const auto img = zdg::test::ball_image(8, 50);
   const auto sf = zdg::image_surfels(img, 1);
   const auto conv = SurfaceConvention::of(6, 26);
   const auto a = zdg::primal_surface_mesh(img, sf, conv, zdg::VoxelPlacement::lattice(sf.grid), 1);

@@ -1,18 +1,32 @@
-// Test support: small binary volumes for the surface tests: RapidCheck generators, conversion
-// to zdg images (axes (z, y, x), x contiguous), and digitized balls as images.
+// Test support: small binary volumes for the surface tests (a volume with an at(x, y, z)
+// accessor), a RapidCheck generator, conversion to zdg images (axes (z, y, x), x contiguous),
+// and the Betti numbers of the brute-force homology oracle (tests/support/cubical_homology.hpp).
 #pragma once
 
 #include <zdg/kernel/image.hpp>
+
+#include <zdg/kernel/adjacency.hpp>
 
 #include "tests/support/cubical_homology.hpp"
 
 #include <rapidcheck.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace zdg::test {
+
+/// A small binary volume, x fastest: at(x, y, z) = data[(z ny + y) nx + x]; outside is 0.
+struct SmallVolume {
+  int nx = 0, ny = 0, nz = 0;
+  std::vector<std::uint8_t> data;
+  bool at(int x, int y, int z) const {
+    return x >= 0 && y >= 0 && z >= 0 && x < nx && y < ny && z < nz &&
+           data[std::size_t((z * ny + y) * nx + x)] != 0;
+  }
+};
 
 /// A random volume of at most max_side^3 voxels; the density of its voxels is itself random
 /// (sparse, dense and balanced volumes all occur).
@@ -49,16 +63,10 @@ inline SmallVolume volume_from_rows(int ny, const std::vector<const char*>& rows
   return v;
 }
 
-/// The digital ball |z - c|^2 <= r2 (c = the centre of the box) in a box of side n.
-inline Image<std::uint8_t> ball_image(std::int64_t n, std::int64_t r2) {
-  Image<std::uint8_t> img(Domain({n, n, n}));
-  const std::int64_t c = n / 2;
-  std::int64_t i = 0;
-  for (std::int64_t z = 0; z < n; ++z)
-    for (std::int64_t y = 0; y < n; ++y)
-      for (std::int64_t x = 0; x < n; ++x, ++i)
-        img[i] = (x - c) * (x - c) + (y - c) * (y - c) + (z - c) * (z - c) <= r2 ? 1 : 0;
-  return img;
+/// (b0, b1, b2) of the object of v under the pair (k, kbar), by brute-force homology.
+inline std::array<std::int64_t, 3> object_betti(const SmallVolume& v, int k, int kbar) {
+  const auto h = object_homology(to_image(v), make_adjacency_pair(3, k, kbar));
+  return {h.betti[0], h.betti[1], h.betti[2]};
 }
 
 } // namespace zdg::test
