@@ -24,11 +24,12 @@ struct DTypeInfo {
 };
 
 constexpr DTypeInfo kTypes[] = {
-    {DType::Bool, "|b1", "bool", 1},  {DType::U8, "|u1", "uint8", 1},
-    {DType::U16, "<u2", "uint16", 2}, {DType::U32, "<u4", "uint32", 4},
-    {DType::U64, "<u8", "uint64", 8}, {DType::I8, "|i1", "int8", 1},
-    {DType::I16, "<i2", "int16", 2},  {DType::I32, "<i4", "int32", 4},
-    {DType::I64, "<i8", "int64", 8},
+    {DType::Bool, "|b1", "bool", 1},   {DType::U8, "|u1", "uint8", 1},
+    {DType::U16, "<u2", "uint16", 2},  {DType::U32, "<u4", "uint32", 4},
+    {DType::U64, "<u8", "uint64", 8},  {DType::I8, "|i1", "int8", 1},
+    {DType::I16, "<i2", "int16", 2},   {DType::I32, "<i4", "int32", 4},
+    {DType::I64, "<i8", "int64", 8},   {DType::F32, "<f4", "float32", 4},
+    {DType::F64, "<f8", "float64", 8},
 };
 
 const DTypeInfo& info(DType t) {
@@ -116,8 +117,46 @@ std::int64_t NpyArray::get(std::int64_t i) const {
     std::memcpy(&v, p, 8);
     return v;
   }
+  case DType::F32:
+  case DType::F64:
+    throw IoError(dtype_name(dtype) + " array where integers are needed");
   }
   return 0;
+}
+
+double NpyArray::get_double(std::int64_t i) const {
+  const unsigned char* p = bytes.data() + static_cast<std::size_t>(i) * dtype_size(dtype);
+  switch (dtype) {
+  case DType::F32: {
+    float v;
+    std::memcpy(&v, p, 4);
+    return v;
+  }
+  case DType::F64: {
+    double v;
+    std::memcpy(&v, p, 8);
+    return v;
+  }
+  case DType::U64: {
+    std::uint64_t v;
+    std::memcpy(&v, p, 8);
+    return static_cast<double>(v);
+  }
+  default:
+    return static_cast<double>(get(i));
+  }
+}
+
+bool dtype_is_float(DType t) {
+  return t == DType::F32 || t == DType::F64;
+}
+
+DType dtype_from_name(const std::string& name) {
+  for (const auto& i : kTypes) {
+    if (name == i.name) return i.t;
+  }
+  throw InvalidArgument("dtype '" + name +
+                        "' (bool, uint8/16/32/64, int8/16/32/64, float32, float64)");
 }
 
 NpyArray read_npy(const std::string& path) {
@@ -164,7 +203,8 @@ NpyArray read_npy(const std::string& path) {
     if (!d.empty() && d[0] == '>') {
       fail(path, "big-endian dtype '" + d + "' is not supported (use little-endian)");
     }
-    fail(path, "dtype '" + d + "' is not supported (bool, uint8/16/32/64, int8/16/32/64 only)");
+    fail(path, "dtype '" + d +
+                   "' is not supported (bool, uint8/16/32/64, int8/16/32/64, float32/64 only)");
   }
   std::string fo = dict_value(path, header, "fortran_order");
   if (fo.find("True") != std::string::npos) {
@@ -260,6 +300,10 @@ NpyArray make_npy(DType t, std::vector<std::int64_t> shape, const std::vector<st
       break;
     case DType::I64:
       break;
+    case DType::F32:
+    case DType::F64:
+      throw InvalidArgument("make_npy from int64 values builds integer arrays, not " +
+                            dtype_name(t));
     }
     if (!ok) throw InvalidArgument("value " + std::to_string(x) + " does not fit " + dtype_name(t));
     std::memcpy(a.bytes.data() + i * sz, &x, sz); // little-endian host
@@ -275,6 +319,11 @@ NpyArray make_npy(std::vector<std::int64_t> shape, const std::vector<T>& v) {
   if constexpr (std::is_same_v<T, std::uint32_t>) a.dtype = DType::U32;
   if constexpr (std::is_same_v<T, std::uint64_t>) a.dtype = DType::U64;
   if constexpr (std::is_same_v<T, std::int64_t>) a.dtype = DType::I64;
+  if constexpr (std::is_same_v<T, std::int8_t>) a.dtype = DType::I8;
+  if constexpr (std::is_same_v<T, std::int16_t>) a.dtype = DType::I16;
+  if constexpr (std::is_same_v<T, std::int32_t>) a.dtype = DType::I32;
+  if constexpr (std::is_same_v<T, float>) a.dtype = DType::F32;
+  if constexpr (std::is_same_v<T, double>) a.dtype = DType::F64;
   a.shape = std::move(shape);
   a.bytes.resize(v.size() * sizeof(T));
   if (!v.empty()) std::memcpy(a.bytes.data(), v.data(), a.bytes.size());
@@ -286,6 +335,11 @@ template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<std::uin
 template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<std::uint32_t>&);
 template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<std::uint64_t>&);
 template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<std::int64_t>&);
+template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<std::int8_t>&);
+template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<std::int16_t>&);
+template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<std::int32_t>&);
+template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<float>&);
+template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<double>&);
 
 namespace {
 Domain npy_domain(const NpyArray& a, const std::vector<std::int64_t>& lower) {
@@ -301,6 +355,11 @@ Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_
   Image<std::uint8_t> img(npy_domain(a, lower));
   const std::size_t sz = dtype_size(a.dtype);
   auto& v = img.values();
+  if (dtype_is_float(a.dtype)) {
+    for (std::size_t i = 0; i < v.size(); ++i)
+      v[i] = a.get_double(static_cast<std::int64_t>(i)) != 0.0 ? 1 : 0;
+    return img;
+  }
   for (std::size_t i = 0; i < v.size(); ++i) {
     bool nz = false;
     for (std::size_t b = 0; b < sz; ++b) nz = nz || a.bytes[i * sz + b] != 0;

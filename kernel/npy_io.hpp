@@ -1,9 +1,10 @@
 // NumPy .npy files (format versions 1.0, 2.0 and 3.0): read and write n-D arrays.
 //
-// Accepted dtypes: bool, uint8, uint16, uint32, uint64, int8, int16, int32, int64 (little-endian
-// or byte-sized), C order. Fortran order, big-endian or other dtypes (floats, structured),
-// malformed headers and truncated data are IoError naming the file and the problem. Writing
-// goes to a temporary file in the same directory, then renamed over the target.
+// Accepted dtypes: bool, uint8, uint16, uint32, uint64, int8, int16, int32, int64, float32,
+// float64 (little-endian or byte-sized), C order. Fortran order, big-endian or other dtypes
+// (float16, complex, structured), malformed headers and truncated data are IoError naming the
+// file and the problem. Writing goes to a temporary file in the same directory, then renamed
+// over the target.
 #pragma once
 
 #include <zdg/kernel/image.hpp>
@@ -14,9 +15,9 @@
 
 namespace zdg {
 
-enum class DType { Bool, U8, U16, U32, U64, I8, I16, I32, I64 };
+enum class DType { Bool, U8, U16, U32, U64, I8, I16, I32, I64, F32, F64 };
 
-/// "bool", "uint8", ..., "int64".
+/// "bool", "uint8", ..., "int64", "float32", "float64".
 std::string dtype_name(DType t);
 /// Size of one element in bytes.
 std::size_t dtype_size(DType t);
@@ -28,9 +29,16 @@ struct NpyArray {
   std::vector<unsigned char> bytes;
 
   std::int64_t count() const;
-  /// Element i as an int64 (IoError for a uint64 value > 2^63 - 1).
+  /// Element i as an int64 (IoError for a uint64 value > 2^63 - 1 and for a float dtype).
   std::int64_t get(std::int64_t i) const;
+  /// Element i as a double (exact for every dtype but 64-bit integers past 2^53).
+  double get_double(std::int64_t i) const;
 };
+
+/// True for float32 and float64.
+bool dtype_is_float(DType t);
+/// The dtype named "bool", "uint8", ..., "float64" (InvalidArgument for another name).
+DType dtype_from_name(const std::string& name);
 
 NpyArray read_npy(const std::string& path);
 /// Writes atomically (temporary file + rename). IoError on failure.
@@ -38,14 +46,14 @@ void write_npy(const std::string& path, const NpyArray& a);
 
 /// Builds an array of dtype t from int64 values (InvalidArgument when a value does not fit).
 NpyArray make_npy(DType t, std::vector<std::int64_t> shape, const std::vector<std::int64_t>& v);
-/// Same from a typed buffer (T an unsigned or signed machine integer).
+/// Same from a typed buffer (T an unsigned or signed machine integer, float or double).
 template <class T>
 NpyArray make_npy(std::vector<std::int64_t> shape, const std::vector<T>& v);
 
-/// The array as a binary image (nonzero = 1) on the domain with these lower bounds
-/// (empty = all 0). A 0-D array is an IoError.
+/// The array as a binary image (nonzero = 1; for floats, value != 0, so -0.0 is 0 and NaN is 1) on
+/// the domain with these lower bounds (empty = all 0). A 0-D array is an IoError.
 Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_t>& lower = {});
-/// The array as int64 values.
+/// The array as int64 values (IoError for a float dtype).
 Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64_t>& lower = {});
 
 } // namespace zdg

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   zdg::cli::add_converge_commands(app, ctx);
   zdg::cli::add_transform_commands(app, ctx);
   zdg::cli::add_hull_commands(app, ctx);
+  zdg::cli::add_convert_commands(app, ctx);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
