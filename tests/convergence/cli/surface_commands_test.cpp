@@ -56,18 +56,18 @@ nlohmann::json run_json(const std::string& args) {
 }
 
 const auto torus = [](double x, double y, double z) {
-  const double d = std::sqrt(x * x + y * y) - 9;
-  return d * d + z * z <= 16;
+  const double d = std::sqrt(x * x + y * y) - 6;
+  return d * d + z * z <= 6.25;
 };
 const auto hollow = [](double x, double y, double z) {
   const double r2 = x * x + y * y + z * z;
-  return r2 <= 100 && r2 > 16;
+  return r2 <= 49 && r2 > 9;
 };
 
 TEST(SurfaceCommand, TopologyOfKnownObjects) {
   Files f;
-  save_volume(f.path("torus.npy"), 32, torus);
-  save_volume(f.path("hollow.npy"), 26, hollow);
+  save_volume(f.path("torus.npy"), 20, torus);
+  save_volume(f.path("hollow.npy"), 18, hollow);
   for (const char* adj : {"6,26", "26,6", "6,18", "18,6"}) {
     SCOPED_TRACE(adj);
     auto j = run_json("surface " + f("torus.npy") + " --adjacency " + adj);
@@ -89,7 +89,7 @@ TEST(SurfaceCommand, TopologyOfKnownObjects) {
 // V - E + F = the surfaces' sum; marching cubes too (a closed manifold: E = 3F/2).
 TEST(SurfaceCommand, MeshesHaveTheSurfacesEuler) {
   Files f;
-  save_volume(f.path("hollow.npy"), 26, hollow);
+  save_volume(f.path("hollow.npy"), 18, hollow);
   auto j = run_json("surface " + f("hollow.npy") + " -o " + f("p.ply"));
   EXPECT_EQ(j["mesh"]["faces"], j["surfels"]);
   EXPECT_EQ(j["mesh"]["euler"], "4");
