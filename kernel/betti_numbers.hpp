@@ -19,8 +19,12 @@
 //   (6,18):        the (6,26) complex plus a hexagonal 2-cell on every 2x2x2 block whose
 //                  points in X are the six off one main diagonal (the block's two background
 //                  corners are not 18-adjacent, so no background path crosses that hexagon).
+// The 6-adjacency paired with 18 is the literature's "6+" (Bertrand 1994): a closed 6-path
+// inside one 2x2x2 block bounds a disc, which the hexagonal cells above say.
 // tests/kernel/betti_numbers_test.cpp computes the homology of exactly these complexes by
-// brute force (ranks of boundary matrices over Z/2) and checks the results below against it.
+// brute force (ranks of boundary matrices over Z/2) and checks the results below against it;
+// tests/kernel/simple_points_test.cpp checks that deleting a simple point (Bertrand-Malandain)
+// keeps the homology of these complexes for the object and for the background.
 //
 // Euler characteristic: chi = sum over the (n_0 + 1) ... (n_{d-1} + 1) 2^d-blocks of the image
 // padded with background of a local contribution read in a 2^{2^d}-entry table (every cell of

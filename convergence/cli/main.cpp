@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
   zdg::cli::add_transform_commands(app, ctx);
   zdg::cli::add_hull_commands(app, ctx);
   zdg::cli::add_convert_commands(app, ctx);
+  zdg::cli::add_topology_commands(app, ctx);
   zdg::cli::add_surface_commands(app, ctx);
   try {
     app.parse(argc, argv);

@@ -14,16 +14,6 @@ namespace {
 const AdjacencyPair kPairs3[4] = {{3, 26, 6}, {3, 6, 26}, {3, 18, 6}, {3, 6, 18}};
 const AdjacencyPair kPairs2[2] = {{2, 8, 4}, {2, 4, 8}};
 
-// Copies `part` into `scene` at the offset (o0, o1, o2).
-void paste(Image<std::uint8_t>& scene, const Image<std::uint8_t>& part, std::int64_t o0,
-           std::int64_t o1, std::int64_t o2) {
-  const Domain& d = part.domain();
-  for (std::int64_t i = 0; i < d.size(); ++i) {
-    const auto p = d.point(i);
-    scene.at(std::vector<std::int64_t>{p[0] + o0, p[1] + o1, p[2] + o2}) = part[i];
-  }
-}
-
 // Theorem (Alexander duality on the continuous analog, kernel/betti_numbers.hpp): b0 = the
 // k-components, b2 = the bounded kbar-components of the background, b1 from chi. Oracle: the
 // homology over Z/2 of the cell complex of the pair, by brute force
@@ -93,9 +83,9 @@ TEST(BettiNumbers, ClosedFormsOfBallTorusAndSphere) {
               (std::array<std::int64_t, 3>{1, 0, 1}));
     // Two disjoint hollow spheres and a torus side by side: (3, 1, 2), chi = 4.
     Image<std::uint8_t> scene(Domain({23, 77, 29}), std::uint8_t{0});
-    paste(scene, test::hollow_sphere_image(10, 30, 99), 0, 0, 0);
-    paste(scene, test::hollow_sphere_image(10, 30, 99), 0, 24, 0);
-    paste(scene, test::torus_image(10, 3), 7, 48, 0);
+    test::paste(scene, test::hollow_sphere_image(10, 30, 99), {0, 0, 0});
+    test::paste(scene, test::hollow_sphere_image(10, 30, 99), {0, 24, 0});
+    test::paste(scene, test::torus_image(10, 3), {7, 48, 0});
     const auto b = betti_numbers(scene, pair, 2);
     EXPECT_EQ(b.b, (std::array<std::int64_t, 3>{3, 1, 2})) << pair.name();
     EXPECT_EQ(b.euler, 4);

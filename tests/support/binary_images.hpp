@@ -90,4 +90,30 @@ inline Image<std::uint8_t> annulus_image(std::int64_t r, std::int64_t r_in2, std
   });
 }
 
+/// The image with one more layer of background around it, complemented: the background of
+/// the image (the outside included, up to homotopy) as the object of a binary image.
+inline Image<std::uint8_t> padded_complement(const Image<std::uint8_t>& img) {
+  const Domain& d = img.domain();
+  std::vector<std::int64_t> ext;
+  for (int k = 0; k < d.dim(); ++k) ext.push_back(d.extent(k) + 2);
+  Image<std::uint8_t> out{Domain(ext), std::uint8_t{1}};
+  for (std::int64_t i = 0; i < d.size(); ++i) {
+    auto p = d.point(i);
+    for (auto& v : p) ++v;
+    out.at(p) = img[i] != 0 ? 0 : 1;
+  }
+  return out;
+}
+
+/// Copies `part` into `scene` at the offset o (same dimension).
+inline void paste(Image<std::uint8_t>& scene, const Image<std::uint8_t>& part,
+                  const std::vector<std::int64_t>& o) {
+  const Domain& d = part.domain();
+  for (std::int64_t i = 0; i < d.size(); ++i) {
+    auto p = d.point(i);
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] += o[k];
+    scene.at(p) = part[i];
+  }
+}
+
 } // namespace zdg::test

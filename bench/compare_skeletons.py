@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""Times zdg's curve skeleton against scikit-image's skeletonize (3D: Lee, Kashyap and Chu
+1994) on the same foam-like volumes, in one run, and prints the ratio.
+
+Volume: uniform noise (numpy default_rng, fixed seed) smoothed by three box blurs of size 7
+(scipy.ndimage.uniform_filter, 'nearest' ends), thresholded at its 80th percentile: about 20%
+of the voxels in the object, n^3 voxels (n = 256; 512 with --large).
+
+zdg runs through `zdg topology skeleton IN.npy -o OUT.npy --json --quiet --threads T` and
+reports its own compute time ("seconds": thinning, distance transform included, file IO
+excluded); the process wall time is printed too. skimage is timed in-process (one thread, its
+only mode). Both skeletons are then measured by `zdg topology betti` (26,6): zdg's keeps the
+Betti numbers of the object by construction; the line says whether skimage's does.
+
+  /usr/bin/python3 bench/compare_skeletons.py --zdg build/bin/zdg [--large] [--threads 1,2]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+import numpy as np
+from scipy import ndimage
+
+
+def foam(n, seed=20240613):
+    rng = np.random.default_rng(seed)
+    v = rng.random((n, n, n), dtype=np.float32)
+    for _ in range(3):
+        v = ndimage.uniform_filter(v, size=7, mode="nearest")
+    t = np.percentile(v, 80)
+    return (v > t).astype(np.uint8)
+
+
+def zdg_json(zdg, args):
+    t0 = time.perf_counter()
+    out = subprocess.run([zdg] + args, check=True, capture_output=True, text=True)
+    return json.loads(out.stdout), time.perf_counter() - t0
+
+
+def betti(zdg, path):
+    j, _ = zdg_json(zdg, ["topology", "betti", path, "--json"])
+    return [int(b) for b in j["betti"]]
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--zdg", default="build/bin/zdg")
+    ap.add_argument("--large", action="store_true", help="also n = 512")
+    ap.add_argument("--sizes", default=None, help="comma list of n (default 256, or 256,512)")
+    ap.add_argument("--threads", default="1", help="comma list of thread counts for zdg")
+    ap.add_argument("--critical", action="store_true", help="also --method critical-kernel")
+    ap.add_argument("--no-skimage", action="store_true", help="zdg only")
+    a = ap.parse_args()
+    sizes = [int(s) for s in a.sizes.split(",")] if a.sizes else ([256, 512] if a.large else [256])
+    threads = [int(t) for t in a.threads.split(",")]
+    methods = ["sequential"] + (["critical-kernel"] if a.critical else [])
+    from skimage.morphology import skeletonize
+
+    with tempfile.TemporaryDirectory() as tmp:
+        for n in sizes:
+            img = foam(n)
+            src = os.path.join(tmp, "foam.npy")
+            np.save(src, img)
+            obj = int(img.sum())
+            b_obj = betti(a.zdg, src)
+            print(f"n={n}: {obj} object voxels ({100.0 * obj / img.size:.1f}%), Betti {b_obj}")
+            zdg_best = None
+            for method in methods:
+                for t in threads:
+                    dst = os.path.join(tmp, f"zdg_{method}_{t}.npy")
+                    j, wall = zdg_json(a.zdg, ["topology", "skeleton", src, "-o", dst, "--json",
+                                               "--quiet", "--force", "--threads", str(t),
+                                               "--method", method])
+                    secs = float(j["seconds"])
+                    print(f"  zdg {method:15s} threads={t}: {secs:8.2f} s (process {wall:.2f} s), "
+                          f"{j['voxels']} skeleton voxels, Betti {[int(x) for x in j['betti']]}")
+                    if method == "sequential" and t == 1:
+                        zdg_best = secs
+            if a.no_skimage:
+                continue
+            t0 = time.perf_counter()
+            sk = skeletonize(img)
+            ski = time.perf_counter() - t0
+            skp = os.path.join(tmp, "skimage.npy")
+            np.save(skp, (sk != 0).astype(np.uint8))
+            b_sk = betti(a.zdg, skp)
+            print(f"  skimage skeletonize (Lee)      : {ski:8.2f} s, {int((sk != 0).sum())} "
+                  f"skeleton voxels, Betti {b_sk}"
+                  f"{'' if b_sk == b_obj else ' (topology changed)'}")
+            if zdg_best:
+                print(f"  ratio skimage / zdg sequential 1 thread: {ski / zdg_best:.2f}"
+                      f" ({'zdg faster' if ski > zdg_best else 'skimage faster'})")
+            sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()

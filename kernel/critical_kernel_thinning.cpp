@@ -1,0 +1,348 @@
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/critical_kernel_thinning.hpp>
+#include <zdg/kernel/parallel_for.hpp>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+
+namespace zdg {
+namespace {
+
+constexpr std::uint8_t kObject = 1, kBorder = 2, kAnchor = 4, kSimple = 8, kKept = 16;
+
+// The 26 faces of the unit cube of the centre point x of a 3x3x3 neighbourhood, in local
+// Khalimsky coordinates k in {2, 3, 4}^3 (the point at local position v in {0, 1, 2}^3 is the
+// cell 2 v + 1; x is (3, 3, 3)). Points are bits v0 * 9 + v1 * 3 + v2 of a 27-bit mask.
+struct Face {
+  int dim = 0;
+  std::uint32_t incident = 0;            // points whose closed cube contains the face
+  std::array<std::uint32_t, 6> coface{}; // incident sets of the faces of dimension dim + 1
+  int cofaces = 0;                       // containing it (the neighbourhood holds them all)
+  std::array<int, 4> edge{};             // square: its 4 edges; edge: its 2 vertices
+  int edges = 0;
+  std::array<int, 4> vertex{}; // square: its 4 vertices
+  int vertices = 0;
+};
+
+struct FaceTable {
+  std::array<Face, 26> face;
+  std::array<int, 125> id{}; // local cell (k0 * 25 + k1 * 5 + k2) -> face, or -1
+
+  static std::uint32_t incident(int k0, int k1, int k2) {
+    auto choices = [](int k) {
+      return (k % 2 != 0) ? std::array<int, 2>{(k - 1) / 2, -1}
+                          : std::array<int, 2>{k / 2 - 1, k / 2};
+    };
+    std::uint32_t m = 0;
+    for (int a : choices(k0)) {
+      for (int b : choices(k1)) {
+        for (int c : choices(k2)) {
+          if (a >= 0 && b >= 0 && c >= 0) m |= std::uint32_t{1} << (a * 9 + b * 3 + c);
+        }
+      }
+    }
+    return m;
+  }
+
+  FaceTable() {
+    id.fill(-1);
+    int n = 0;
+    for (int k0 = 2; k0 <= 4; ++k0) {
+      for (int k1 = 2; k1 <= 4; ++k1) {
+        for (int k2 = 2; k2 <= 4; ++k2) {
+          if (k0 == 3 && k1 == 3 && k2 == 3) continue;
+          id[static_cast<std::size_t>(k0 * 25 + k1 * 5 + k2)] = n++;
+        }
+      }
+    }
+    for (int k0 = 2; k0 <= 4; ++k0) {
+      for (int k1 = 2; k1 <= 4; ++k1) {
+        for (int k2 = 2; k2 <= 4; ++k2) {
+          const int i = id[static_cast<std::size_t>(k0 * 25 + k1 * 5 + k2)];
+          if (i < 0) continue;
+          Face& f = face[static_cast<std::size_t>(i)];
+          const std::array<int, 3> k{k0, k1, k2};
+          f.dim = (k0 % 2) + (k1 % 2) + (k2 % 2);
+          f.incident = incident(k0, k1, k2);
+          for (int a = 0; a < 3; ++a) {
+            for (int s : {-1, 1}) {
+              auto g = k;
+              g[static_cast<std::size_t>(a)] += s;
+              if (k[static_cast<std::size_t>(a)] % 2 == 0) {
+                f.coface[static_cast<std::size_t>(f.cofaces++)] = incident(g[0], g[1], g[2]);
+              }
+            }
+          }
+          // Sub-faces through the odd coordinates (faces of the centre cube).
+          std::array<int, 3> odd{};
+          int nodd = 0;
+          for (int a = 0; a < 3; ++a) {
+            if (k[static_cast<std::size_t>(a)] % 2 != 0) odd[static_cast<std::size_t>(nodd++)] = a;
+          }
+          auto face_id = [&](const std::array<int, 3>& g) {
+            return id[static_cast<std::size_t>(g[0] * 25 + g[1] * 5 + g[2])];
+          };
+          if (f.dim == 1) {
+            for (int s : {-1, 1}) {
+              auto g = k;
+              g[static_cast<std::size_t>(odd[0])] += s;
+              f.edge[static_cast<std::size_t>(f.edges++)] = face_id(g);
+            }
+          } else if (f.dim == 2) {
+            for (int t = 0; t < 2; ++t) {
+              for (int s : {-1, 1}) {
+                auto g = k;
+                g[static_cast<std::size_t>(odd[static_cast<std::size_t>(t)])] += s;
+                f.edge[static_cast<std::size_t>(f.edges++)] = face_id(g);
+              }
+            }
+            for (int s : {-1, 1}) {
+              for (int u : {-1, 1}) {
+                auto g = k;
+                g[static_cast<std::size_t>(odd[0])] += s;
+                g[static_cast<std::size_t>(odd[1])] += u;
+                f.vertex[static_cast<std::size_t>(f.vertices++)] = face_id(g);
+              }
+            }
+          }
+        }
+      }
+    }
+  }
+
+  static const FaceTable& get() {
+    static const FaceTable t;
+    return t;
+  }
+};
+
+// The critical faces (bit per face id) of the cube of the centre of the 27-bit neighbourhood n
+// (centre set) for the object n, as in the header.
+std::uint32_t critical_faces(std::uint32_t n) {
+  const FaceTable& t = FaceTable::get();
+  std::uint32_t essential = 0;
+  for (int i = 0; i < 26; ++i) {
+    const Face& f = t.face[static_cast<std::size_t>(i)];
+    const std::uint32_t clique = n & f.incident;
+    bool ess = clique != 0;
+    for (int c = 0; c < f.cofaces && ess; ++c) {
+      ess = (clique & ~f.coface[static_cast<std::size_t>(c)]) != 0;
+    }
+    if (ess) essential |= std::uint32_t{1} << i;
+  }
+  auto is_ess = [&](int i) { return ((essential >> i) & 1u) != 0; };
+  std::uint32_t critical = 0;
+  for (int i = 0; i < 26; ++i) {
+    if (!is_ess(i)) continue;
+    const Face& f = t.face[static_cast<std::size_t>(i)];
+    bool crit = true;
+    if (f.dim == 1) {
+      crit = (is_ess(f.edge[0]) ? 1 : 0) + (is_ess(f.edge[1]) ? 1 : 0) != 1;
+    } else if (f.dim == 2) {
+      // The core on the boundary circle: vertices (essential ones and ends of essential
+      // edges) and essential edges; one arc iff |V| - |E| = 1 with |E| < 4.
+      std::uint32_t vertices = 0;
+      int edges = 0;
+      for (int v = 0; v < 4; ++v) {
+        if (is_ess(f.vertex[static_cast<std::size_t>(v)]))
+          vertices |= 1u << f.vertex[static_cast<std::size_t>(v)];
+      }
+      for (int e = 0; e < 4; ++e) {
+        const int ei = f.edge[static_cast<std::size_t>(e)];
+        if (!is_ess(ei)) continue;
+        ++edges;
+        const Face& edge = t.face[static_cast<std::size_t>(ei)];
+        vertices |= 1u << edge.edge[0];
+        vertices |= 1u << edge.edge[1];
+      }
+      crit = !(edges < 4 && std::popcount(vertices) - edges == 1);
+    }
+    if (crit) critical |= std::uint32_t{1} << i;
+  }
+  return critical;
+}
+
+// floor(n k / w) without forming n k.
+std::int64_t chunk_bound(std::int64_t n, std::int64_t k, std::int64_t w) {
+  return n / w * k + n % w * k / w;
+}
+
+} // namespace
+
+ThinningResult critical_kernel_thinning(const Image<std::uint8_t>& image,
+                                        const ThinningOptions& options) {
+  const AdjacencyPair pair = detail::resolve_pair(image, options);
+  if (!(pair.object == 26 || pair.object == 8)) {
+    throw InvalidArgument("critical-kernel thinning works on the cubical complex of the pair " +
+                          std::string(pair.dim == 3 ? "26,6" : "8,4") + ", not " + pair.name());
+  }
+  detail::PaddedVolume vol(image);
+  detail::mark_anchors(image, options, vol);
+  std::int64_t remaining = 0;
+  for (std::uint8_t f : vol.flags) remaining += f & kObject;
+  const detail::SimplicityTest simple(pair, remaining >= (std::int64_t{1} << 22));
+  const bool conditional =
+      options.skeleton == SkeletonKind::curve || options.skeleton == SkeletonKind::surface;
+  // The 27 offsets of the 3x3x3 neighbourhood (the slab's empty layers in 2D), and the six
+  // face neighbours (four in 2D).
+  std::array<std::int64_t, 27> off27{};
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      for (int c = 0; c < 3; ++c) {
+        off27[static_cast<std::size_t>(a * 9 + b * 3 + c)] =
+            ((a - 1) * vol.extent[1] + (b - 1)) * vol.extent[2] + (c - 1);
+      }
+    }
+  }
+  std::vector<std::int64_t> face_offsets = {-vol.extent[1] * vol.extent[2],
+                                            vol.extent[1] * vol.extent[2],
+                                            -vol.extent[2],
+                                            vol.extent[2],
+                                            -1,
+                                            1};
+  if (vol.dim() == 2) face_offsets.erase(face_offsets.begin(), face_offsets.begin() + 2);
+  auto flag = [&](std::int64_t p) -> std::uint8_t& {
+    return vol.flags[static_cast<std::size_t>(p)];
+  };
+  auto neighbourhood27 = [&](std::int64_t p) {
+    std::uint32_t n = 0;
+    for (int j = 0; j < 27; ++j) {
+      n |= static_cast<std::uint32_t>(flag(p + off27[static_cast<std::size_t>(j)]) & kObject) << j;
+    }
+    return n;
+  };
+
+  // The border: object points, not anchors, with a face neighbour in the background.
+  std::vector<std::int64_t> border;
+  for (std::int64_t p = 0; p < vol.size(); ++p) {
+    if ((flag(p) & (kObject | kAnchor)) != kObject) continue;
+    for (std::int64_t o : face_offsets) {
+      if ((flag(p + o) & kObject) == 0) {
+        border.push_back(p);
+        flag(p) |= kBorder;
+        break;
+      }
+    }
+  }
+
+  const unsigned threads = options.threads;
+  ThinningResult result;
+  for (;;) {
+    // 1. Verdicts on the border, from the object at the start of the pass.
+    std::vector<std::uint8_t> verdict(border.size(), 0); // 1 simple, 2 skeleton point
+    parallel_chunks(
+        static_cast<std::int64_t>(border.size()), threads, [&](std::int64_t b, std::int64_t e) {
+          for (std::int64_t i = b; i < e; ++i) {
+            const std::uint32_t c = vol.configuration(border[static_cast<std::size_t>(i)]);
+            if (conditional && detail::is_skeleton_point(options.skeleton, pair, c)) {
+              verdict[static_cast<std::size_t>(i)] = 2;
+            } else if (simple(c)) {
+              verdict[static_cast<std::size_t>(i)] = 1;
+            }
+          }
+        });
+    std::vector<std::int64_t> candidates; // simple border points: the only deletable ones
+    {
+      std::vector<std::int64_t> kept_border;
+      for (std::size_t i = 0; i < border.size(); ++i) {
+        const std::int64_t p = border[i];
+        if (verdict[i] == 2) {
+          flag(p) = static_cast<std::uint8_t>((flag(p) | kAnchor) & ~kBorder);
+          continue;
+        }
+        kept_border.push_back(p);
+        if (verdict[i] == 1) {
+          flag(p) |= kSimple;
+          candidates.push_back(p);
+        }
+      }
+      border.swap(kept_border);
+    }
+    // 2. Critical faces around every candidate.
+    const std::int64_t nc = static_cast<std::int64_t>(candidates.size());
+    std::vector<std::uint32_t> critical(candidates.size());
+    parallel_chunks(nc, threads, [&](std::int64_t b, std::int64_t e) {
+      for (std::int64_t i = b; i < e; ++i) {
+        critical[static_cast<std::size_t>(i)] =
+            critical_faces(neighbourhood27(candidates[static_cast<std::size_t>(i)]));
+      }
+    });
+    // 3. K_2, K_1, K_0: critical cliques made of candidates only and disjoint from the kernel
+    // so far are kept whole, decided for each d on the kernel of the level above.
+    const FaceTable& ft = FaceTable::get();
+    for (int d = 2; d >= 0; --d) {
+      const unsigned w = worker_count(threads, std::max<std::int64_t>(nc, 1));
+      std::vector<std::vector<std::int64_t>> keep(w);
+      parallel_for(w, w, [&](std::int64_t k) {
+        auto& out = keep[static_cast<std::size_t>(k)];
+        for (std::int64_t i = chunk_bound(nc, k, w); i < chunk_bound(nc, k + 1, w); ++i) {
+          const std::int64_t p = candidates[static_cast<std::size_t>(i)];
+          std::uint32_t crit = critical[static_cast<std::size_t>(i)];
+          if (crit == 0) continue;
+          const std::uint32_t n = neighbourhood27(p);
+          while (crit != 0) {
+            const int fi = std::countr_zero(crit);
+            crit &= crit - 1;
+            const Face& f = ft.face[static_cast<std::size_t>(fi)];
+            if (f.dim != d) continue;
+            const std::uint32_t clique = n & f.incident;
+            if ((clique & ((1u << 13) - 1)) != 0) continue; // p is not its first point
+            bool free = true;
+            for (std::uint32_t m = clique; m != 0 && free; m &= m - 1) {
+              const std::uint8_t g = flag(p + off27[static_cast<std::size_t>(std::countr_zero(m))]);
+              free = (g & (kSimple | kKept)) == kSimple;
+            }
+            if (!free) continue;
+            for (std::uint32_t m = clique; m != 0; m &= m - 1) {
+              out.push_back(p + off27[static_cast<std::size_t>(std::countr_zero(m))]);
+            }
+          }
+        }
+      });
+      for (const auto& v : keep) {
+        for (std::int64_t q : v) flag(q) |= kKept;
+      }
+    }
+    // 4. Delete the candidates outside the kernel.
+    std::vector<std::int64_t> deleted;
+    for (std::int64_t p : candidates) {
+      if ((flag(p) & kKept) == 0) {
+        flag(p) = static_cast<std::uint8_t>(flag(p) & ~(kObject | kBorder | kSimple));
+        deleted.push_back(p);
+      } else {
+        flag(p) = static_cast<std::uint8_t>(flag(p) & ~(kSimple | kKept));
+      }
+    }
+    if (deleted.empty()) break;
+    ++result.passes;
+    result.deleted += static_cast<std::int64_t>(deleted.size());
+    remaining -= static_cast<std::int64_t>(deleted.size());
+    std::sort(deleted.begin(), deleted.end());
+    if (options.deletions != nullptr) {
+      for (std::int64_t p : deleted) options.deletions->push_back(vol.image_index(p));
+    }
+    // 5. The next border: the border points still there, and the object face neighbours of
+    // the deleted points.
+    std::vector<std::int64_t> next;
+    for (std::int64_t p : border) {
+      if ((flag(p) & kObject) != 0) next.push_back(p);
+    }
+    for (std::int64_t p : deleted) {
+      for (std::int64_t o : face_offsets) {
+        const std::int64_t q = p + o;
+        if ((flag(q) & (kObject | kBorder | kAnchor)) == kObject) {
+          flag(q) |= kBorder;
+          next.push_back(q);
+        }
+      }
+    }
+    border.swap(next);
+    if (options.progress) options.progress({remaining, result.deleted, result.passes});
+  }
+  if (options.progress) options.progress({remaining, result.deleted, result.passes});
+  result.skeleton = vol.object(image.domain());
+  return result;
+}
+
+} // namespace zdg
