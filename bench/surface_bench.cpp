@@ -2,10 +2,12 @@
 // about 10^7 boundary surfels; set ZDG_SURFACE_BENCH_N to change it), the level set
 // { f > 0 } of a sum of 24 random plane waves of wavelength 40 to 80 voxels.
 //   build/bin/surface_bench --benchmark_counters_tabular=true
-// Steps: boundary surfels, closed surfaces (6,26), primal mesh, marching cubes, II mean
+// Steps: boundary surfels, components, closed surfaces (6,26), primal mesh, marching cubes, II mean
 // curvature at radius 5 voxels on the first 10^6 surfels (2 threads); peak memory (RSS) is
-// reported as a counter, with the input size and the mesh sizes.
+// reported as a counter, with the input size and the mesh sizes (run one step per process,
+// --benchmark_filter=BM_MarchingCubes, for the peak of that step alone).
 #include <zdg/estimators/ii_3d.hpp>
+#include <zdg/kernel/connected_components.hpp>
 #include <zdg/kernel/image_surfaces.hpp>
 #include <zdg/kernel/image_surfels.hpp>
 #include <zdg/kernel/marching_cubes.hpp>
@@ -93,6 +95,21 @@ void BM_Surfels(benchmark::State& state) {
   report(state);
 }
 
+// The components of the object (6-adjacency, kernel/connected_components.hpp): with the
+// surfels and the surfaces, what `zdg surface` computes before any mesh.
+void BM_Components(benchmark::State& state) {
+  foam();
+  std::int64_t count = 0;
+  for (auto _ : state) {
+    zdg::ComponentOptions opt;
+    opt.threads = unsigned(state.range(0));
+    auto c = zdg::connected_components(foam(), 6, opt);
+    count = c.count();
+  }
+  state.counters["components"] = double(count);
+  report(state);
+}
+
 void BM_Surfaces(benchmark::State& state) {
   surfels();
   std::size_t count = 0;
@@ -149,6 +166,7 @@ void BM_IIMean(benchmark::State& state) {
 }
 
 BENCHMARK(BM_Surfels)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_Components)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Surfaces)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_PrimalMesh)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_MarchingCubes)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);

@@ -44,8 +44,7 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
                                                  q * (t + 1) + r * (t + 1) / chunks};
   };
 
-  // Pass 1: the surfel vertices, and the triangles and centres of the owned polygons.
-  mesh.vertices.resize(static_cast<std::size_t>(n));
+  // Pass 1: the triangles and centres of the owned polygons, per chunk.
   std::vector<std::int64_t> first_triangle(static_cast<std::size_t>(chunks) + 1, 0),
       first_centre(static_cast<std::size_t>(chunks) + 1, 0);
   parallel_for(chunks, static_cast<unsigned>(chunks), [&](std::int64_t t) {
@@ -53,22 +52,6 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
     std::int64_t tris = 0, centres = 0;
     for (std::int64_t i = b; i < e; ++i) {
       const std::uint64_t code = surfels.codes[std::size_t(i)];
-      const std::int64_t v = code_voxel(code);
-      const std::int64_t c[3] = {v % g.nx, (v / g.nx) % g.ny, v / (g.nx * g.ny)};
-      const int a = code_axis(code);
-      const int s = code_positive(code) ? 1 : -1;
-      double step = 0.5;
-      if (grey != nullptr) {
-        std::int64_t w[3] = {c[0], c[1], c[2]};
-        w[a] += s;
-        if (w[a] >= 0 && w[a] < (a == 0 ? g.nx : (a == 1 ? g.ny : g.nz))) {
-          const double fu = grey->value(v), fw = grey->value(g.index(w[0], w[1], w[2]));
-          if (fu != fw) step = std::clamp((grey->level - fu) / (fw - fu), 0.0, 1.0);
-        }
-      }
-      double p[3] = {double(c[0]), double(c[1]), double(c[2])};
-      p[a] += s * step;
-      mesh.vertices[std::size_t(i)] = placement.at(p[0], p[1], p[2]);
       for (int k = 0; k < 4; ++k) {
         const SurfelCorner sc = surfel_corner(g, code, k);
         const std::uint8_t config = pointel_configuration(g, data, sc.q[0], sc.q[1], sc.q[2]);
@@ -88,6 +71,29 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
   }
   mesh.indices.resize(static_cast<std::size_t>(3 * first_triangle.back()));
   mesh.vertices.resize(static_cast<std::size_t>(n + first_centre.back()));
+
+  // The surfel vertices: on the cut edge from the inner to the outer voxel centre.
+  parallel_chunks(n, static_cast<unsigned>(chunks), [&](std::int64_t b, std::int64_t e) {
+    for (std::int64_t i = b; i < e; ++i) {
+      const std::uint64_t code = surfels.codes[std::size_t(i)];
+      const std::int64_t v = code_voxel(code);
+      const std::int64_t c[3] = {v % g.nx, (v / g.nx) % g.ny, v / (g.nx * g.ny)};
+      const int a = code_axis(code);
+      const int s = code_positive(code) ? 1 : -1;
+      double step = 0.5;
+      if (grey != nullptr) {
+        std::int64_t w[3] = {c[0], c[1], c[2]};
+        w[a] += s;
+        if (w[a] >= 0 && w[a] < (a == 0 ? g.nx : (a == 1 ? g.ny : g.nz))) {
+          const double fu = grey->value(v), fw = grey->value(g.index(w[0], w[1], w[2]));
+          if (fu != fw) step = std::clamp((grey->level - fu) / (fw - fu), 0.0, 1.0);
+        }
+      }
+      double p[3] = {double(c[0]), double(c[1]), double(c[2])};
+      p[a] += s * step;
+      mesh.vertices[std::size_t(i)] = placement.at(p[0], p[1], p[2]);
+    }
+  });
 
   // Pass 2: the polygons of the owned cycles, triangulated.
   parallel_for(chunks, static_cast<unsigned>(chunks), [&](std::int64_t t) {
