@@ -280,8 +280,9 @@ ThinningResult critical_kernel_thinning(const Image<std::uint8_t>& image,
             if (clique == 0 || (clique & ((1u << 13) - 1)) != 0) continue;
             if ((clique & ~simple_around[static_cast<std::size_t>(i)]) != 0) continue;
             if (!critical_face(n, fi)) continue; // arithmetic only: before the look-ups
-            bool free = true;                    // no point of it kept at a level above
-            for (std::uint32_t m = clique; m != 0 && free; m &= m - 1) {
+            // No point of it kept at a level above (nothing is kept above the squares).
+            bool free = true;
+            for (std::uint32_t m = d == 2 ? 0u : clique; m != 0 && free; m &= m - 1) {
               const std::uint8_t g = flag(p + off27[static_cast<std::size_t>(std::countr_zero(m))]);
               free = (g & kKept) == 0;
             }
