@@ -9,7 +9,7 @@
 namespace zdg {
 namespace {
 
-constexpr std::uint8_t kObject = 1, kBorder = 2, kAnchor = 4, kSimple = 8, kKept = 16;
+constexpr std::uint8_t kObject = 1, kActive = 2, kAnchor = 4, kSimple = 8, kKept = 16;
 
 // The 26 faces of the unit cube of the centre point x of a 3x3x3 neighbourhood, in local
 // Khalimsky coordinates k in {2, 3, 4}^3 (the point at local position v in {0, 1, 2}^3 is the
@@ -27,7 +27,8 @@ struct Face {
 
 struct FaceTable {
   std::array<Face, 26> face;
-  std::array<int, 125> id{}; // local cell (k0 * 25 + k1 * 5 + k2) -> face, or -1
+  std::array<int, 125> id{};              // local cell (k0 * 25 + k1 * 5 + k2) -> face, or -1
+  std::array<std::vector<int>, 3> of_dim; // the faces of dimension 0, 1, 2
 
   static std::uint32_t incident(int k0, int k1, int k2) {
     auto choices = [](int k) {
@@ -64,6 +65,7 @@ struct FaceTable {
           Face& f = face[static_cast<std::size_t>(i)];
           const std::array<int, 3> k{k0, k1, k2};
           f.dim = (k0 % 2) + (k1 % 2) + (k2 % 2);
+          of_dim[static_cast<std::size_t>(f.dim)].push_back(i);
           f.incident = incident(k0, k1, k2);
           for (int a = 0; a < 3; ++a) {
             for (int s : {-1, 1}) {
@@ -117,50 +119,43 @@ struct FaceTable {
   }
 };
 
-// The critical faces (bit per face id) of the cube of the centre of the 27-bit neighbourhood n
-// (centre set) for the object n, as in the header.
-std::uint32_t critical_faces(std::uint32_t n) {
+// Is face i of the centre's cube essential for the object n (27-bit neighbourhood)?
+bool essential(const FaceTable& t, std::uint32_t n, int i) {
+  const Face& f = t.face[static_cast<std::size_t>(i)];
+  const std::uint32_t clique = n & f.incident;
+  if (clique == 0) return false;
+  for (int c = 0; c < f.cofaces; ++c) {
+    if ((clique & ~f.coface[static_cast<std::size_t>(c)]) == 0) return false;
+  }
+  return true;
+}
+
+// Is face i critical (essential, and its core not contractible), as in the header?
+bool critical_face(std::uint32_t n, int i) {
   const FaceTable& t = FaceTable::get();
-  std::uint32_t essential = 0;
-  for (int i = 0; i < 26; ++i) {
-    const Face& f = t.face[static_cast<std::size_t>(i)];
-    const std::uint32_t clique = n & f.incident;
-    bool ess = clique != 0;
-    for (int c = 0; c < f.cofaces && ess; ++c) {
-      ess = (clique & ~f.coface[static_cast<std::size_t>(c)]) != 0;
-    }
-    if (ess) essential |= std::uint32_t{1} << i;
+  if (!essential(t, n, i)) return false;
+  const Face& f = t.face[static_cast<std::size_t>(i)];
+  if (f.dim == 0) return true; // empty core
+  if (f.dim == 1) {
+    return (essential(t, n, f.edge[0]) ? 1 : 0) + (essential(t, n, f.edge[1]) ? 1 : 0) != 1;
   }
-  auto is_ess = [&](int i) { return ((essential >> i) & 1u) != 0; };
-  std::uint32_t critical = 0;
-  for (int i = 0; i < 26; ++i) {
-    if (!is_ess(i)) continue;
-    const Face& f = t.face[static_cast<std::size_t>(i)];
-    bool crit = true;
-    if (f.dim == 1) {
-      crit = (is_ess(f.edge[0]) ? 1 : 0) + (is_ess(f.edge[1]) ? 1 : 0) != 1;
-    } else if (f.dim == 2) {
-      // The core on the boundary circle: vertices (essential ones and ends of essential
-      // edges) and essential edges; one arc iff |V| - |E| = 1 with |E| < 4.
-      std::uint32_t vertices = 0;
-      int edges = 0;
-      for (int v = 0; v < 4; ++v) {
-        if (is_ess(f.vertex[static_cast<std::size_t>(v)]))
-          vertices |= 1u << f.vertex[static_cast<std::size_t>(v)];
-      }
-      for (int e = 0; e < 4; ++e) {
-        const int ei = f.edge[static_cast<std::size_t>(e)];
-        if (!is_ess(ei)) continue;
-        ++edges;
-        const Face& edge = t.face[static_cast<std::size_t>(ei)];
-        vertices |= 1u << edge.edge[0];
-        vertices |= 1u << edge.edge[1];
-      }
-      crit = !(edges < 4 && std::popcount(vertices) - edges == 1);
-    }
-    if (crit) critical |= std::uint32_t{1} << i;
+  // A square: its core on the boundary circle has the essential vertices, the essential
+  // edges and their ends; it is one arc iff |V| - |E| = 1 with |E| < 4.
+  std::uint32_t vertices = 0;
+  int edges = 0;
+  for (int v = 0; v < 4; ++v) {
+    const int vi = f.vertex[static_cast<std::size_t>(v)];
+    if (essential(t, n, vi)) vertices |= 1u << vi;
   }
-  return critical;
+  for (int e = 0; e < 4; ++e) {
+    const int ei = f.edge[static_cast<std::size_t>(e)];
+    if (!essential(t, n, ei)) continue;
+    ++edges;
+    const Face& edge = t.face[static_cast<std::size_t>(ei)];
+    vertices |= 1u << edge.edge[0];
+    vertices |= 1u << edge.edge[1];
+  }
+  return !(edges < 4 && std::popcount(vertices) - edges == 1);
 }
 
 // floor(n k / w) without forming n k.
@@ -205,36 +200,31 @@ ThinningResult critical_kernel_thinning(const Image<std::uint8_t>& image,
   auto flag = [&](std::int64_t p) -> std::uint8_t& {
     return vol.flags[static_cast<std::size_t>(p)];
   };
-  auto neighbourhood27 = [&](std::int64_t p) {
-    std::uint32_t n = 0;
-    for (int j = 0; j < 27; ++j) {
-      n |= static_cast<std::uint32_t>(flag(p + off27[static_cast<std::size_t>(j)]) & kObject) << j;
-    }
-    return n;
-  };
 
-  // The border: object points, not anchors, with a face neighbour in the background.
-  std::vector<std::int64_t> border;
+  // The points to examine in the next pass; at first the border: object points, not anchors,
+  // with a face neighbour in the background (the others are not simple).
+  std::vector<std::int64_t> active;
   for (std::int64_t p = 0; p < vol.size(); ++p) {
     if ((flag(p) & (kObject | kAnchor)) != kObject) continue;
     for (std::int64_t o : face_offsets) {
       if ((flag(p + o) & kObject) == 0) {
-        border.push_back(p);
-        flag(p) |= kBorder;
+        active.push_back(p);
+        flag(p) |= kActive;
         break;
       }
     }
   }
 
   const unsigned threads = options.threads;
+  const int neighbours = vol.dim() == 3 ? 26 : 8;
   ThinningResult result;
   for (;;) {
-    // 1. Verdicts on the border, from the object at the start of the pass.
-    std::vector<std::uint8_t> verdict(border.size(), 0); // 1 simple, 2 skeleton point
+    // 1. Verdicts on the active points, from the object at the start of the pass.
+    std::vector<std::uint8_t> verdict(active.size(), 0); // 1 simple, 2 skeleton point
     parallel_chunks(
-        static_cast<std::int64_t>(border.size()), threads, [&](std::int64_t b, std::int64_t e) {
+        static_cast<std::int64_t>(active.size()), threads, [&](std::int64_t b, std::int64_t e) {
           for (std::int64_t i = b; i < e; ++i) {
-            const std::uint32_t c = vol.configuration(border[static_cast<std::size_t>(i)]);
+            const std::uint32_t c = vol.configuration(active[static_cast<std::size_t>(i)]);
             if (conditional && detail::is_skeleton_point(options.skeleton, pair, c)) {
               verdict[static_cast<std::size_t>(i)] = 2;
             } else if (simple(c)) {
@@ -242,30 +232,34 @@ ThinningResult critical_kernel_thinning(const Image<std::uint8_t>& image,
             }
           }
         });
-    std::vector<std::int64_t> candidates; // simple border points: the only deletable ones
-    {
-      std::vector<std::int64_t> kept_border;
-      for (std::size_t i = 0; i < border.size(); ++i) {
-        const std::int64_t p = border[i];
-        if (verdict[i] == 2) {
-          flag(p) = static_cast<std::uint8_t>((flag(p) | kAnchor) & ~kBorder);
-          continue;
-        }
-        kept_border.push_back(p);
-        if (verdict[i] == 1) {
-          flag(p) |= kSimple;
-          candidates.push_back(p);
-        }
+    // The active points leave the list; simple ones are this pass's candidates.
+    std::vector<std::int64_t> candidates;
+    for (std::size_t i = 0; i < active.size(); ++i) {
+      const std::int64_t p = active[i];
+      flag(p) = static_cast<std::uint8_t>(flag(p) & ~kActive);
+      if (verdict[i] == 2) {
+        flag(p) |= kAnchor;
+      } else if (verdict[i] == 1) {
+        flag(p) |= kSimple;
+        candidates.push_back(p);
       }
-      border.swap(kept_border);
     }
-    // 2. Critical faces around every candidate.
+    // 2. Around every candidate, in one gather: the object (at the start of the pass) and the
+    // candidates, as 27-bit masks. Sorted candidates keep the gathers local.
+    std::sort(candidates.begin(), candidates.end());
     const std::int64_t nc = static_cast<std::int64_t>(candidates.size());
-    std::vector<std::uint32_t> critical(candidates.size());
+    std::vector<std::uint32_t> around(candidates.size()), simple_around(candidates.size());
     parallel_chunks(nc, threads, [&](std::int64_t b, std::int64_t e) {
       for (std::int64_t i = b; i < e; ++i) {
-        critical[static_cast<std::size_t>(i)] =
-            critical_faces(neighbourhood27(candidates[static_cast<std::size_t>(i)]));
+        const std::int64_t p = candidates[static_cast<std::size_t>(i)];
+        std::uint32_t n = 0, m = 0;
+        for (int j = 0; j < 27; ++j) {
+          const std::uint8_t g = flag(p + off27[static_cast<std::size_t>(j)]);
+          n |= static_cast<std::uint32_t>(g & kObject) << j;
+          m |= static_cast<std::uint32_t>((g & kSimple) != 0 ? 1u : 0u) << j;
+        }
+        around[static_cast<std::size_t>(i)] = n;
+        simple_around[static_cast<std::size_t>(i)] = m;
       }
     });
     // 3. K_2, K_1, K_0: critical cliques made of candidates only and disjoint from the kernel
@@ -278,20 +272,19 @@ ThinningResult critical_kernel_thinning(const Image<std::uint8_t>& image,
         auto& out = keep[static_cast<std::size_t>(k)];
         for (std::int64_t i = chunk_bound(nc, k, w); i < chunk_bound(nc, k + 1, w); ++i) {
           const std::int64_t p = candidates[static_cast<std::size_t>(i)];
-          std::uint32_t crit = critical[static_cast<std::size_t>(i)];
-          if (crit == 0) continue;
-          const std::uint32_t n = neighbourhood27(p);
-          while (crit != 0) {
-            const int fi = std::countr_zero(crit);
-            crit &= crit - 1;
-            const Face& f = ft.face[static_cast<std::size_t>(fi)];
-            if (f.dim != d) continue;
-            const std::uint32_t clique = n & f.incident;
-            if ((clique & ((1u << 13) - 1)) != 0) continue; // p is not its first point
+          const std::uint32_t n = around[static_cast<std::size_t>(i)];
+          for (int fi : ft.of_dim[static_cast<std::size_t>(d)]) {
+            const std::uint32_t clique = n & ft.face[static_cast<std::size_t>(fi)].incident;
+            // Each clique once, from its first point; only cliques of candidates matter (any
+            // other meets the kernel already), and only critical ones not met at a level above.
+            if (clique == 0 || (clique & ((1u << 13) - 1)) != 0) continue;
+            if ((clique & ~simple_around[static_cast<std::size_t>(i)]) != 0) continue;
+            if (!critical_face(n, fi)) continue; // arithmetic only: before the look-ups
+            // No point of it kept at a level above (nothing is kept above the squares).
             bool free = true;
-            for (std::uint32_t m = clique; m != 0 && free; m &= m - 1) {
+            for (std::uint32_t m = d == 2 ? 0u : clique; m != 0 && free; m &= m - 1) {
               const std::uint8_t g = flag(p + off27[static_cast<std::size_t>(std::countr_zero(m))]);
-              free = (g & (kSimple | kKept)) == kSimple;
+              free = (g & kKept) == 0;
             }
             if (!free) continue;
             for (std::uint32_t m = clique; m != 0; m &= m - 1) {
@@ -308,7 +301,7 @@ ThinningResult critical_kernel_thinning(const Image<std::uint8_t>& image,
     std::vector<std::int64_t> deleted;
     for (std::int64_t p : candidates) {
       if ((flag(p) & kKept) == 0) {
-        flag(p) = static_cast<std::uint8_t>(flag(p) & ~(kObject | kBorder | kSimple));
+        flag(p) = static_cast<std::uint8_t>(flag(p) & ~(kObject | kSimple));
         deleted.push_back(p);
       } else {
         flag(p) = static_cast<std::uint8_t>(flag(p) & ~(kSimple | kKept));
@@ -322,22 +315,21 @@ ThinningResult critical_kernel_thinning(const Image<std::uint8_t>& image,
     if (options.deletions != nullptr) {
       for (std::int64_t p : deleted) options.deletions->push_back(vol.image_index(p));
     }
-    // 5. The next border: the border points still there, and the object face neighbours of
-    // the deleted points.
+    // 5. The next active points: the candidates kept (still simple unless their neighbourhood
+    // changed, and their cliques may no longer be crucial) and the object neighbours of the
+    // deleted points. Any other point keeps its neighbourhood, hence its verdict: not simple.
     std::vector<std::int64_t> next;
-    for (std::int64_t p : border) {
-      if ((flag(p) & kObject) != 0) next.push_back(p);
-    }
-    for (std::int64_t p : deleted) {
-      for (std::int64_t o : face_offsets) {
-        const std::int64_t q = p + o;
-        if ((flag(q) & (kObject | kBorder | kAnchor)) == kObject) {
-          flag(q) |= kBorder;
-          next.push_back(q);
-        }
+    auto activate = [&](std::int64_t q) {
+      if ((flag(q) & (kObject | kActive | kAnchor)) == kObject) {
+        flag(q) |= kActive;
+        next.push_back(q);
       }
+    };
+    for (std::int64_t p : candidates) activate(p);
+    for (std::int64_t p : deleted) {
+      for (int j = 0; j < neighbours; ++j) activate(p + vol.offset[static_cast<std::size_t>(j)]);
     }
-    border.swap(next);
+    active.swap(next);
     if (options.progress) options.progress({remaining, result.deleted, result.passes});
   }
   if (options.progress) options.progress({remaining, result.deleted, result.passes});

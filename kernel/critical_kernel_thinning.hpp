@@ -26,9 +26,13 @@
 // medial-axis kind breaks ties by scan order, so that kind is not), does not depend on the
 // thread count, and is a subset of X with the same Betti numbers (object and background).
 //
-// Cost per pass: O(B) for the B border points (6-border, the only ones that can be simple),
-// 26 faces each; passes ~ the largest inscribed radius. Whole cliques are kept where a
-// sequential thinning would pick one point, so results can be thicker (a 2x2x2 block stays).
+// Cost: the first pass examines the 6-border (the only points that can be simple), later
+// passes only the points whose neighbourhood changed and the candidates kept (any other point
+// keeps its verdict), O(1) each (the simplicity test, 26 faces); the number of passes is about
+// the largest inscribed radius, or the longest branch for the ultimate kind (open curves
+// shrink by their ends, one point per pass). The passes' work is split over the threads;
+// the bookkeeping between passes is sequential. Whole cliques are kept where a sequential
+// thinning would pick one point, so results can be thicker (a 2x2x2 block stays).
 #pragma once
 
 #include <zdg/kernel/skeleton_constraints.hpp>

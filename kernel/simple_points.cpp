@@ -202,7 +202,14 @@ TopologicalNumbers topological_numbers(const AdjacencyPair& pair, std::uint32_t 
 }
 
 bool is_simple_by_definition(const AdjacencyPair& pair, std::uint32_t config) {
-  const TopologicalNumbers t = topological_numbers(pair, config);
+  if (!is_adjacency_pair(pair.dim, pair.object, pair.background) ||
+      config >= configuration_count(pair.dim)) {
+    (void)topological_numbers(pair, config); // throws the error
+  }
+  // Counting stops at 2: enough to tell 1 from the rest.
+  const TopologicalNumbers t = pair.dim == 3
+                                   ? Cube<3>::numbers(pair.object, pair.background, config, 2)
+                                   : Cube<2>::numbers(pair.object, pair.background, config, 2);
   return t.object == 1 && t.background == 1;
 }
 

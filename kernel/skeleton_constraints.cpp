@@ -45,12 +45,13 @@ PaddedVolume::PaddedVolume(const Image<std::uint8_t>& image) {
     throw InvalidArgument("thinning: the padded image does not fit int64 indices");
   }
   flags.assign(static_cast<std::size_t>(total), 0);
-  const std::int64_t n1 = extent[1] - 2, n2 = extent[2] - 2;
-  for (std::int64_t i = 0; i < d.size(); ++i) {
-    if (image[i] != 0) flags[static_cast<std::size_t>(padded_index(i))] = 1;
+  // Row by row: row r of the image (n2 points) starts at padded_index(r * n2).
+  const std::int64_t n2 = extent[2] - 2, rows = d.size() / n2;
+  for (std::int64_t r = 0; r < rows; ++r) {
+    const std::uint8_t* src = image.values().data() + r * n2;
+    std::uint8_t* dst = flags.data() + padded_index(r * n2);
+    for (std::int64_t x = 0; x < n2; ++x) dst[x] = src[x] != 0 ? 1 : 0;
   }
-  (void)n1;
-  (void)n2;
   int j = 0;
   const int r0 = dim_ == 3 ? 1 : 0;
   for (int a = -r0; a <= r0; ++a) {
@@ -78,8 +79,11 @@ std::int64_t PaddedVolume::image_index(std::int64_t p) const {
 
 Image<std::uint8_t> PaddedVolume::object(const Domain& domain) const {
   Image<std::uint8_t> out(domain, std::uint8_t{0});
-  for (std::int64_t i = 0; i < domain.size(); ++i) {
-    out[i] = flags[static_cast<std::size_t>(padded_index(i))] & 1u;
+  const std::int64_t n2 = extent[2] - 2, rows = domain.size() / n2;
+  for (std::int64_t r = 0; r < rows; ++r) {
+    const std::uint8_t* src = flags.data() + padded_index(r * n2);
+    std::uint8_t* dst = out.values().data() + r * n2;
+    for (std::int64_t x = 0; x < n2; ++x) dst[x] = src[x] & 1u;
   }
   return out;
 }

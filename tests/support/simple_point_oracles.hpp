@@ -21,6 +21,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <cstdlib>
 
@@ -52,8 +53,15 @@ inline bool n_adjacent(int n, const std::array<int, 3>& a, const std::array<int,
 /// (index count) under n-adjacency, from the definition (n_adjacent); built once.
 struct AdjacencyMasks {
   std::array<std::array<std::uint32_t, 27>, 27> of{}; // of[n][j]
-  AdjacencyMasks(int dim) {
+  std::array<std::uint32_t, 4> region{};              // neighbours of l1 norm <= m
+  explicit AdjacencyMasks(int dim) {
     const int count = dim == 3 ? 26 : 8;
+    for (int m = 1; m <= 3; ++m) {
+      for (int j = 0; j < count; ++j) {
+        if (offset_l1(configuration_offset(dim, j)) <= m)
+          region[static_cast<std::size_t>(m)] |= std::uint32_t{1} << j;
+      }
+    }
     const std::array<int, 3> origin{0, 0, 0};
     for (int n : {4, 6, 8, 18, 26}) {
       for (int j = 0; j <= count; ++j) {
@@ -82,27 +90,23 @@ inline int geodesic_topological_number(int dim, int n, bool plus, std::uint32_t 
   if (n == 6 || n == 4) order = 2, region_m = 2;
   if (n == 6 && plus) order = 3, region_m = 3;
   if (n == 18) order = 2, region_m = 3;
-  std::uint32_t region = 0;
-  for (int j = 0; j < count; ++j) {
-    if (offset_l1(configuration_offset(dim, j)) <= region_m) region |= std::uint32_t{1} << j;
-  }
+  const std::uint32_t region = AdjacencyMasks::get(dim).region[static_cast<std::size_t>(region_m)];
   // N^1: the points of Y n-adjacent to x; N^k: N^{k-1} and the points of Y in the region
   // n-adjacent to a point of N^{k-1}.
   std::uint32_t g = y & adj[static_cast<std::size_t>(count)];
   for (int k = 2; k <= order; ++k) {
     std::uint32_t next = g;
-    for (int j = 0; j < count; ++j) {
-      if (((y & region) >> j & 1u) != 0 && (adj[static_cast<std::size_t>(j)] & g) != 0) {
-        next |= std::uint32_t{1} << j;
-      }
+    for (std::uint32_t rest = y & region & ~g; rest != 0; rest &= rest - 1) {
+      const int j = std::countr_zero(rest);
+      if ((adj[static_cast<std::size_t>(j)] & g) != 0) next |= std::uint32_t{1} << j;
     }
     g = next;
   }
   // n-components of G by depth-first search.
   std::uint32_t seen = 0;
   int components = 0;
-  for (int s = 0; s < count; ++s) {
-    if (((g & ~seen) >> s & 1u) == 0) continue;
+  for (std::uint32_t starts = g; starts != 0; starts &= ~seen) {
+    const int s = std::countr_zero(starts);
     ++components;
     std::array<int, 27> stack{};
     int top = 0;
@@ -110,11 +114,10 @@ inline int geodesic_topological_number(int dim, int n, bool plus, std::uint32_t 
     seen |= std::uint32_t{1} << s;
     while (top > 0) {
       const int a = stack[static_cast<std::size_t>(--top)];
-      for (int b = 0; b < count; ++b) {
-        if (((g & ~seen & adj[static_cast<std::size_t>(a)]) >> b & 1u) != 0) {
-          seen |= std::uint32_t{1} << b;
-          stack[static_cast<std::size_t>(top++)] = b;
-        }
+      for (std::uint32_t nb = g & ~seen & adj[static_cast<std::size_t>(a)]; nb != 0; nb &= nb - 1) {
+        const int b = std::countr_zero(nb);
+        seen |= std::uint32_t{1} << b;
+        stack[static_cast<std::size_t>(top++)] = b;
       }
     }
   }
