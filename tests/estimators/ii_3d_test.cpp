@@ -39,8 +39,8 @@ TEST(IntegralInvariants3D, IncrementalMomentsEqualDirectMoments) {
     const VoxelBox box{{-8, -3, -4}, {10, 7, 4}};
     const auto surfels = zdg::boundary_surfels(in, box);
     const bool shared = *rc::gen::arbitrary<bool>();
-    const auto m = zdg::detail::ii_surfel_moments(in, box, surfels, r2, threads, second,
-                                                  shared ? std::size_t{1} << 29 : 0);
+    const auto m = zdg::detail::ii_surfel_moments_incremental(in, box, surfels, r2, threads, second,
+                                                              shared ? std::size_t{1} << 29 : 0);
     RC_ASSERT(m.stats.shared_cache == shared);
     RC_ASSERT(m.moments.size() == surfels.size());
     for (std::size_t i = 0; i < surfels.size(); ++i) {
@@ -58,12 +58,41 @@ TEST(IntegralInvariants3D, IncrementalMomentsEqualDirectMoments) {
   });
 }
 
+// The column counter (the default) and the incremental walk give the same integers at every
+// inner and outer voxel, on random unions of balls with random radii.
+TEST(IntegralInvariants3D, ColumnCounterEqualsIncrementalCounter) {
+  zdg::test::check_property([] {
+    const auto r2 = *rc::gen::inRange<std::int64_t>(0, 40);
+    const auto c1 =
+        Voxel{*rc::gen::inRange<std::int64_t>(-4, 4), *rc::gen::inRange<std::int64_t>(-4, 4),
+              *rc::gen::inRange<std::int64_t>(-4, 4)};
+    const auto c2 =
+        Voxel{*rc::gen::inRange<std::int64_t>(-4, 8), *rc::gen::inRange<std::int64_t>(-4, 4),
+              *rc::gen::inRange<std::int64_t>(-6, 4)};
+    const auto b1 = ball(c1, *rc::gen::inRange<std::int64_t>(0, 30));
+    const auto b2 = ball(c2, *rc::gen::inRange<std::int64_t>(0, 20));
+    const zdg::VoxelPredicate in = [&](const Voxel& z) { return b1(z) != b2(z); };
+    const VoxelBox box{{-9, -7, -8}, {11, 8, 7}};
+    const auto surfels = zdg::boundary_surfels(in, box);
+    const bool second = *rc::gen::arbitrary<bool>();
+    const int threads = *rc::gen::inRange(1, 4);
+    const auto fast = zdg::ii_surfel_moments(in, box, surfels, r2, threads, second);
+    const auto walk = zdg::ii_surfel_moments_incremental(in, box, surfels, r2, threads, second);
+    RC_ASSERT(fast.moments.size() == walk.moments.size());
+    RC_ASSERT(fast.stats.voxels == walk.stats.voxels);
+    for (std::size_t i = 0; i < surfels.size(); ++i) {
+      RC_ASSERT(fast.moments[i].inner == walk.moments[i].inner);
+      RC_ASSERT(fast.moments[i].outer == walk.moments[i].outer);
+    }
+  });
+}
+
 // A closed surface is walked mostly by unit moves: few full counts.
 TEST(IntegralInvariants3D, WalkUsesUnitMoves) {
   const auto in = ball({0, 0, 0}, 15 * 15);
   const VoxelBox box{{-20, -20, -20}, {20, 20, 20}};
   const auto surfels = zdg::boundary_surfels(in, box);
-  const auto m = zdg::ii_surfel_moments(in, box, surfels, 16, 2, false);
+  const auto m = zdg::ii_surfel_moments_incremental(in, box, surfels, 16, 2, false);
   EXPECT_LT(m.stats.full_counts, m.stats.voxels / 10);
   EXPECT_LT(m.stats.unit_moves, 2 * m.stats.voxels);
 }
