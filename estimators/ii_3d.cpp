@@ -471,41 +471,31 @@ double ii_mean_curvature_from_moments(const SurfelBallMoments& m, double h, doub
 
 IIPrincipalCurvatures ii_principal_curvatures_from_moments(const SurfelBallMoments& m,
                                                            const Surfel& s, double h, double R) {
-  // Moments about the surfel centre s, in exact integers: for a kernel centred at c,
-  // 2 (p - s) = 2 q + delta with q = p - c and delta = 2 (c - s) = -n (inner), +n (outer).
+  // Covariance matrix of each kernel about its own centroid, in voxel units:
+  // J = (m0 m2 - m1 m1^T) / m0, the numerator exact in int128; J = 0 for an empty kernel.
+  // The estimate uses their average (DGtal's DigitalSurfaceConvolver with lambda = 1/2).
   for (const BallMoments* b : {&m.inner, &m.outer})
     if (b->m0 > 1 && b->m2[0] + b->m2[1] + b->m2[2] == 0)
       throw InvalidArgument("integral invariants: the moments of surfel (" + std::to_string(s.k.x) +
                             ", " + std::to_string(s.k.y) + ", " + std::to_string(s.k.z) +
                             ") lack the second order (computed with second_order = false)");
-  const Point3<int> nrm = trivial_normal(s);
-  const int n[3] = {nrm.x, nrm.y, nrm.z};
-  static constexpr int cross[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
-  int128_t S0 = 0, S1[3] = {0, 0, 0}, S2[3][3] = {};
-  for (int side = 0; side < 2; ++side) {
-    const BallMoments& b = side == 0 ? m.inner : m.outer;
-    const int sg = side == 0 ? -1 : 1;
-    const int delta[3] = {sg * n[0], sg * n[1], sg * n[2]};
-    S0 += b.m0;
-    for (int i = 0; i < 3; ++i) {
-      S1[i] += 2 * int128_t(b.m1[std::size_t(i)]) + int128_t(b.m0) * delta[i];
-      for (int j = 0; j < 3; ++j)
-        S2[i][j] += 4 * int128_t(b.m2[std::size_t(cross[i][j])]) +
-                    2 * int128_t(b.m1[std::size_t(i)]) * delta[j] +
-                    2 * int128_t(b.m1[std::size_t(j)]) * delta[i] +
-                    int128_t(b.m0) * delta[i] * delta[j];
-    }
-  }
-  if (S0 == 0)
+  if (m.inner.m0 + m.outer.m0 == 0)
     throw InvalidArgument("integral invariants: empty kernels at surfel (" + std::to_string(s.k.x) +
                           ", " + std::to_string(s.k.y) + ", " + std::to_string(s.k.z) +
                           "): not a boundary surfel of the set");
-  // Averaged moments m0 = S0 / 2, m1 = S1 / 4, m2 = S2 / 8, so the covariance in voxel units
-  // is (S0 S2 - S1 S1^T) / (8 S0), formed exactly before the one rounding.
-  Eigen::Matrix3d J;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      J(i, j) = double(S0 * S2[i][j] - S1[i] * S1[j]) / (8.0 * double(S0));
+  static constexpr int cross[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  for (const BallMoments* b : {&m.inner, &m.outer}) {
+    if (b->m0 == 0) continue;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int128_t num = int128_t(b->m0) * b->m2[std::size_t(cross[i][j])] -
+                             int128_t(b->m1[std::size_t(i)]) * b->m1[std::size_t(j)];
+        J(i, j) += 0.5 * double(num) / double(b->m0);
+      }
+  }
+  const Point3<int> nrm = trivial_normal(s);
+  const int n[3] = {nrm.x, nrm.y, nrm.z};
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(J);
   const double h5 = h * h * h * h * h;
   const double l1 = h5 * es.eigenvalues()(2), l2 = h5 * es.eigenvalues()(1);

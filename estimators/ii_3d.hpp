@@ -9,10 +9,12 @@
 //            eigenvectors v1, v2, v3:
 //            k1 = 6/(pi R^6) (l2 - 3 l1) + 8/(5R),  k2 = 6/(pi R^6) (l1 - 3 l2) + 8/(5R),
 //            so k1 <= k2; principal directions v1 (of k1), v2 (of k2); normal v3.
-// Each estimate at a surfel averages the kernel centred at its inner and at its outer voxel
-// (the moments are averaged about the surfel centre, then J is formed). Rates: O(h^{1/3}) for H,
-// k1, k2 with R = k h^{1/3}; O(h^{2/3}) for the normal (CVIU 2014, Thm 6;
-// Lachaud-Coeurjolly-Levallois 2017).
+// Each estimate at a surfel averages the kernels centred at its inner and at its outer voxel,
+// as DGtal's implementation behind the paper's experiments does (DigitalSurfaceConvolver,
+// lambda = 1/2): H from the average of the two counts, the principal curvatures and
+// directions from the average of the two covariance matrices (each about its own
+// centroid). Rates: O(h^{1/3}) for H, k1, k2 with R = k h^{1/3}; O(h^{2/3}) for the normal
+// (CVIU 2014, Thm 6; Lachaud-Coeurjolly-Levallois 2017).
 //
 // Counting: ii_surfel_moments counts the ball at every distinct inner/outer voxel from the
 // column runs of the set (estimators/ball_moments.hpp): about pi r^2 column operations per
@@ -29,7 +31,7 @@
 //
 // Integer width: counts and moments are exact int64, relative to the ball centre; with
 // r <= 256 (checked at entry, InvalidArgument past it) every sum is below (2r+3)^3 (r+1)^2
-// < 2^48, and the combination about the surfel centre uses int128_t.
+// < 2^48, and the covariance numerators m0 m2 - m1 m1^T use int128_t.
 #pragma once
 
 #include <zdg/estimators/ball_moments.hpp>
@@ -116,8 +118,9 @@ std::vector<IIPrincipalCurvatures> ii_principal_curvatures(const VoxelPredicate&
                                                            double h, double R, int threads = 1);
 
 /// The formulas alone, from the moments of one surfel (for drivers that keep the moments):
-/// H from the averaged count, and the principal curvatures from the averaged moments (which
-/// must have been computed with second_order = true: InvalidArgument otherwise).
+/// H from the averaged count, and the principal curvatures from the average of the
+/// covariance matrices of the two kernels (the moments must have been computed with
+/// second_order = true: InvalidArgument otherwise).
 double ii_mean_curvature_from_moments(const SurfelBallMoments& m, double h, double R);
 IIPrincipalCurvatures ii_principal_curvatures_from_moments(const SurfelBallMoments& m,
                                                            const Surfel& s, double h, double R);

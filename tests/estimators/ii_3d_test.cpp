@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -84,6 +86,48 @@ TEST(IntegralInvariants3D, ColumnCounterEqualsIncrementalCounter) {
       RC_ASSERT(fast.moments[i].inner == walk.moments[i].inner);
       RC_ASSERT(fast.moments[i].outer == walk.moments[i].outer);
     }
+  });
+}
+
+// The principal curvatures come from the average of the covariance matrices of the inner and
+// outer kernels, each about its own centroid (DGtal's convention behind CVIU 2014): oracle =
+// the two matrices summed voxel by voxel, in long double.
+TEST(IntegralInvariants3D, PrincipalCurvaturesAverageTheTwoCovarianceMatrices) {
+  zdg::test::check_property([] {
+    const auto r2 = *rc::gen::inRange<std::int64_t>(4, 40);
+    const auto b1 = ball({0, 0, 0}, *rc::gen::inRange<std::int64_t>(9, 40));
+    const auto b2 = ball({4, 1, -2}, *rc::gen::inRange<std::int64_t>(0, 20));
+    const zdg::VoxelPredicate in = [&](const Voxel& z) { return b1(z) || b2(z); };
+    const VoxelBox box{{-10, -10, -10}, {10, 10, 10}};
+    const auto surfels = zdg::boundary_surfels(in, box);
+    const auto s = surfels[*rc::gen::inRange<std::size_t>(0, surfels.size())];
+    const double h = 0.1, R = 0.1 * std::sqrt(double(r2)) + 0.01;
+    const auto m = zdg::ii_surfel_moments(in, box, std::vector<Surfel>{s}, r2, 1, true);
+    const auto pc = zdg::ii_principal_curvatures_from_moments(m.moments[0], s, h, R);
+    Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+    const std::int64_t r = std::int64_t(std::sqrt(double(r2))) + 1;
+    for (const Voxel c : {zdg::inner_voxel(s), zdg::outer_voxel(s)}) {
+      std::vector<Eigen::Vector3d> pts;
+      for (std::int64_t z = -r; z <= r; ++z)
+        for (std::int64_t y = -r; y <= r; ++y)
+          for (std::int64_t x = -r; x <= r; ++x) {
+            const Voxel p{c.x + x, c.y + y, c.z + z};
+            if (x * x + y * y + z * z <= r2 && box.contains(p) && in(p))
+              pts.emplace_back(double(x), double(y), double(z));
+          }
+      if (pts.empty()) continue;
+      Eigen::Vector3d g = Eigen::Vector3d::Zero();
+      for (const auto& q : pts) g += q;
+      g /= double(pts.size());
+      for (const auto& q : pts) J += 0.5 * (q - g) * (q - g).transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(J);
+    const double h5 = std::pow(h, 5), c6 = 6.0 / (M_PI * std::pow(R, 6));
+    const double l1 = h5 * es.eigenvalues()(2), l2 = h5 * es.eigenvalues()(1);
+    const double k1 = c6 * (l2 - 3 * l1) + 8.0 / (5.0 * R),
+                 k2 = c6 * (l1 - 3 * l2) + 8.0 / (5.0 * R);
+    RC_ASSERT(std::abs(pc.k1 - k1) <= 1e-9 * (1 + std::abs(k1)));
+    RC_ASSERT(std::abs(pc.k2 - k2) <= 1e-9 * (1 + std::abs(k2)));
   });
 }
 
