@@ -103,6 +103,17 @@ std::vector<double> parse_grid_steps(const std::string& text) {
   return hs;
 }
 
+std::vector<double> parse_k_per_shape(const std::string& text, std::size_t shapes) {
+  std::vector<double> ks;
+  for (const auto& item : split(text, ',')) ks.push_back(parse_parameter(item, "--k"));
+  if (ks.size() == 1) ks.assign(std::max<std::size_t>(shapes, 1), ks[0]);
+  if (ks.size() != shapes) {
+    throw InvalidArgument("--k '" + text + "': expected one value or one per shape (" +
+                          std::to_string(shapes) + ")");
+  }
+  return ks;
+}
+
 std::pair<double, double> parse_box(const std::string& text) {
   auto parts = split(text, ':');
   if (parts.size() != 2) throw InvalidArgument("--box '" + text + "': expected LO:HI");
@@ -124,6 +135,8 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
   }
   std::vector<std::unique_ptr<Shape>> shapes;
   for (const auto& s : config.shapes) shapes.push_back(parse_shape(s));
+  const std::vector<double> ks =
+      config.k_text ? parse_k_per_shape(*config.k_text, shapes.size()) : std::vector<double>{};
   std::vector<const Estimator*> ests;
   for (const auto& e : config.estimators) ests.push_back(&find_estimator(e));
   for (const auto& s : shapes) {
@@ -172,7 +185,7 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
         r.offset = config.translations == 0
                        ? std::vector<double>(static_cast<std::size_t>(d), 0.0)
                        : random_translation(config.seed, job.translation, d, job.h);
-        r.k = config.k_text ? parse_parameter(*config.k_text, "--k") : est.default_k;
+        r.k = config.k_text ? ks[job.shape] : est.default_k;
         r.alpha = config.alpha_text ? number(*config.alpha_text, "--alpha") : est.default_alpha;
         std::vector<std::pair<double, double>> box;
         if (config.box) {

@@ -30,7 +30,7 @@ struct ExperimentConfig {
   std::vector<std::string> estimators;
   std::vector<double> hs;                // grid steps (any order; sorted decreasing)
   std::string h_text;                    // as given, for the provenance
-  std::optional<std::string> k_text;     // parameter k (rational), default per estimator
+  std::optional<std::string> k_text;     // k (rational), or one per shape; default per estimator
   std::optional<std::string> alpha_text; // exponent alpha (rational), default per estimator
   int translations = 0;                  // 0: the untranslated shape only
   std::uint64_t seed = 0;
@@ -47,6 +47,10 @@ std::vector<double> parse_grid_steps(const std::string& text);
 std::pair<double, double> parse_box(const std::string& text);
 /// A positive rational or decimal as a double, naming `what` in errors.
 double parse_parameter(const std::string& text, const std::string& what);
+/// The parameter k of each of `shapes` shapes from `K` (one value for all) or `K1,K2,...`
+/// (one per shape, in the order of ExperimentConfig::shapes: papers whose shapes were run
+/// with different constants); throws InvalidArgument otherwise.
+std::vector<double> parse_k_per_shape(const std::string& text, std::size_t shapes);
 
 struct RunRecord {
   std::string shape, estimator;

@@ -174,7 +174,7 @@ ExperimentConfig make_config(const ConvergeOptions& o) {
   c.threads = o.threads < 0 ? 1 : o.threads;
   c.tolerance = o.tolerance < 0 ? 0.1 : o.tolerance;
   // Validate the parameters before any work.
-  if (c.k_text) parse_parameter(*c.k_text, "--k");
+  if (c.k_text) parse_k_per_shape(*c.k_text, c.shapes.size());
   if (c.alpha_text) parse_parameter(*c.alpha_text, "--alpha");
   return c;
 }
@@ -406,7 +406,9 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     cmd->add_option("--shape", o->shapes, "Shape, e.g. ellipse:20,7 (repeatable; see --list)");
     cmd->add_option("--estimator", o->estimators, "Estimator name (repeatable; see --list)");
     cmd->add_option("--h", o->h, "Grid steps: HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
-    cmd->add_option("--k", o->k, "Parameter k (R = k h^alpha, mask factor), rational");
+    cmd->add_option(
+        "--k", o->k,
+        "Parameter k (R = k h^alpha, mask factor), rational; or one per shape: K1,K2,...");
     cmd->add_option("--alpha", o->alpha, "Exponent alpha of R = k h^alpha, rational");
     cmd->add_option("--translations", o->translations,
                     "Random sub-pixel translations per h (0: untranslated)")
