@@ -7,7 +7,9 @@ namespace zdg {
 
 std::optional<TheoryRate> theory_rate(const std::string& estimator, const Shape& shape,
                                       double alpha) {
-  const std::string spec = shape.spec();
+  std::string spec = shape.spec();
+  // unprojected:SHAPE is SHAPE with its ground truth at the surfel centre: same rates.
+  if (spec.rfind("unprojected:", 0) == 0) spec = spec.substr(12);
   const std::string kind = spec.substr(0, spec.find(':'));
   const bool smooth_convex = kind == "ball" || kind == "ellipse"; // C^3 strictly convex
   const bool polygon = kind == "polygon";
