@@ -173,15 +173,21 @@ BallMoments ball_from_runs(const ColumnRuns& runs, const Disc& disc, const Voxel
     const std::int64_t y = c.y + v, x0 = c.x - U;
     const std::size_t col = runs.column(x0, y);
     for (int k = 0; k < runs.layers(); ++k) {
+      std::int32_t j0 = 0, j1 = len - 1;
       if (k > 0) {
-        if (!runs.covering(k, y, x0, x0 + 2 * U)) break;
-        layer_segments += std::size_t(len);
+        // Only between the first and the last column of the line with more than k runs.
+        const auto [first, last] = runs.deeper_range(k, y, x0, x0 + 2 * U);
+        if (first > last) break;
+        j0 = std::int32_t(first - x0);
+        j1 = std::int32_t(last - x0);
+        layer_segments += std::size_t(j1 - j0 + 1);
       }
-      const std::int32_t* a = runs.begin[std::size_t(k)].data() + col;
-      const std::int32_t* b = runs.end[std::size_t(k)].data() + col;
+      const std::int32_t n = j1 - j0 + 1;
+      const std::int32_t* a = runs.begin[std::size_t(k)].data() + col + std::size_t(j0);
+      const std::int32_t* b = runs.end[std::size_t(k)].data() + col + std::size_t(j0);
       if constexpr (Second) {
-        const LineSums s = r <= kInt32LineRadius ? line_sums32(a, b, w, len, zc, U)
-                                                 : line_sums64(a, b, w, len, zc, U);
+        const LineSums s = r <= kInt32LineRadius ? line_sums32(a, b, w + j0, n, zc, U - j0)
+                                                 : line_sums64(a, b, w + j0, n, zc, U - j0);
         m0 += s.n;
         mx += s.nu;
         my += v * s.n;
@@ -193,7 +199,7 @@ BallMoments ball_from_runs(const ColumnRuns& runs, const Disc& disc, const Voxel
         mxz2 += s.s1ux2;
         myz2 += v * s.s1x2;
       } else {
-        m0 += line_counts(a, b, w, len, zc);
+        m0 += line_counts(a, b, w + j0, n, zc);
       }
     }
   }

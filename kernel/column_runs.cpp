@@ -29,6 +29,20 @@ std::vector<std::pair<std::int64_t, std::int64_t>> ColumnRuns::runs(std::int64_t
   return out;
 }
 
+std::pair<std::int64_t, std::int64_t>
+ColumnRuns::deeper_range(int layer, std::int64_t y, std::int64_t x0, std::int64_t x1) const {
+  // d[i] = number of columns before index i of the row with more than `layer` runs.
+  const auto& dv = deeper[std::size_t(layer - 1)];
+  const std::int32_t* d = dv.data() + std::size_t(y - region.lo.y) * std::size_t(nx + 1);
+  const std::int64_t i0 = x0 - region.lo.x, i1 = x1 - region.lo.x;
+  const std::int32_t before = d[i0], total = d[i1 + 1];
+  if (before == total) return {x1 + 1, x1};
+  // first: the smallest i with d[i + 1] > before; last: the smallest i with d[i + 1] == total.
+  const std::int32_t* first = std::upper_bound(d + i0 + 1, d + i1 + 2, before);
+  const std::int32_t* last = std::lower_bound(d + i0 + 1, d + i1 + 2, total);
+  return {region.lo.x + (first - d) - 1, region.lo.x + (last - d) - 1};
+}
+
 ColumnRuns column_runs(const VoxelPredicate& inside, const VoxelBox& box, const VoxelBox& region,
                        unsigned threads, const BlockMask* needed) {
   check_voxel_box(box);

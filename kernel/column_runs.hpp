@@ -8,8 +8,8 @@
 // relative to region.lo.z, x fastest then y); a column with fewer runs holds the empty run
 // (kEmptyBegin, kEmptyEnd) there. layers() is the largest number of runs of a column.
 // covering(k, y, x0, x1) says in O(1) whether some column of row y with x0 <= x <= x1 has
-// more than k runs (prefix counts per row), so a consumer skips the empty layers of its
-// columns.
+// more than k runs (prefix counts per row), and deeper_range gives the first and the last
+// such column, so a consumer reads layer k only there.
 //
 // Which voxels are evaluated: every voxel of region, or, when a `needed` mask of
 // blocks is given, only the voxels of the needed blocks (blocks of kBlock^3 voxels aligned
@@ -29,6 +29,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace zdg {
@@ -57,6 +58,11 @@ struct ColumnRuns {
     const std::size_t row = std::size_t(y - region.lo.y) * std::size_t(nx + 1);
     return d[row + std::size_t(x1 - region.lo.x + 1)] != d[row + std::size_t(x0 - region.lo.x)];
   }
+  /// The first and the last x in [x0, x1] (absolute, inside the region) of row y whose
+  /// column has more than `layer` runs (layer >= 1); first > last when there is none.
+  /// O(log(x1 - x0)) by binary search on the prefix counts.
+  std::pair<std::int64_t, std::int64_t> deeper_range(int layer, std::int64_t y, std::int64_t x0,
+                                                     std::int64_t x1) const;
   /// The runs of column (x, y) in absolute z (for tests and diagnostics).
   std::vector<std::pair<std::int64_t, std::int64_t>> runs(std::int64_t x, std::int64_t y) const;
 };

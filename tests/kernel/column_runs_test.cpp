@@ -64,6 +64,14 @@ TEST(ColumnRuns, RunsAreTheSetColumnByColumn) {
         bool deeper = false;
         for (std::int64_t x = x0; x <= x1; ++x) deeper = deeper || int(runs.runs(x, y).size()) > k;
         RC_ASSERT(runs.covering(k, y, x0, x1) == deeper);
+        std::int64_t first = x1 + 1, last = x1;
+        for (std::int64_t x = x0; x <= x1; ++x)
+          if (int(runs.runs(x, y).size()) > k) {
+            first = std::min(first, x);
+            last = x;
+          }
+        if (first > x1) last = x1;
+        RC_ASSERT(runs.deeper_range(k, y, x0, x1) == std::make_pair(first, last));
       }
   });
 }
