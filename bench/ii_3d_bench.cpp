@@ -3,7 +3,7 @@
 //  * sphere1 (the unit sphere, box [-1.25, 1.25]^3) at h = 0.025 with R = 3 h^{1/3} (R/h ~ 35
 //    voxels, ~30,000 surfels), digitized exactly by the integer predicate |z|^2 <= 40^2;
 //  * the published protocol of CVIU 2014 (papers/cviu2014-ii3d): sphere9, rcube and goursat
-//    digitized by their exact polynomial predicates at h = exp(-i/10), R = 8.9 h^{1/3}, on a
+//    digitized by their exact polynomial predicates at h = exp(-i/10), R = 9 h^{1/3}, on a
 //    patch of the surface (the surfels within distance 2 of a point of the surface, a few
 //    thousand, contiguous so that the incremental walk moves by unit steps as on the whole
 //    surface). Counters: `columns` (ii_surfel_moments, from the column runs) and `walk`
@@ -73,14 +73,14 @@ struct Patch {
 };
 
 // The surfels of the digitized shape within distance 2 of its surface point nearest to
-// (1, 2, 9), at h = exp(-i/10), R = 8.9 h^{1/3}.
+// (1, 2, 9), at h = exp(-i/10), R = 9 h^{1/3}.
 const Patch& patch(const std::string& shape, int i) {
   static std::map<std::pair<std::string, int>, Patch> cache;
   auto it = cache.find({shape, i});
   if (it != cache.end()) return it->second;
   Patch p;
   p.h = std::exp(-i / 10.0);
-  p.R = 8.9 * std::cbrt(p.h);
+  p.R = 9.0 * std::cbrt(p.h);
   const auto s = zdg::parse_shape(shape);
   const auto& s3 = dynamic_cast<const zdg::Shape3&>(*s);
   p.inside = s3.digitize(p.h, {0.1, 0.2, 0.3});
