@@ -1,12 +1,22 @@
-// The target case of the 3D integral invariants: sphere1 (the unit sphere, box
-// [-1.25, 1.25]^3) at h = 0.025 with R = 3 h^{1/3} (R/h ~ 35 voxels, ~30,000 surfels).
-// The unit sphere at h = 1/40 is digitized exactly by the integer predicate |z|^2 <= 40^2.
+// The 3D integral invariants, old counter against new, per surfel.
+//
+//  * sphere1 (the unit sphere, box [-1.25, 1.25]^3) at h = 0.025 with R = 3 h^{1/3} (R/h ~ 35
+//    voxels, ~30,000 surfels), digitized exactly by the integer predicate |z|^2 <= 40^2;
+//  * the published protocol of CVIU 2014 (papers/cviu2014-ii3d): sphere9, rcube and goursat
+//    digitized by their exact polynomial predicates at h = exp(-i/10), R = 9 h^{1/3}, on a
+//    patch of the surface (the surfels within distance 2 of a point of the surface, a few
+//    thousand, contiguous so that the incremental walk moves by unit steps as on the whole
+//    surface). Counters: `columns` (ii_surfel_moments, from the column runs) and `walk`
+//    (ii_surfel_moments_incremental); both give the same integers (checked here too).
 //   build/bin/ii_3d_bench --benchmark_counters_tabular=true
+#include <zdg/convergence/shapes_3d.hpp>
 #include <zdg/estimators/ii_3d.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <map>
+#include <stdexcept>
 
 namespace {
 
@@ -37,49 +47,130 @@ void BM_TrackSurface(benchmark::State& state) {
   }
 }
 
-void BM_ScanSurface(benchmark::State& state) {
-  for (auto _ : state) {
-    const auto s = zdg::boundary_surfels(sphere1(), kBox);
-    benchmark::DoNotOptimize(s.data());
-  }
-}
-
-void BM_IIMeanCurvature(benchmark::State& state) {
+template <bool Columns>
+void BM_Sphere1Moments(benchmark::State& state) {
   const int threads = int(state.range(0));
-  double max_err = 0;
+  const auto r2 = zdg::ii_digital_radius2(kR, kH);
+  zdg::IISurfelMoments m;
   for (auto _ : state) {
-    const auto H = zdg::ii_mean_curvature(sphere1(), kBox, surface(), kH, kR, threads);
-    max_err = 0;
-    for (const double v : H) max_err = std::max(max_err, std::abs(v - 1.0));
+    m = Columns ? zdg::ii_surfel_moments(sphere1(), kBox, surface(), r2, threads, true)
+                : zdg::ii_surfel_moments_incremental(sphere1(), kBox, surface(), r2, threads, true);
+    benchmark::DoNotOptimize(m.moments.data());
   }
-  const auto m = zdg::ii_surfel_moments(sphere1(), kBox, surface(), zdg::ii_digital_radius2(kR, kH),
-                                        threads, false);
   state.counters["surfels"] = double(surface().size());
   state.counters["r"] = kR / kH;
-  state.counters["centres"] = double(m.stats.voxels);
-  state.counters["full"] = double(m.stats.full_counts);
-  state.counters["moves"] = double(m.stats.unit_moves);
+  state.counters["us/surfel"] = benchmark::Counter(double(surface().size()) * 1e-6,
+                                                   benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
   state.counters["evals"] = double(m.stats.predicate_evaluations);
-  state.counters["linf_err"] = max_err;
 }
 
-void BM_IIPrincipalCurvatures(benchmark::State& state) {
-  const int threads = int(state.range(0));
-  double max_err = 0;
-  for (auto _ : state) {
-    const auto P = zdg::ii_principal_curvatures(sphere1(), kBox, surface(), kH, kR, threads);
-    max_err = 0;
-    for (const auto& p : P)
-      max_err = std::max({max_err, std::abs(p.k1 - 1.0), std::abs(p.k2 - 1.0)});
+struct Patch {
+  zdg::VoxelPredicate inside;
+  zdg::VoxelBox box;
+  std::vector<zdg::Surfel> surfels;
+  double h = 0, R = 0;
+};
+
+// The surfels of the digitized shape within distance 2 of its surface point nearest to
+// (1, 2, 9), at h = exp(-i/10), R = 9 h^{1/3}.
+const Patch& patch(const std::string& shape, int i) {
+  static std::map<std::pair<std::string, int>, Patch> cache;
+  auto it = cache.find({shape, i});
+  if (it != cache.end()) return it->second;
+  Patch p;
+  p.h = std::exp(-i / 10.0);
+  p.R = 9.0 * std::cbrt(p.h);
+  const auto s = zdg::parse_shape(shape);
+  const auto& s3 = dynamic_cast<const zdg::Shape3&>(*s);
+  p.inside = s3.digitize(p.h, {0.1, 0.2, 0.3});
+  const std::int64_t n = std::int64_t(std::ceil(10.5 / p.h));
+  p.box = {{-n, -n, -n}, {n, n, n}};
+  const auto q = s3.project({1, 2, 9}).point;
+  // Scan a box around q; keep the surfels between two voxels of that box.
+  const std::int64_t m = std::int64_t(std::ceil(2.5 / p.h));
+  const zdg::Voxel c0{std::int64_t(std::floor((q.x + 0.1) / p.h)),
+                      std::int64_t(std::floor((q.y + 0.2) / p.h)),
+                      std::int64_t(std::floor((q.z + 0.3) / p.h))};
+  const zdg::VoxelBox near{{c0.x - m, c0.y - m, c0.z - m}, {c0.x + m, c0.y + m, c0.z + m}};
+  for (const auto& sf : zdg::boundary_surfels(p.inside, near)) {
+    if (!near.contains(zdg::outer_voxel(sf)) || !near.contains(zdg::inner_voxel(sf))) continue;
+    const auto c = zdg::surfel_centre(sf, p.h);
+    const double dx = c.x - 0.1 - q.x, dy = c.y - 0.2 - q.y, dz = c.z - 0.3 - q.z;
+    if (dx * dx + dy * dy + dz * dz <= 4.0) p.surfels.push_back(sf);
   }
-  state.counters["surfels"] = double(surface().size());
-  state.counters["linf_err"] = max_err;
+  return cache.emplace(std::pair{shape, i}, std::move(p)).first->second;
+}
+
+template <bool Columns>
+void BM_PaperPatch(benchmark::State& state, const std::string& shape) {
+  const Patch& p = patch(shape, int(state.range(0)));
+  const auto r2 = zdg::ii_digital_radius2(p.R, p.h);
+  zdg::IISurfelMoments m;
+  for (auto _ : state) {
+    m = Columns ? zdg::ii_surfel_moments(p.inside, p.box, p.surfels, r2, 1, true)
+                : zdg::ii_surfel_moments_incremental(p.inside, p.box, p.surfels, r2, 1, true);
+    benchmark::DoNotOptimize(m.moments.data());
+  }
+  if (Columns) {
+    const auto w = zdg::ii_surfel_moments_incremental(p.inside, p.box, p.surfels, r2, 1, true);
+    for (std::size_t k = 0; k < p.surfels.size(); ++k)
+      if (!(w.moments[k].inner == m.moments[k].inner) ||
+          !(w.moments[k].outer == m.moments[k].outer))
+        throw std::logic_error("the counters disagree");
+  }
+  state.counters["surfels"] = double(p.surfels.size());
+  state.counters["r"] = p.R / p.h;
+  state.counters["us/surfel"] = benchmark::Counter(double(p.surfels.size()) * 1e-6,
+                                                   benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
+  state.counters["evals/surfel"] = double(m.stats.predicate_evaluations) / double(p.surfels.size());
+}
+
+void BM_PatchColumns(benchmark::State& state, const std::string& shape) {
+  BM_PaperPatch<true>(state, shape);
+}
+void BM_PatchWalk(benchmark::State& state, const std::string& shape) {
+  BM_PaperPatch<false>(state, shape);
 }
 
 BENCHMARK(BM_TrackSurface)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ScanSurface)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_IIMeanCurvature)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_IIPrincipalCurvatures)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Sphere1Moments<true>)
+    ->Name("Sphere1/columns")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(BM_Sphere1Moments<false>)
+    ->Name("Sphere1/walk")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_PatchColumns, rcube, std::string("rcube"))
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(26)
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_PatchWalk, rcube, std::string("rcube"))
+    ->Arg(10)
+    ->Arg(20)
+    ->Arg(26)
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_PatchColumns, goursat, std::string("goursat"))
+    ->Arg(20)
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_PatchWalk, goursat, std::string("goursat"))
+    ->Arg(20)
+    ->Arg(32)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 } // namespace
 

@@ -49,6 +49,9 @@ public:
         s.estimators = list(node, key, true);
       } else if (key == "h") {
         s.h = node.is_array() ? joined(node, key, ",") : value(node, key);
+      } else if (key == "k" && node.is_array()) { // one k per shape
+        once(key, "k", s.k.has_value(), node);
+        s.k = joined(node, key, ",");
       } else if (key == "box") {
         s.box = node.is_array() ? joined(node, key, ":") : value(node, key);
       } else if (key == "fit_levels" || key == "fit-levels") {
@@ -184,7 +187,8 @@ ExperimentConfig validate_experiment_settings(const ExperimentSettings& s) {
   c.hs = parse_grid_steps(s.h->text, s.h->origin);
   c.h_text = s.h->text;
   if (s.k) {
-    parse_parameter(s.k->text, s.k->origin); // positive and finite; ranges per entry
+    // positive and finite, one or one per shape; ranges per entry
+    k_texts_per_shape(s.k->text, s.shapes.size(), s.k->origin);
     c.k_text = s.k->text;
   }
   if (s.alpha) {
@@ -227,7 +231,12 @@ ExperimentConfig validate_experiment_settings(const ExperimentSettings& s) {
   for (const auto& x : s.shapes) checked(x, [](const std::string& t) { parse_shape(t); });
   for (const auto& x : s.estimators) {
     checked(x, [&](const std::string& t) {
-      resolve_parameters(parse_estimator_spec(t), c.k_text, c.alpha_text);
+      const auto spec = parse_estimator_spec(t);
+      if (!c.k_text) resolve_parameters(spec, std::nullopt, c.alpha_text);
+      if (c.k_text) {
+        for (const auto& k : k_texts_per_shape(*c.k_text, c.shapes.size()))
+          resolve_parameters(spec, k, c.alpha_text);
+      }
     });
   }
   plan_experiment(c);

@@ -74,6 +74,25 @@ std::vector<double> parse_grid_steps(const std::string& text, const std::string&
   return hs;
 }
 
+std::vector<std::string> k_texts_per_shape(const std::string& text, std::size_t shapes,
+                                           const std::string& what) {
+  std::vector<std::string> ks = split(text, ',');
+  for (const auto& item : ks) parse_parameter(item, what);
+  if (ks.size() == 1) ks.assign(std::max<std::size_t>(shapes, 1), ks[0]);
+  if (ks.size() != shapes) {
+    throw InvalidArgument(what + " " + shown(text) + ": expected one value or one per shape (" +
+                          std::to_string(shapes) + ")");
+  }
+  return ks;
+}
+
+std::vector<double> parse_k_per_shape(const std::string& text, std::size_t shapes,
+                                      const std::string& what) {
+  std::vector<double> out;
+  for (const auto& k : k_texts_per_shape(text, shapes, what)) out.push_back(parse_parameter(k, what));
+  return out;
+}
+
 std::pair<double, double> parse_box(const std::string& text, const std::string& what) {
   auto parts = split(text, ':');
   if (parts.size() != 2) throw InvalidArgument(what + " " + shown(text) + ": expected LO:HI");
@@ -115,12 +134,18 @@ ExperimentPlan plan_experiment(const ExperimentConfig& config) {
     }
     plan.shapes.push_back(std::move(shape));
   }
+  const std::vector<std::string> ks =
+      config.k_text ? k_texts_per_shape(*config.k_text, plan.shapes.size()) : std::vector<std::string>{};
   for (const auto& text : config.estimators) {
     EstimatorSpec spec = parse_estimator_spec(text);
     EstimatorEntry entry;
     entry.estimator = &find_estimator(spec.name);
     entry.label = spec.label();
-    entry.parameters = resolve_parameters(spec, config.k_text, config.alpha_text);
+    for (std::size_t i = 0; i < plan.shapes.size(); ++i) {
+      entry.shape_parameters.push_back(resolve_parameters(
+          spec, ks.empty() ? std::nullopt : std::optional<std::string>(ks[i]), config.alpha_text));
+    }
+    entry.parameters = entry.shape_parameters.front();
     for (const auto& other : plan.entries) {
       if (other.label == entry.label) {
         throw InvalidArgument("estimator " + shown(entry.label) + " given twice");
@@ -211,8 +236,8 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
     r.offset = config.translations == 0
                    ? std::vector<double>(static_cast<std::size_t>(shape.dimension()), 0.0)
                    : random_translation(config.seed, job.translation, shape.dimension(), job.h);
-    r.k = entry.parameters.k;
-    r.alpha = entry.parameters.alpha;
+    r.k = entry.on_shape(job.shape).k;
+    r.alpha = entry.on_shape(job.shape).alpha;
     RunInput in{shape, job.h, r.offset, run_box(config, shape, r.offset, job.h), r.k, r.alpha};
     auto t0 = std::chrono::steady_clock::now();
     r.errors = entry.estimator->run(in);
@@ -280,7 +305,7 @@ std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
     const std::size_t first = j - used;
     const Shape& shape = *plan.shapes[levels[i].shape_index];
     const EstimatorEntry& entry = plan.entries[levels[i].entry_index];
-    const auto rate = entry.estimator->proven_rate(shape, entry.parameters);
+    const auto rate = entry.estimator->proven_rate(shape, entry.on_shape(levels[i].shape_index));
     std::vector<double> hs, linf, l2, mean;
     for (std::size_t k = first; k < j; ++k) {
       hs.push_back(levels[k].h);

@@ -41,7 +41,8 @@ struct ExperimentConfig {
   std::vector<std::string> estimators;   // entries NAME[:KEY=VALUE,...]
   std::vector<double> hs;                // grid steps (any order; sorted decreasing)
   std::string h_text;                    // as given, for the provenance
-  std::optional<std::string> k_text;     // default k (rational) of every entry that uses k
+  std::optional<std::string> k_text;     // default k (rational) of every entry that uses k,
+                                         // or one per shape "K1,K2,..." (see parse_k_per_shape)
   std::optional<std::string> alpha_text; // default alpha of every entry that uses alpha
   int translations = 0;                  // 0: the untranslated shape only
   std::uint64_t seed = 0;
@@ -59,11 +60,27 @@ std::vector<double> parse_grid_steps(const std::string& text, const std::string&
 /// Parses `LO:HI` (finite, LO < HI, |LO|, |HI| <= 1e9).
 std::pair<double, double> parse_box(const std::string& text, const std::string& what = "--box");
 
+/// The default k of each of `shapes` shapes from `K` (one value for all) or `K1,K2,...` (one
+/// per shape, in the order of ExperimentConfig::shapes: papers whose shapes were run with
+/// different constants, e.g. the CVIU 2014 2D figure), as texts; each a positive rational or
+/// decimal. InvalidArgument naming `what` otherwise.
+std::vector<std::string> k_texts_per_shape(const std::string& text, std::size_t shapes,
+                                           const std::string& what = "--k");
+/// The same as numbers.
+std::vector<double> parse_k_per_shape(const std::string& text, std::size_t shapes,
+                                      const std::string& what = "--k");
+
 /// One estimator entry of an experiment.
 struct EstimatorEntry {
   const Estimator* estimator = nullptr;
   std::string label; // canonical spec text: the name in results.csv and summary.json
-  EstimatorParameters parameters;
+  EstimatorParameters parameters; // with the default k of the first shape
+  // The parameters on each shape (they differ only when k is given per shape and the entry
+  // does not set its own k).
+  std::vector<EstimatorParameters> shape_parameters;
+  const EstimatorParameters& on_shape(std::size_t shape) const {
+    return shape < shape_parameters.size() ? shape_parameters[shape] : parameters;
+  }
 };
 
 /// A validated experiment.

@@ -71,8 +71,18 @@ public:
     const double q[3] = {p.x, p.y, p.z};
     return f_->value(q) <= 0;
   }
-  SurfacePoint3 project(P3 p) const override { return project_implicit_surface(*f_, p); }
+  SurfacePoint3 project(P3 p) const override {
+    return at_point_ ? implicit_surface_geometry(*f_, p) : project_implicit_surface(*f_, p);
+  }
   std::optional<double> volume() const override { return volume_; }
+  /// The same solid whose ground truth is the geometry of F's level set at the query point
+  /// itself (the `unprojected:` kind).
+  std::unique_ptr<Shape> unprojected() const {
+    auto s = std::make_unique<PolyShape3>(*this);
+    s->spec_ = "unprojected:" + spec_;
+    s->at_point_ = true;
+    return s;
+  }
 
 private:
   std::string spec_;
@@ -81,6 +91,7 @@ private:
   double lo_, hi_;
   std::optional<double> volume_;
   ShapeClass regularity_;
+  bool at_point_ = false;
 };
 
 struct Named {
@@ -308,6 +319,20 @@ void register_3d_shapes(std::vector<ShapeKind>& kinds) {
                      return std::make_unique<PolyShape3>(std::string(spec), std::move(f), -10.0,
                                                          10.0, std::nullopt, kSmooth);
                    }});
+  kinds.push_back(
+      {"unprojected", 3, "unprojected:SHAPE",
+       "a 3D polynomial shape (named or poly:) whose ground truth is taken at the surfel "
+       "centre itself (the curvatures of the level set of F through it), not at its projection "
+       "on F = 0: the protocol of DGtalTools' 3dLocalEstimators behind CVIU 2014",
+       [](std::string_view args, std::string_view spec) -> std::unique_ptr<Shape> {
+         auto inner = parse_shape(args);
+         const auto* poly = dynamic_cast<const PolyShape3*>(inner.get());
+         if (poly == nullptr) {
+           throw InvalidArgument("shape '" + std::string(spec) +
+                                 "': unprojected: takes a 3D polynomial shape");
+         }
+         return poly->unprojected();
+       }});
   for (const auto& s : kNamed) {
     const Named named = s;
     std::ostringstream description;

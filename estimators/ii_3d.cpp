@@ -327,47 +327,23 @@ std::int64_t ii_digital_radius2(double R, double h) {
   return std::int64_t(std::floor(r * r));
 }
 
-BallMoments direct_ball_moments(const VoxelPredicate& inside, const VoxelBox& box,
-                                const Voxel& centre, std::int64_t r2) {
-  check_radius2(r2);
-  const int r = int(isqrt(r2));
-  Accumulator acc;
-  for (int z = -r; z <= r; ++z)
-    for (int y = -r; y <= r; ++y)
-      for (int x = -r; x <= r; ++x) {
-        if (std::int64_t(x) * x + std::int64_t(y) * y + std::int64_t(z) * z > r2) continue;
-        const Voxel p{centre.x + x, centre.y + y, centre.z + z};
-        const int o[3] = {x, y, z};
-        if (box.contains(p) && inside(p)) acc.add(o);
-      }
-  return acc.moments();
-}
+namespace {
 
-IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
-                                  std::span<const Surfel> surfels, std::int64_t r2, int threads,
-                                  bool second_order) {
-  return detail::ii_surfel_moments(inside, box, surfels, r2, threads, second_order,
-                                   kMaxSharedBytes);
-}
+/// The distinct inner and outer voxels of the surfels, and the two indices of each surfel.
+struct Centres {
+  std::vector<Voxel> voxels;
+  std::unordered_map<Voxel, std::uint32_t, KPointHash> index;
+  std::vector<std::array<std::uint32_t, 2>> of_surfel;
+};
 
-IISurfelMoments detail::ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
-                                          std::span<const Surfel> surfels, std::int64_t r2,
-                                          int threads, bool second_order,
-                                          std::size_t shared_cache_bytes) {
-  check_voxel_box(box);
-  check_radius2(r2);
-  threads = threads_or_default(threads);
-  IISurfelMoments result;
-  if (surfels.empty()) return result;
+Centres surfel_centres(std::span<const Surfel> surfels) {
   if (surfels.size() >= (std::size_t{1} << 31))
     throw InvalidArgument("integral invariants: " + std::to_string(surfels.size()) +
                           " surfels exceed 2^31");
   const std::int64_t max_coord = kMaxVoxelCoordinate - kMaxRadius - 8;
-  std::vector<Voxel> voxels;
-  std::unordered_map<Voxel, std::uint32_t, KPointHash> index;
-  index.reserve(2 * surfels.size());
-  std::vector<std::array<std::uint32_t, 2>> of_surfel;
-  of_surfel.reserve(surfels.size());
+  Centres c;
+  c.index.reserve(2 * surfels.size());
+  c.of_surfel.reserve(surfels.size());
   for (const Surfel& s : surfels) {
     if (cell_dimension(s.k) != 2)
       throw InvalidArgument("integral invariants: (" + std::to_string(s.k.x) + ", " +
@@ -379,13 +355,57 @@ IISurfelMoments detail::ii_surfel_moments(const VoxelPredicate& inside, const Vo
       const Voxel& v = vs[j];
       if (std::abs(v.x) > max_coord || std::abs(v.y) > max_coord || std::abs(v.z) > max_coord)
         throw InvalidArgument("integral invariants: surfel coordinate beyond 2^40");
-      auto [it, fresh] = index.try_emplace(v, std::uint32_t(voxels.size()));
-      if (fresh) voxels.push_back(v);
+      auto [it, fresh] = c.index.try_emplace(v, std::uint32_t(c.voxels.size()));
+      if (fresh) c.voxels.push_back(v);
       ids[std::size_t(j)] = it->second;
     }
-    of_surfel.push_back(ids);
+    c.of_surfel.push_back(ids);
   }
-  const std::vector<std::uint32_t> walk = greedy_walk(voxels, index);
+  return c;
+}
+
+} // namespace
+
+IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
+                                  std::span<const Surfel> surfels, std::int64_t r2, int threads,
+                                  bool second_order) {
+  check_voxel_box(box);
+  check_radius2(r2);
+  threads = threads_or_default(threads);
+  IISurfelMoments result;
+  if (surfels.empty()) return result;
+  const Centres c = surfel_centres(surfels);
+  const ColumnMoments m = ball_moments_by_columns(inside, box, c.voxels, r2, threads, second_order);
+  result.moments.reserve(surfels.size());
+  for (const auto& ids : c.of_surfel)
+    result.moments.push_back({m.moments[ids[0]], m.moments[ids[1]]});
+  result.stats.voxels = c.voxels.size();
+  result.stats.predicate_evaluations = m.stats.evaluations;
+  result.stats.segments = m.stats.segments;
+  result.stats.layers = m.stats.layers;
+  return result;
+}
+
+IISurfelMoments ii_surfel_moments_incremental(const VoxelPredicate& inside, const VoxelBox& box,
+                                              std::span<const Surfel> surfels, std::int64_t r2,
+                                              int threads, bool second_order) {
+  return detail::ii_surfel_moments_incremental(inside, box, surfels, r2, threads, second_order,
+                                               kMaxSharedBytes);
+}
+
+IISurfelMoments
+detail::ii_surfel_moments_incremental(const VoxelPredicate& inside, const VoxelBox& box,
+                                      std::span<const Surfel> surfels, std::int64_t r2, int threads,
+                                      bool second_order, std::size_t shared_cache_bytes) {
+  check_voxel_box(box);
+  check_radius2(r2);
+  threads = threads_or_default(threads);
+  IISurfelMoments result;
+  if (surfels.empty()) return result;
+  const Centres centres = surfel_centres(surfels);
+  const std::vector<Voxel>& voxels = centres.voxels;
+  const std::vector<std::array<std::uint32_t, 2>>& of_surfel = centres.of_surfel;
+  const std::vector<std::uint32_t> walk = greedy_walk(voxels, centres.index);
   const std::vector<Row> rows = ball_rows(r2);
   const std::int64_t r = isqrt(r2);
   std::int64_t ball_size = 0;
@@ -435,8 +455,12 @@ IISurfelMoments detail::ii_surfel_moments(const VoxelPredicate& inside, const Vo
 
   result.moments.reserve(surfels.size());
   for (const auto& ids : of_surfel) result.moments.push_back({at_voxel[ids[0]], at_voxel[ids[1]]});
-  result.stats = {voxels.size(), full_counts.load(), unit_moves.load(),
-                  chunks.size(), evaluations.load(), shared != nullptr};
+  result.stats.voxels = voxels.size();
+  result.stats.predicate_evaluations = evaluations.load();
+  result.stats.full_counts = full_counts.load();
+  result.stats.unit_moves = unit_moves.load();
+  result.stats.chunks = chunks.size();
+  result.stats.shared_cache = shared != nullptr;
   return result;
 }
 
@@ -447,41 +471,31 @@ double ii_mean_curvature_from_moments(const SurfelBallMoments& m, double h, doub
 
 IIPrincipalCurvatures ii_principal_curvatures_from_moments(const SurfelBallMoments& m,
                                                            const Surfel& s, double h, double R) {
-  // Moments about the surfel centre s, in exact integers: for a kernel centred at c,
-  // 2 (p - s) = 2 q + delta with q = p - c and delta = 2 (c - s) = -n (inner), +n (outer).
+  // Covariance matrix of each kernel about its own centroid, in voxel units:
+  // J = (m0 m2 - m1 m1^T) / m0, the numerator exact in int128; J = 0 for an empty kernel.
+  // The estimate uses their average (DGtal's DigitalSurfaceConvolver with lambda = 1/2).
   for (const BallMoments* b : {&m.inner, &m.outer})
     if (b->m0 > 1 && b->m2[0] + b->m2[1] + b->m2[2] == 0)
       throw InvalidArgument("integral invariants: the moments of surfel (" + std::to_string(s.k.x) +
                             ", " + std::to_string(s.k.y) + ", " + std::to_string(s.k.z) +
                             ") lack the second order (computed with second_order = false)");
-  const Point3<int> nrm = trivial_normal(s);
-  const int n[3] = {nrm.x, nrm.y, nrm.z};
-  static constexpr int cross[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
-  int128_t S0 = 0, S1[3] = {0, 0, 0}, S2[3][3] = {};
-  for (int side = 0; side < 2; ++side) {
-    const BallMoments& b = side == 0 ? m.inner : m.outer;
-    const int sg = side == 0 ? -1 : 1;
-    const int delta[3] = {sg * n[0], sg * n[1], sg * n[2]};
-    S0 += b.m0;
-    for (int i = 0; i < 3; ++i) {
-      S1[i] += 2 * int128_t(b.m1[std::size_t(i)]) + int128_t(b.m0) * delta[i];
-      for (int j = 0; j < 3; ++j)
-        S2[i][j] += 4 * int128_t(b.m2[std::size_t(cross[i][j])]) +
-                    2 * int128_t(b.m1[std::size_t(i)]) * delta[j] +
-                    2 * int128_t(b.m1[std::size_t(j)]) * delta[i] +
-                    int128_t(b.m0) * delta[i] * delta[j];
-    }
-  }
-  if (S0 == 0)
+  if (m.inner.m0 + m.outer.m0 == 0)
     throw InvalidArgument("integral invariants: empty kernels at surfel (" + std::to_string(s.k.x) +
                           ", " + std::to_string(s.k.y) + ", " + std::to_string(s.k.z) +
                           "): not a boundary surfel of the set");
-  // Averaged moments m0 = S0 / 2, m1 = S1 / 4, m2 = S2 / 8, so the covariance in voxel units
-  // is (S0 S2 - S1 S1^T) / (8 S0), formed exactly before the one rounding.
-  Eigen::Matrix3d J;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      J(i, j) = double(S0 * S2[i][j] - S1[i] * S1[j]) / (8.0 * double(S0));
+  static constexpr int cross[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}};
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  for (const BallMoments* b : {&m.inner, &m.outer}) {
+    if (b->m0 == 0) continue;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const int128_t num = int128_t(b->m0) * b->m2[std::size_t(cross[i][j])] -
+                             int128_t(b->m1[std::size_t(i)]) * b->m1[std::size_t(j)];
+        J(i, j) += 0.5 * double(num) / double(b->m0);
+      }
+  }
+  const Point3<int> nrm = trivial_normal(s);
+  const int n[3] = {nrm.x, nrm.y, nrm.z};
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(J);
   const double h5 = h * h * h * h * h;
   const double l1 = h5 * es.eigenvalues()(2), l2 = h5 * es.eigenvalues()(1);

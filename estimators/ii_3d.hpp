@@ -9,29 +9,32 @@
 //            eigenvectors v1, v2, v3:
 //            k1 = 6/(pi R^6) (l2 - 3 l1) + 8/(5R),  k2 = 6/(pi R^6) (l1 - 3 l2) + 8/(5R),
 //            so k1 <= k2; principal directions v1 (of k1), v2 (of k2); normal v3.
-// Each estimate at a surfel averages the kernel centred at its inner and at its outer voxel
-// (the moments are averaged about the surfel centre, then J is formed). Rates: O(h^{1/3})
-// for H, k1, k2 with R = k h^{1/3}; O(h^{2/3}) for the normal (CVIU 2014, Thm 6;
-// Lachaud-Coeurjolly-Levallois 2017).
+// Each estimate at a surfel averages the kernels centred at its inner and at its outer voxel,
+// as DGtal's implementation behind the paper's experiments does (DigitalSurfaceConvolver,
+// lambda = 1/2): H from the average of the two counts, the principal curvatures and
+// directions from the average of the two covariance matrices (each about its own
+// centroid). Rates: O(h^{1/3}) for H, k1, k2 with R = k h^{1/3}; O(h^{2/3}) for the normal
+// (CVIU 2014, Thm 6; Lachaud-Coeurjolly-Levallois 2017).
 //
-// Algorithm: the distinct inner/outer voxels are ordered along a greedy walk (the next voxel
-// is the unvisited one nearest in l1 distance among the 3-neighbourhood, else the next one in
-// lexicographic order). The walk is cut into chunks, 8 per thread; a chunk starts with one
-// full count of the ball, then follows the walk by unit moves: moving the ball by +-e_a
-// removes one voxel per row of the ball along a and adds one (the symmetric difference,
-// 2 pi r^2 voxels instead of 4/3 pi r^3), and shifts the moments to the new centre exactly.
-// A jump longer than (ball volume) / (2 #rows) unit moves is replaced by a full count. The
-// predicate is evaluated lazily and cached in a byte block over the bounding box of the
-// centres grown by r, shared by the threads (about one evaluation per voxel of the union of
-// the balls) when it takes at most 512 MiB, else one block per chunk (at most 128 MiB each,
-// chunks being halved until they fit). Cost: about 2 pi r^2 predicate look-ups per voxel
-// of the walk, r = R/h.
+// Counting: ii_surfel_moments counts the ball at every distinct inner/outer voxel from the
+// column runs of the set (estimators/ball_moments.hpp): about pi r^2 column operations per
+// voxel, r = R/h, plus one predicate evaluation per voxel of the blocks within reach of a
+// ball. ii_surfel_moments_incremental is the previous counter, kept as a second oracle and
+// for comparison: the distinct voxels are ordered along a greedy walk (the next voxel is the
+// unvisited one nearest in l1 distance among the 3-neighbourhood, else the next one in
+// lexicographic order), cut into chunks, 8 per thread; a chunk starts with one full count of
+// the ball, then follows the walk by unit moves (moving the ball by +-e_a removes one voxel
+// per row of the ball along a and adds one: 2 pi r^2 predicate look-ups per move, cached in a
+// byte block over the bounding box of the centres grown by r, shared by the threads when it
+// takes at most 512 MiB, else one block per chunk of at most 128 MiB). Both give the same
+// integers (tested, with the brute-force count).
 //
 // Integer width: counts and moments are exact int64, relative to the ball centre; with
 // r <= 256 (checked at entry, InvalidArgument past it) every sum is below (2r+3)^3 (r+1)^2
-// < 2^48, and the combination about the surfel centre uses int128_t.
+// < 2^48, and the covariance numerators m0 m2 - m1 m1^T use int128_t.
 #pragma once
 
+#include <zdg/estimators/ball_moments.hpp>
 #include <zdg/kernel/digital_surface.hpp>
 
 #include <array>
@@ -42,28 +45,23 @@
 
 namespace zdg {
 
-/// Exact moments of the inside voxels of a digital ball, coordinates relative to its centre
-/// (voxel units): m0 = count, m1 = sums of x, y, z, m2 = sums of xx, yy, zz, xy, xz, yz.
-struct BallMoments {
-  std::int64_t m0 = 0;
-  std::array<std::int64_t, 3> m1{};
-  std::array<std::int64_t, 6> m2{};
-  friend bool operator==(const BallMoments&, const BallMoments&) = default;
-};
-
 /// The kernels of one surfel: centred at its inner and at its outer voxel.
 struct SurfelBallMoments {
   BallMoments inner, outer;
 };
 
-/// Work done by the incremental evaluation (for benchmarks and tests).
+/// Work done by the counters (for benchmarks and tests).
 struct IIStats {
-  std::size_t voxels = 0;      ///< distinct kernel centres
+  std::size_t voxels = 0;                ///< distinct kernel centres
+  std::size_t predicate_evaluations = 0; ///< voxels whose membership was evaluated
+  // column counter (ii_surfel_moments)
+  std::size_t segments = 0; ///< column segments of the balls (pi r^2 per centre)
+  int layers = 0;           ///< most runs of the set in one column
+  // incremental walk (ii_surfel_moments_incremental)
   std::size_t full_counts = 0; ///< balls counted from scratch (one per chunk and long jump)
   std::size_t unit_moves = 0;  ///< incremental moves by one voxel
   std::size_t chunks = 0;
-  std::size_t predicate_evaluations = 0; ///< about once per voxel (shared cache)
-  bool shared_cache = false;             ///< one cache for all threads, else one per chunk
+  bool shared_cache = false; ///< one cache for all threads, else one per chunk
 };
 
 struct IISurfelMoments {
@@ -72,29 +70,31 @@ struct IISurfelMoments {
 };
 
 namespace detail {
-/// ii_surfel_moments with the size limit of the shared predicate cache (bytes) exposed, so
-/// that tests reach the per-chunk caches too.
-IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
-                                  std::span<const Surfel> surfels, std::int64_t r2, int threads,
-                                  bool second_order, std::size_t shared_cache_bytes);
+/// ii_surfel_moments_incremental with the size limit of the shared predicate cache (bytes)
+/// exposed, so that tests reach the per-chunk caches too.
+IISurfelMoments ii_surfel_moments_incremental(const VoxelPredicate& inside, const VoxelBox& box,
+                                              std::span<const Surfel> surfels, std::int64_t r2,
+                                              int threads, bool second_order,
+                                              std::size_t shared_cache_bytes);
 } // namespace detail
 
 /// floor((R/h)^2): the squared radius of the digital ball in voxel units. Throws
 /// InvalidArgument unless R > 0, h > 0 and R/h <= 256.
 std::int64_t ii_digital_radius2(double R, double h);
 
-/// The moments of { o : |o|^2 <= r2, centre + o in box and inside } by brute force,
-/// O(r^3). The oracle of the incremental evaluation.
-BallMoments direct_ball_moments(const VoxelPredicate& inside, const VoxelBox& box,
-                                const Voxel& centre, std::int64_t r2);
-
-/// Ball moments at the inner and outer voxels of every surfel, computed incrementally along
-/// a walk through the voxels and in parallel (threads >= 1, 0 = hardware concurrency).
+/// Ball moments at the inner and outer voxels of every surfel, from the column runs of the
+/// set (estimators/ball_moments.hpp), in parallel (threads >= 1, 0 = hardware concurrency).
 /// With second_order false only m0 is computed (m1, m2 are left zero). Voxels outside the
 /// box count as outside. The predicate must be callable from several threads at once.
 IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
                                   std::span<const Surfel> surfels, std::int64_t r2, int threads = 1,
                                   bool second_order = true);
+
+/// The same integers by the incremental walk (the previous counter, 2 pi r^2 look-ups per
+/// unit move; see above).
+IISurfelMoments ii_surfel_moments_incremental(const VoxelPredicate& inside, const VoxelBox& box,
+                                              std::span<const Surfel> surfels, std::int64_t r2,
+                                              int threads = 1, bool second_order = true);
 
 /// II mean curvature at every surfel (H = 1/r on a sphere of radius r).
 std::vector<double> ii_mean_curvature(const VoxelPredicate& inside, const VoxelBox& box,
@@ -118,8 +118,9 @@ std::vector<IIPrincipalCurvatures> ii_principal_curvatures(const VoxelPredicate&
                                                            double h, double R, int threads = 1);
 
 /// The formulas alone, from the moments of one surfel (for drivers that keep the moments):
-/// H from the averaged count, and the principal curvatures from the averaged moments (which
-/// must have been computed with second_order = true: InvalidArgument otherwise).
+/// H from the averaged count, and the principal curvatures from the average of the
+/// covariance matrices of the two kernels (the moments must have been computed with
+/// second_order = true: InvalidArgument otherwise).
 double ii_mean_curvature_from_moments(const SurfelBallMoments& m, double h, double R);
 IIPrincipalCurvatures ii_principal_curvatures_from_moments(const SurfelBallMoments& m,
                                                            const Surfel& s, double h, double R);

@@ -41,6 +41,25 @@ TEST(Experiment, GridStepSyntaxes) {
   EXPECT_THROW(zdg::parse_box("3:1"), zdg::InvalidArgument);
 }
 
+// k is one value for every shape or one per shape, in the order of the shapes.
+TEST(Experiment, ParameterKPerShape) {
+  EXPECT_EQ(zdg::parse_k_per_shape("5", 3), (std::vector<double>{5, 5, 5}));
+  EXPECT_EQ(zdg::parse_k_per_shape("5,5,3", 3), (std::vector<double>{5, 5, 3}));
+  EXPECT_EQ(zdg::parse_k_per_shape("1/2,8.9", 2), (std::vector<double>{0.5, 8.9}));
+  EXPECT_THROW(zdg::parse_k_per_shape("5,3", 3), zdg::InvalidArgument);
+  EXPECT_THROW(zdg::parse_k_per_shape("5,-3", 2), zdg::InvalidArgument);
+  zdg::ExperimentConfig c;
+  c.shapes = {"ball:10", "ellipse:20,7"};
+  c.estimators = {"ii-curvature"};
+  c.hs = {0.5};
+  c.k_text = "3,5";
+  auto r = zdg::run_experiment(c);
+  ASSERT_EQ(r.runs.size(), 2u);
+  for (const auto& run : r.runs) EXPECT_EQ(run.k, run.shape == "ball:10" ? 3.0 : 5.0);
+  c.k_text = "3,5,7";
+  EXPECT_THROW(zdg::run_experiment(c), zdg::InvalidArgument);
+}
+
 TEST(Experiment, GaussAreaOfAGridAlignedLatticePolygonIsPicksCount) {
   // Exact case: at h = 1 the Gauss count of a lattice polygon is A + B/2 + 1 (Pick).
   auto shape = zdg::parse_shape("polygon:0,0,10,0,10,7,0,7");

@@ -225,3 +225,36 @@ TEST(Shapes3d, PolyAndErrors) {
 }
 
 } // namespace
+
+namespace {
+
+// unprojected:SHAPE keeps the solid and its digitization, and takes the ground truth at the
+// query point itself: on the sphere of radius 9 the level set through p is the sphere of
+// radius |p|, so H = k1 = k2 = 1/|p| there (the projection gives 1/9).
+TEST(Shapes3d, UnprojectedTruthIsTheLevelSetAtThePoint) {
+  const auto u = shape3("unprojected:sphere9");
+  const auto s = shape3("sphere9");
+  EXPECT_EQ(u->spec(), "unprojected:sphere9");
+  EXPECT_EQ(zdg::parse_shape(u->spec())->spec(), u->spec());
+  std::mt19937_64 rng(19);
+  std::uniform_real_distribution<double> d(-9.5, 9.5);
+  for (int i = 0; i < 50; ++i) {
+    const P3 p{d(rng), d(rng), d(rng)};
+    if (norm(p) < 1) continue;
+    const auto t = u->project(p);
+    EXPECT_NEAR(t.mean, 1 / norm(p), 1e-12);
+    EXPECT_NEAR(t.k1, 1 / norm(p), 1e-6);
+    EXPECT_NEAR(t.k2, 1 / norm(p), 1e-6);
+    EXPECT_NEAR(s->project(p).mean, 1.0 / 9.0, 1e-12);
+    EXPECT_EQ(u->contains(p), s->contains(p));
+  }
+  const auto du = u->digitize(0.3, {0.1, 0.2, 0.3}), ds = s->digitize(0.3, {0.1, 0.2, 0.3});
+  for (std::int64_t z = -35; z <= 35; z += 5)
+    for (std::int64_t y = -35; y <= 35; y += 3)
+      for (std::int64_t x = -35; x <= 35; ++x) EXPECT_EQ(du({x, y, z}), ds({x, y, z}));
+  EXPECT_EQ(shape3("unprojected:poly:x^2+y^2+z^2-4")->spec(), "unprojected:poly:x^2+y^2+z^2-4");
+  EXPECT_THROW(zdg::parse_shape("unprojected:ellipse:20,7"), zdg::InvalidArgument);
+  EXPECT_THROW(zdg::parse_shape("unprojected:nosuch"), zdg::InvalidArgument);
+}
+
+} // namespace

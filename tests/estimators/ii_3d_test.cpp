@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -39,8 +41,8 @@ TEST(IntegralInvariants3D, IncrementalMomentsEqualDirectMoments) {
     const VoxelBox box{{-8, -3, -4}, {10, 7, 4}};
     const auto surfels = zdg::boundary_surfels(in, box);
     const bool shared = *rc::gen::arbitrary<bool>();
-    const auto m = zdg::detail::ii_surfel_moments(in, box, surfels, r2, threads, second,
-                                                  shared ? std::size_t{1} << 29 : 0);
+    const auto m = zdg::detail::ii_surfel_moments_incremental(in, box, surfels, r2, threads, second,
+                                                              shared ? std::size_t{1} << 29 : 0);
     RC_ASSERT(m.stats.shared_cache == shared);
     RC_ASSERT(m.moments.size() == surfels.size());
     for (std::size_t i = 0; i < surfels.size(); ++i) {
@@ -58,12 +60,83 @@ TEST(IntegralInvariants3D, IncrementalMomentsEqualDirectMoments) {
   });
 }
 
+// The column counter (the default) and the incremental walk give the same integers at every
+// inner and outer voxel, on random unions of balls with random radii.
+TEST(IntegralInvariants3D, ColumnCounterEqualsIncrementalCounter) {
+  zdg::test::check_property([] {
+    const auto r2 = *rc::gen::inRange<std::int64_t>(0, 40);
+    const auto c1 =
+        Voxel{*rc::gen::inRange<std::int64_t>(-4, 4), *rc::gen::inRange<std::int64_t>(-4, 4),
+              *rc::gen::inRange<std::int64_t>(-4, 4)};
+    const auto c2 =
+        Voxel{*rc::gen::inRange<std::int64_t>(-4, 8), *rc::gen::inRange<std::int64_t>(-4, 4),
+              *rc::gen::inRange<std::int64_t>(-6, 4)};
+    const auto b1 = ball(c1, *rc::gen::inRange<std::int64_t>(0, 30));
+    const auto b2 = ball(c2, *rc::gen::inRange<std::int64_t>(0, 20));
+    const zdg::VoxelPredicate in = [&](const Voxel& z) { return b1(z) != b2(z); };
+    const VoxelBox box{{-9, -7, -8}, {11, 8, 7}};
+    const auto surfels = zdg::boundary_surfels(in, box);
+    const bool second = *rc::gen::arbitrary<bool>();
+    const int threads = *rc::gen::inRange(1, 4);
+    const auto fast = zdg::ii_surfel_moments(in, box, surfels, r2, threads, second);
+    const auto walk = zdg::ii_surfel_moments_incremental(in, box, surfels, r2, threads, second);
+    RC_ASSERT(fast.moments.size() == walk.moments.size());
+    RC_ASSERT(fast.stats.voxels == walk.stats.voxels);
+    for (std::size_t i = 0; i < surfels.size(); ++i) {
+      RC_ASSERT(fast.moments[i].inner == walk.moments[i].inner);
+      RC_ASSERT(fast.moments[i].outer == walk.moments[i].outer);
+    }
+  });
+}
+
+// The principal curvatures come from the average of the covariance matrices of the inner and
+// outer kernels, each about its own centroid (DGtal's convention behind CVIU 2014): oracle =
+// the two matrices summed voxel by voxel, in long double.
+TEST(IntegralInvariants3D, PrincipalCurvaturesAverageTheTwoCovarianceMatrices) {
+  zdg::test::check_property([] {
+    const auto r2 = *rc::gen::inRange<std::int64_t>(4, 40);
+    const auto b1 = ball({0, 0, 0}, *rc::gen::inRange<std::int64_t>(9, 40));
+    const auto b2 = ball({4, 1, -2}, *rc::gen::inRange<std::int64_t>(0, 20));
+    const zdg::VoxelPredicate in = [&](const Voxel& z) { return b1(z) || b2(z); };
+    const VoxelBox box{{-10, -10, -10}, {10, 10, 10}};
+    const auto surfels = zdg::boundary_surfels(in, box);
+    const auto s = surfels[*rc::gen::inRange<std::size_t>(0, surfels.size())];
+    const double h = 0.1, R = 0.1 * std::sqrt(double(r2)) + 0.01;
+    const auto m = zdg::ii_surfel_moments(in, box, std::vector<Surfel>{s}, r2, 1, true);
+    const auto pc = zdg::ii_principal_curvatures_from_moments(m.moments[0], s, h, R);
+    Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+    const std::int64_t r = std::int64_t(std::sqrt(double(r2))) + 1;
+    for (const Voxel c : {zdg::inner_voxel(s), zdg::outer_voxel(s)}) {
+      std::vector<Eigen::Vector3d> pts;
+      for (std::int64_t z = -r; z <= r; ++z)
+        for (std::int64_t y = -r; y <= r; ++y)
+          for (std::int64_t x = -r; x <= r; ++x) {
+            const Voxel p{c.x + x, c.y + y, c.z + z};
+            if (x * x + y * y + z * z <= r2 && box.contains(p) && in(p))
+              pts.emplace_back(double(x), double(y), double(z));
+          }
+      if (pts.empty()) continue;
+      Eigen::Vector3d g = Eigen::Vector3d::Zero();
+      for (const auto& q : pts) g += q;
+      g /= double(pts.size());
+      for (const auto& q : pts) J += 0.5 * (q - g) * (q - g).transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(J);
+    const double h5 = std::pow(h, 5), c6 = 6.0 / (M_PI * std::pow(R, 6));
+    const double l1 = h5 * es.eigenvalues()(2), l2 = h5 * es.eigenvalues()(1);
+    const double k1 = c6 * (l2 - 3 * l1) + 8.0 / (5.0 * R),
+                 k2 = c6 * (l1 - 3 * l2) + 8.0 / (5.0 * R);
+    RC_ASSERT(std::abs(pc.k1 - k1) <= 1e-9 * (1 + std::abs(k1)));
+    RC_ASSERT(std::abs(pc.k2 - k2) <= 1e-9 * (1 + std::abs(k2)));
+  });
+}
+
 // A closed surface is walked mostly by unit moves: few full counts.
 TEST(IntegralInvariants3D, WalkUsesUnitMoves) {
   const auto in = ball({0, 0, 0}, 15 * 15);
   const VoxelBox box{{-20, -20, -20}, {20, 20, 20}};
   const auto surfels = zdg::boundary_surfels(in, box);
-  const auto m = zdg::ii_surfel_moments(in, box, surfels, 16, 2, false);
+  const auto m = zdg::ii_surfel_moments_incremental(in, box, surfels, 16, 2, false);
   EXPECT_LT(m.stats.full_counts, m.stats.voxels / 10);
   EXPECT_LT(m.stats.unit_moves, 2 * m.stats.voxels);
 }

@@ -1,0 +1,332 @@
+#include <zdg/estimators/ball_moments.hpp>
+
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/column_runs.hpp>
+#include <zdg/kernel/parallel_for.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <tuple>
+
+namespace zdg {
+
+namespace {
+
+constexpr std::int64_t kMaxRadius = 256;
+// Lines of the disc are summed in int32 up to this radius (2 r (r+1)(2r+1)^2 < 2^31).
+constexpr std::int64_t kInt32LineRadius = 100;
+static_assert(2 * kInt32LineRadius * (kInt32LineRadius + 1) * (2 * kInt32LineRadius + 1) *
+                  (2 * kInt32LineRadius + 1) <
+              std::int64_t{std::numeric_limits<std::int32_t>::max()});
+// One set of column runs at most this many columns; beyond, the centres are split in tiles.
+constexpr std::int64_t kMaxColumns = std::int64_t{1} << 24;
+constexpr std::int64_t kTile = 1024;
+
+std::int64_t isqrt(std::int64_t n) {
+  auto r = std::int64_t(std::sqrt(double(n)));
+  while (r > 0 && r * r > n) --r;
+  while ((r + 1) * (r + 1) <= n) ++r;
+  return r;
+}
+
+/// The disc of the ball: for v in [-r, r], the half-width U(v) of the line and the
+/// half-lengths w(u, v), u = -U..U, stored from offset[v + r].
+struct Disc {
+  std::int64_t r = 0;
+  std::vector<std::int32_t> half, offset, w;
+};
+
+Disc disc_of(std::int64_t r2) {
+  Disc d;
+  d.r = isqrt(r2);
+  for (std::int64_t v = -d.r; v <= d.r; ++v) {
+    const std::int64_t U = isqrt(r2 - v * v);
+    d.half.push_back(std::int32_t(U));
+    d.offset.push_back(std::int32_t(d.w.size()));
+    for (std::int64_t u = -U; u <= U; ++u) d.w.push_back(std::int32_t(isqrt(r2 - v * v - u * u)));
+  }
+  return d;
+}
+
+/// Sums over one line of the disc (fixed v), u = j - U: count, u count, u^2 count,
+/// 2 sum t, 2 u sum t, 6 sum t^2.
+struct LineSums {
+  std::int64_t n = 0, nu = 0, nuu = 0, s1x2 = 0, s1ux2 = 0, s2x6 = 0;
+};
+
+// The closed forms of one column segment, clamped so that an empty intersection gives
+// lo = hi + 1 with |lo|, |hi| <= w + 1 (all terms then vanish and stay small).
+#define ZDG_LINE_BODY(ACC)                                                                         \
+  ACC n = 0, nu = 0, nuu = 0, s1 = 0, s1u = 0, s2 = 0;                                             \
+  for (std::int32_t j = 0; j < len; ++j) {                                                         \
+    const std::int32_t wj = w[j], u = j - U;                                                       \
+    std::int32_t lo = std::max(a[j] - zc, -wj);                                                    \
+    std::int32_t hi = std::min(b[j] - zc, wj);                                                     \
+    lo = std::min(lo, wj + 1);                                                                     \
+    hi = std::max(hi, lo - 1);                                                                     \
+    const std::int32_t cnt = hi - lo + 1;                                                          \
+    const std::int32_t t1 = (lo + hi) * cnt;                                                       \
+    const std::int32_t lm = lo - 1;                                                                \
+    const std::int32_t t2 = hi * (hi + 1) * (2 * hi + 1) - lm * (lm + 1) * (2 * lm + 1);           \
+    n += ACC(cnt);                                                                                 \
+    nu += ACC(u * cnt);                                                                            \
+    nuu += ACC(u * u * cnt);                                                                       \
+    s1 += ACC(t1);                                                                                 \
+    s1u += ACC(u * t1);                                                                            \
+    s2 += ACC(t2);                                                                                 \
+  }                                                                                                \
+  return {n, nu, nuu, s1, s1u, s2};
+
+__attribute__((target_clones("avx2", "default"))) LineSums
+line_sums32(const std::int32_t* a, const std::int32_t* b, const std::int32_t* w, std::int32_t len,
+            std::int32_t zc, std::int32_t U) {
+  ZDG_LINE_BODY(std::int32_t)
+}
+
+__attribute__((target_clones("avx2", "default"))) LineSums
+line_sums64(const std::int32_t* a, const std::int32_t* b, const std::int32_t* w, std::int32_t len,
+            std::int32_t zc, std::int32_t U) {
+  ZDG_LINE_BODY(std::int64_t)
+}
+
+// Counts only.
+__attribute__((target_clones("avx2", "default"))) std::int64_t
+line_counts(const std::int32_t* a, const std::int32_t* b, const std::int32_t* w, std::int32_t len,
+            std::int32_t zc) {
+  std::int64_t n = 0;
+  for (std::int32_t j = 0; j < len; ++j) {
+    const std::int32_t wj = w[j];
+    const std::int32_t lo = std::max(a[j] - zc, -wj);
+    const std::int32_t hi = std::min(b[j] - zc, wj);
+    n += std::max(hi - lo + 1, 0);
+  }
+  return n;
+}
+
+#undef ZDG_LINE_BODY
+
+struct Tile {
+  std::vector<std::uint32_t> ids; // indices of the centres, sorted by (y, x, z)
+  VoxelBox region;
+};
+
+/// The blocks of `region` within distance r of a block holding a centre.
+BlockMask needed_blocks(const VoxelBox& region, std::span<const Voxel> centres,
+                        std::span<const std::uint32_t> ids, std::int64_t r2) {
+  const std::int64_t B = ColumnRuns::kBlock;
+  BlockMask m;
+  m.bx = (region.hi.x - region.lo.x + B) / B;
+  m.by = (region.hi.y - region.lo.y + B) / B;
+  m.bz = (region.hi.z - region.lo.z + B) / B;
+  m.needed.assign(std::size_t(m.bx * m.by * m.bz), 0);
+  std::vector<std::uint8_t> holds(m.needed.size(), 0);
+  std::vector<std::int64_t> held;
+  for (const auto id : ids) {
+    const Voxel& c = centres[id];
+    const std::int64_t i = (c.x - region.lo.x) / B, j = (c.y - region.lo.y) / B,
+                       k = (c.z - region.lo.z) / B;
+    const std::int64_t lin = (k * m.by + j) * m.bx + i;
+    if (!holds[std::size_t(lin)]) {
+      holds[std::size_t(lin)] = 1;
+      held.push_back(lin);
+    }
+  }
+  // Offsets between blocks whose voxels can be within distance r: along an axis the
+  // nearest voxels of blocks d apart are max(0, |d| B - (B - 1)) apart.
+  const std::int64_t reach = (isqrt(r2) + B - 1) / B + 1;
+  std::vector<std::array<std::int64_t, 3>> offsets;
+  const auto gap = [&](std::int64_t d) {
+    return std::max<std::int64_t>(0, std::abs(d) * B - (B - 1));
+  };
+  for (std::int64_t dk = -reach; dk <= reach; ++dk)
+    for (std::int64_t dj = -reach; dj <= reach; ++dj)
+      for (std::int64_t di = -reach; di <= reach; ++di)
+        if (gap(di) * gap(di) + gap(dj) * gap(dj) + gap(dk) * gap(dk) <= r2)
+          offsets.push_back({di, dj, dk});
+  for (const auto lin : held) {
+    const std::int64_t i = lin % m.bx, j = (lin / m.bx) % m.by, k = lin / (m.bx * m.by);
+    for (const auto& o : offsets) {
+      const std::int64_t a = i + o[0], b = j + o[1], c = k + o[2];
+      if (a < 0 || b < 0 || c < 0 || a >= m.bx || b >= m.by || c >= m.bz) continue;
+      m.needed[std::size_t((c * m.by + b) * m.bx + a)] = 1;
+    }
+  }
+  return m;
+}
+
+template <bool Second>
+BallMoments ball_from_runs(const ColumnRuns& runs, const Disc& disc, const Voxel& c,
+                           std::size_t& layer_segments) {
+  const std::int32_t zc = std::int32_t(c.z - runs.region.lo.z);
+  const std::int64_t r = disc.r;
+  // 2 m_z, 6 m_zz, 2 m_xz, 2 m_yz are summed, then divided exactly.
+  std::int64_t m0 = 0, mx = 0, my = 0, mz2 = 0, mxx = 0, myy = 0, mzz6 = 0, mxy = 0, mxz2 = 0,
+               myz2 = 0;
+  for (std::int64_t v = -r; v <= r; ++v) {
+    const std::int32_t U = disc.half[std::size_t(v + r)];
+    const std::int32_t* w = disc.w.data() + disc.offset[std::size_t(v + r)];
+    const std::int32_t len = 2 * U + 1;
+    const std::int64_t y = c.y + v, x0 = c.x - U;
+    const std::size_t col = runs.column(x0, y);
+    for (int k = 0; k < runs.layers(); ++k) {
+      std::int32_t j0 = 0, j1 = len - 1;
+      if (k > 0) {
+        // Only between the first and the last column of the line with more than k runs.
+        const auto [first, last] = runs.deeper_range(k, y, x0, x0 + 2 * U);
+        if (first > last) break;
+        j0 = std::int32_t(first - x0);
+        j1 = std::int32_t(last - x0);
+        layer_segments += std::size_t(j1 - j0 + 1);
+      }
+      const std::int32_t n = j1 - j0 + 1;
+      const std::int32_t* a = runs.begin[std::size_t(k)].data() + col + std::size_t(j0);
+      const std::int32_t* b = runs.end[std::size_t(k)].data() + col + std::size_t(j0);
+      if constexpr (Second) {
+        const LineSums s = r <= kInt32LineRadius ? line_sums32(a, b, w + j0, n, zc, U - j0)
+                                                 : line_sums64(a, b, w + j0, n, zc, U - j0);
+        m0 += s.n;
+        mx += s.nu;
+        my += v * s.n;
+        mz2 += s.s1x2;
+        mxx += s.nuu;
+        myy += v * v * s.n;
+        mzz6 += s.s2x6;
+        mxy += v * s.nu;
+        mxz2 += s.s1ux2;
+        myz2 += v * s.s1x2;
+      } else {
+        m0 += line_counts(a, b, w + j0, n, zc);
+      }
+    }
+  }
+  BallMoments out;
+  out.m0 = m0;
+  if constexpr (Second) {
+    out.m1 = {mx, my, mz2 / 2};
+    out.m2 = {mxx, myy, mzz6 / 6, mxy, mxz2 / 2, myz2 / 2};
+  }
+  return out;
+}
+
+} // namespace
+
+BallMoments direct_ball_moments(const VoxelPredicate& inside, const VoxelBox& box,
+                                const Voxel& centre, std::int64_t r2) {
+  if (r2 < 0 || r2 > kMaxRadius * kMaxRadius)
+    throw InvalidArgument("ball moments: squared digital radius " + std::to_string(r2) +
+                          " is outside [0, 256^2]");
+  const std::int64_t r = isqrt(r2);
+  BallMoments m;
+  for (std::int64_t z = -r; z <= r; ++z)
+    for (std::int64_t y = -r; y <= r; ++y)
+      for (std::int64_t x = -r; x <= r; ++x) {
+        if (x * x + y * y + z * z > r2) continue;
+        const Voxel p{centre.x + x, centre.y + y, centre.z + z};
+        if (!box.contains(p) || !inside(p)) continue;
+        ++m.m0;
+        m.m1[0] += x;
+        m.m1[1] += y;
+        m.m1[2] += z;
+        m.m2[0] += x * x;
+        m.m2[1] += y * y;
+        m.m2[2] += z * z;
+        m.m2[3] += x * y;
+        m.m2[4] += x * z;
+        m.m2[5] += y * z;
+      }
+  return m;
+}
+
+ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
+                                      std::span<const Voxel> centres, std::int64_t r2, int threads,
+                                      bool second_order) {
+  check_voxel_box(box);
+  if (r2 < 0 || r2 > kMaxRadius * kMaxRadius)
+    throw InvalidArgument("ball moments: squared digital radius " + std::to_string(r2) +
+                          " is outside [0, 256^2]");
+  if (threads < 0) throw InvalidArgument("ball moments: threads = " + std::to_string(threads));
+  ColumnMoments out;
+  out.moments.resize(centres.size());
+  out.stats.centres = centres.size();
+  if (centres.empty()) return out;
+  if (centres.size() >= (std::size_t{1} << 32))
+    throw InvalidArgument("ball moments: more than 2^32 centres");
+  const std::int64_t r = isqrt(r2);
+  const std::int64_t limit = kMaxVoxelCoordinate - kMaxRadius - 8;
+  for (const Voxel& c : centres)
+    if (std::abs(c.x) > limit || std::abs(c.y) > limit || std::abs(c.z) > limit)
+      throw InvalidArgument("ball moments: centre coordinate beyond 2^40");
+  const Disc disc = disc_of(r2);
+
+  // Tiles: one when the columns of the bounding box of the balls are few enough, else
+  // cubes of kTile voxels.
+  Voxel lo = centres[0], hi = centres[0];
+  for (const Voxel& c : centres) {
+    lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)};
+    hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
+  }
+  const bool one =
+      double(hi.x - lo.x + 2 * r + 1) * double(hi.y - lo.y + 2 * r + 1) <= double(kMaxColumns) &&
+      hi.z - lo.z + 2 * r + 1 < (std::int64_t{1} << 27);
+  std::vector<std::uint32_t> order(centres.size());
+  std::iota(order.begin(), order.end(), 0u);
+  auto tile_of = [&](const Voxel& c) {
+    if (one) return std::tuple<std::int64_t, std::int64_t, std::int64_t>{0, 0, 0};
+    auto t = [](std::int64_t v) { return v >= 0 ? v / kTile : -((-v + kTile - 1) / kTile); };
+    return std::tuple{t(c.z), t(c.y), t(c.x)};
+  };
+  std::sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) {
+    const Voxel &p = centres[i], &q = centres[j];
+    return std::tuple_cat(tile_of(p), std::tie(p.y, p.x, p.z)) <
+           std::tuple_cat(tile_of(q), std::tie(q.y, q.x, q.z));
+  });
+  std::vector<Tile> tiles;
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i;
+    const auto t = tile_of(centres[order[i]]);
+    Tile tile;
+    Voxel tl = centres[order[i]], th = tl;
+    while (j < order.size() && tile_of(centres[order[j]]) == t) {
+      const Voxel& c = centres[order[j]];
+      tl = {std::min(tl.x, c.x), std::min(tl.y, c.y), std::min(tl.z, c.z)};
+      th = {std::max(th.x, c.x), std::max(th.y, c.y), std::max(th.z, c.z)};
+      tile.ids.push_back(order[j]);
+      ++j;
+    }
+    tile.region = {{tl.x - r, tl.y - r, tl.z - r}, {th.x + r, th.y + r, th.z + r}};
+    tiles.push_back(std::move(tile));
+    i = j;
+  }
+
+  const unsigned workers = unsigned(threads);
+  std::atomic<std::size_t> layer_segments{0};
+  for (const Tile& tile : tiles) {
+    const BlockMask mask = needed_blocks(tile.region, centres, tile.ids, r2);
+    const ColumnRuns runs = column_runs(inside, box, tile.region, workers, &mask);
+    out.stats.evaluations += runs.evaluations;
+    out.stats.layers = std::max(out.stats.layers, runs.layers());
+    out.stats.region_voxels += std::size_t(runs.nx * runs.ny * runs.nz);
+    if (runs.layers() == 0) continue; // nothing inside: all moments stay zero
+    constexpr std::int64_t kBatch = 64;
+    const std::int64_t n = std::int64_t(tile.ids.size());
+    parallel_for((n + kBatch - 1) / kBatch, workers, [&](std::int64_t batch) {
+      std::size_t extra = 0;
+      const std::int64_t e = std::min(n, (batch + 1) * kBatch);
+      for (std::int64_t i = batch * kBatch; i < e; ++i) {
+        const auto id = tile.ids[std::size_t(i)];
+        out.moments[id] = second_order ? ball_from_runs<true>(runs, disc, centres[id], extra)
+                                       : ball_from_runs<false>(runs, disc, centres[id], extra);
+      }
+      layer_segments += extra;
+    });
+  }
+  out.stats.segments = centres.size() * disc.w.size();
+  out.stats.layer_segments = layer_segments.load();
+  return out;
+}
+
+} // namespace zdg
