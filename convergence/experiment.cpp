@@ -89,7 +89,8 @@ std::vector<std::string> k_texts_per_shape(const std::string& text, std::size_t 
 std::vector<double> parse_k_per_shape(const std::string& text, std::size_t shapes,
                                       const std::string& what) {
   std::vector<double> out;
-  for (const auto& k : k_texts_per_shape(text, shapes, what)) out.push_back(parse_parameter(k, what));
+  for (const auto& k : k_texts_per_shape(text, shapes, what))
+    out.push_back(parse_parameter(k, what));
   return out;
 }
 
@@ -134,8 +135,9 @@ ExperimentPlan plan_experiment(const ExperimentConfig& config) {
     }
     plan.shapes.push_back(std::move(shape));
   }
-  const std::vector<std::string> ks =
-      config.k_text ? k_texts_per_shape(*config.k_text, plan.shapes.size()) : std::vector<std::string>{};
+  const std::vector<std::string> ks = config.k_text
+                                          ? k_texts_per_shape(*config.k_text, plan.shapes.size())
+                                          : std::vector<std::string>{};
   for (const auto& text : config.estimators) {
     EstimatorSpec spec = parse_estimator_spec(text);
     EstimatorEntry entry;

@@ -73,7 +73,7 @@ std::vector<double> parse_k_per_shape(const std::string& text, std::size_t shape
 /// One estimator entry of an experiment.
 struct EstimatorEntry {
   const Estimator* estimator = nullptr;
-  std::string label; // canonical spec text: the name in results.csv and summary.json
+  std::string label;              // canonical spec text: the name in results.csv and summary.json
   EstimatorParameters parameters; // with the default k of the first shape
   // The parameters on each shape (they differ only when k is given per shape and the entry
   // does not set its own k).

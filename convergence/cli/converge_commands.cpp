@@ -440,9 +440,10 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
                     "Estimator with its own parameters, NAME[:KEY=VALUE,...], e.g. "
                     "bc-curvature:k=1,alpha=14/9 (repeatable; see --list)");
     add_text_option(cmd, "--h", o->h, "Grid steps: HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
-    add_text_option(cmd, "--k", o->k,
-                    "Default k of every estimator that has one (R = k h^alpha, mask factor); or one "
-                    "per shape, K1,K2,... in the order of --shape");
+    add_text_option(
+        cmd, "--k", o->k,
+        "Default k of every estimator that has one (R = k h^alpha, mask factor); or one "
+        "per shape, K1,K2,... in the order of --shape");
     add_text_option(cmd, "--alpha", o->alpha,
                     "Default alpha of every estimator that has one (R = k h^alpha, mask exponent)");
     add_text_option(cmd, "--translations", o->translations,

@@ -352,7 +352,8 @@ void run_halfplanes(const std::string& path, const HullOptions& o) {
     out.finish();
     return;
   }
-  print_polygon(out, r.value.vertices, "integer hull of " + std::to_string(hs.size()) + " half-planes",
+  print_polygon(out, r.value.vertices,
+                "integer hull of " + std::to_string(hs.size()) + " half-planes",
                 std::string(to_string(r.served)), o.json, "bounded");
   out.finish();
 }
