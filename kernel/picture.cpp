@@ -183,6 +183,12 @@ void RgbImage::fill_rect(int x0, int y0, int x1, int y1, Rgb c) {
     for (int x = std::max(0, x0); x < std::min(width, x1); ++x) set(x, y, c);
 }
 
+void check_picture_size(int width, int height, const std::string& what) {
+  if (width < 200 || height < 150 || width > 8192 || height > 8192)
+    throw InvalidArgument(what + ": picture size " + std::to_string(width) + "x" +
+                          std::to_string(height) + " (200x150 .. 8192x8192)");
+}
+
 void write_png(const std::string& path, const RgbImage& image) {
   if (image.width < 1 || image.height < 1 ||
       image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)

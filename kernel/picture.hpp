@@ -37,6 +37,10 @@ struct RgbImage {
   void fill_rect(int x0, int y0, int x1, int y1, Rgb c); ///< [x0, x1) x [y0, y1), clipped
 };
 
+/// The picture sizes the renderers accept: 200 x 150 to 8192 x 8192 pixels (InvalidArgument
+/// otherwise, naming the size; `what` starts the message, e.g. "render" or "--png-size").
+void check_picture_size(int width, int height, const std::string& what = "render");
+
 /// Writes an 8-bit RGB PNG (IoError naming the file on failure; atomic).
 void write_png(const std::string& path, const RgbImage& image);
 

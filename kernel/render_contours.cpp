@@ -33,9 +33,7 @@ RgbImage render_contours(const Image<std::uint8_t>& image,
       throw InvalidArgument("render: image extent " + std::to_string(image.domain().extent(k)) +
                             " beyond 2^24");
   }
-  if (opt.width < 200 || opt.height < 150 || opt.width > 8192 || opt.height > 8192)
-    throw InvalidArgument("render: picture size " + std::to_string(opt.width) + "x" +
-                          std::to_string(opt.height) + " (200x150 .. 8192x8192)");
+  check_picture_size(opt.width, opt.height);
   std::vector<double> all;
   bool have_values = false;
   for (const auto& c : contours) {

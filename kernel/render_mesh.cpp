@@ -48,9 +48,7 @@ RgbImage render_mesh(const PolygonMesh& mesh, const std::string& field,
   mesh.validate();
   if (opt.supersample < 1 || opt.supersample > 4)
     throw InvalidArgument("render: supersample " + std::to_string(opt.supersample) + " (1..4)");
-  if (opt.width < 200 || opt.height < 150 || opt.width > 8192 || opt.height > 8192)
-    throw InvalidArgument("render: picture size " + std::to_string(opt.width) + "x" +
-                          std::to_string(opt.height) + " (200x150 .. 8192x8192)");
+  check_picture_size(opt.width, opt.height);
   if (mesh.face_count() >= std::numeric_limits<std::int32_t>::max())
     throw InvalidArgument("render: more than 2^31 - 2 faces");
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {

@@ -3,13 +3,16 @@
 //
 //   zdg surface INPUT [selection] [--adjacency 6,26] [--component largest|all|K]
 //               [--estimate ii-mean,ii-k1,...] [--radius R|Rv] [--mesh primal|marching-cubes]
-//               [-o OUT.ply] [--csv F] [--threads N] [--json] [--quiet] [--force]
+//               [-o OUT.ply|.obj|.off] [--csv F] [--png F [--color E] [--view AZ,EL]
+//               [--png-size WxH]] [--threads N] [--json] [--quiet] [--force]
 //   zdg contour INPUT [selection] [--adjacency 4,8] [--component ...]
-//               [--estimate ii-curvature,...] [--radius R|Rv] [-o OUT.svg] [--csv F] ...
+//               [--estimate ii-curvature,...] [--radius R|Rv] [-o OUT.svg] [--csv F]
+//               [--png F [--color ii-curvature] [--png-size WxH]] ...
 //
 // The command parses, calls the library and prints; the algorithms are in kernel/
 // (image_surfels, image_surfaces, primal_surface_mesh, marching_cubes, image_contours,
-// connected_components, betti_numbers) and estimators/ (volume_ii, contour_estimators).
+// connected_components, betti_numbers, mesh_io, render_mesh, render_contours) and
+// estimators/ (volume_ii, contour_estimators).
 // Outputs are declared to an OutputSet before the input is read (a missing folder or an
 // existing file without --force fails at once) and renamed into place at the end.
 #include <zdg/arith/error.hpp>
@@ -25,9 +28,13 @@
 #include <zdg/kernel/image_surfaces.hpp>
 #include <zdg/kernel/image_surfels.hpp>
 #include <zdg/kernel/marching_cubes.hpp>
+#include <zdg/kernel/mesh_io.hpp>
 #include <zdg/kernel/output_files.hpp>
 #include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/picture.hpp>
 #include <zdg/kernel/primal_surface_mesh.hpp>
+#include <zdg/kernel/render_contours.hpp>
+#include <zdg/kernel/render_mesh.hpp>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -45,6 +52,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <unistd.h>
 #include <vector>
 
@@ -206,93 +214,105 @@ std::string component_text(std::int64_t which) {
   return which == 0 ? "all" : (which == 1 ? "largest" : str(which));
 }
 
-// Until the shared mesh writers land: binary little-endian PLY, float coordinates, int32
-// indices, optional per-face normals and scalars (named with '_' for '-').
-void write_ply_file(const std::string& path, const PolygonMesh& m) {
-  m.validate();
-  if (m.vertex_count() > std::numeric_limits<std::int32_t>::max())
-    throw IoError(path + ": more than 2^31 - 1 vertices for a PLY file");
-  std::ofstream f(path, std::ios::binary);
-  if (!f) throw IoError(path + ": cannot be written");
-  std::string h = "ply\nformat binary_little_endian 1.0\ncomment zdg\n";
-  h += "element vertex " + str(m.vertex_count()) +
-       "\nproperty float x\nproperty float y\n"
-       "property float z\n";
-  if (!m.vertex_normals.empty()) h += "property float nx\nproperty float ny\nproperty float nz\n";
-  h += "element face " + str(m.face_count()) + "\nproperty list uchar int vertex_indices\n";
-  if (!m.face_normals.empty()) h += "property float nx\nproperty float ny\nproperty float nz\n";
-  for (const auto& [name, values] : m.face_scalars) {
-    std::string n = name;
-    for (char& c : n)
-      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    h += "property float " + n + "\n";
-  }
-  h += "end_header\n";
-  f << h;
-  std::vector<char> buf;
-  auto put_f = [&](double v) {
-    const float x = static_cast<float>(v);
-    const char* p = reinterpret_cast<const char*>(&x);
-    buf.insert(buf.end(), p, p + 4);
-  };
-  auto flush = [&](bool force) {
-    if (force || buf.size() > (std::size_t{1} << 22)) {
-      f.write(buf.data(), std::streamsize(buf.size()));
-      buf.clear();
-    }
-  };
-  for (std::int64_t v = 0; v < m.vertex_count(); ++v) {
-    const auto& p = m.vertices[std::size_t(v)];
-    put_f(p.x);
-    put_f(p.y);
-    put_f(p.z);
-    if (!m.vertex_normals.empty()) {
-      const auto& n = m.vertex_normals[std::size_t(v)];
-      put_f(n.x);
-      put_f(n.y);
-      put_f(n.z);
-    }
-    flush(false);
-  }
-  for (std::int64_t fi = 0; fi < m.face_count(); ++fi) {
-    buf.push_back(static_cast<char>(m.face_size));
-    for (auto idx : m.face(fi)) {
-      const std::int32_t x = static_cast<std::int32_t>(idx);
-      const char* p = reinterpret_cast<const char*>(&x);
-      buf.insert(buf.end(), p, p + 4);
-    }
-    if (!m.face_normals.empty()) {
-      const auto& n = m.face_normals[std::size_t(fi)];
-      put_f(n.x);
-      put_f(n.y);
-      put_f(n.z);
-    }
-    for (const auto& [name, values] : m.face_scalars) put_f(values[std::size_t(fi)]);
-    flush(false);
-  }
-  flush(true);
-  if (!f) throw IoError(path + ": write failed");
-}
-
-void write_mesh_file(const std::string& staging, const std::string& final_path,
-                     const PolygonMesh& m) {
-  std::string e = std::filesystem::path(final_path).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (e != ".ply") throw IoError(final_path + ": unknown mesh format '" + e + "' (.ply)");
-  write_ply_file(staging, m);
-}
-
-void check_mesh_extension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (e != ".ply") throw IoError(path + ": unknown mesh format '" + e + "' (.ply)");
-}
-
 void refuse_input_as_output(const std::string& input, const std::string& output) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!output.empty() && fs::exists(output, ec) && fs::equivalent(input, output, ec))
     throw InvalidArgument(output + ": is the input file; refusing to overwrite it");
+}
+
+// The picture options shared by surface and contour.
+struct PictureArgs {
+  std::string png, color, view, size, range;
+};
+
+std::string lower_extension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+double parse_number(const std::string& text, const std::string& option) {
+  double v = 0;
+  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v))
+    throw InvalidArgument(option + ": '" + text + "' is not a number");
+  return v;
+}
+
+// Checks the picture options (before any work) and returns the size: "WxH" (default
+// default_w x default_h), the PNG extension, and that --color / --view / --png-size come
+// with --png.
+std::pair<int, int> picture_size(const PictureArgs& p, int default_w, int default_h) {
+  if (p.png.empty()) {
+    for (const auto& [value, name] : {std::pair{p.color, "--color"},
+                                      {p.view, "--view"},
+                                      {p.size, "--png-size"},
+                                      {p.range, "--color-range"}})
+      if (!value.empty()) throw InvalidArgument(std::string(name) + " needs --png FILE");
+    return {default_w, default_h};
+  }
+  if (lower_extension(p.png) != ".png")
+    throw IoError(p.png + ": the picture is a .png file (got '" + lower_extension(p.png) + "')");
+  if (p.size.empty()) return {default_w, default_h};
+  const auto x = p.size.find('x');
+  int wh[2] = {0, 0};
+  const std::string parts[2] = {p.size.substr(0, x),
+                                x == std::string::npos ? "" : p.size.substr(x + 1)};
+  for (int k = 0; k < 2; ++k) {
+    const char* b = parts[k].data();
+    const auto [q, ec] = std::from_chars(b, b + parts[k].size(), wh[k]);
+    if (parts[k].empty() || ec != std::errc() || q != b + parts[k].size())
+      throw InvalidArgument("--png-size '" + p.size + "': expected WIDTHxHEIGHT, e.g. 1200x900");
+  }
+  check_picture_size(wh[0], wh[1], "--png-size " + p.size);
+  return {wh[0], wh[1]};
+}
+
+// --color-range LO:HI (LO < HI), or none when empty.
+std::optional<std::pair<double, double>> parse_color_range(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  const auto colon = text.find(':');
+  if (colon == std::string::npos)
+    throw InvalidArgument("--color-range '" + text + "': expected LO:HI, e.g. -0.2:0.2");
+  const double lo = parse_number(text.substr(0, colon), "--color-range");
+  const double hi = parse_number(text.substr(colon + 1), "--color-range");
+  if (!(lo < hi)) throw InvalidArgument("--color-range '" + text + "': LO must be below HI");
+  return std::pair{lo, hi};
+}
+
+// --view AZ,EL in degrees (elevation in [-90, 90]).
+std::pair<double, double> parse_view(const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos)
+    throw InvalidArgument("--view '" + text + "': expected AZIMUTH,ELEVATION in degrees");
+  const double az = parse_number(text.substr(0, comma), "--view");
+  const double el = parse_number(text.substr(comma + 1), "--view");
+  if (el < -90 || el > 90)
+    throw InvalidArgument("--view '" + text + "': the elevation is between -90 and 90 degrees");
+  return {az, el};
+}
+
+nlohmann::json picture_json(const std::string& path, const std::string& field, int w, int h,
+                            double lo, double hi, ColorMap map) {
+  nlohmann::json j = {{"path", path}, {"width", w}, {"height", h}};
+  if (!field.empty()) {
+    j["field"] = field;
+    j["color_map"] = color_map_name(map);
+    j["range"] = {lo, hi};
+  }
+  return j;
+}
+
+void print_picture_line(const nlohmann::json& picture) {
+  if (picture.contains("field")) {
+    fmt::print("  picture coloured by {} ({}, {:.4g} to {:.4g}) -> {}\n",
+               picture["field"].get<std::string>(), picture["color_map"].get<std::string>(),
+               picture["range"][0].get<double>(), picture["range"][1].get<double>(),
+               picture["path"].get<std::string>());
+  } else {
+    fmt::print("  picture -> {}\n", picture["path"].get<std::string>());
+  }
 }
 
 // ------------------------------------------------------------------------------------------
@@ -305,6 +325,7 @@ struct SurfaceArgs {
   VolumeInputArgs in;
   std::string adjacency = "6,26", component = "all", estimate, radius, mesh = "primal";
   std::string output, csv;
+  PictureArgs picture;
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
 };
@@ -387,15 +408,42 @@ void run_surface(const SurfaceArgs& a) {
                             "' (ii-mean, ii-gaussian, ii-k1, ii-k2, ii-normal, ii-directions)");
     est.names.insert(e);
   }
+  // The picture's colour: --color (computed when not in --estimate), else the first scalar
+  // estimate, else none (a grey surface).
+  const auto [png_w, png_h] = picture_size(a.picture, 1200, 900);
+  std::string color = a.picture.color;
+  if (!color.empty() && color != "none") {
+    if (std::find(kSurfaceEstimates.begin(), kSurfaceEstimates.begin() + 4, color) ==
+        kSurfaceEstimates.begin() + 4)
+      throw InvalidArgument("--color '" + color +
+                            "': expected ii-mean, ii-gaussian, ii-k1, ii-k2 or none");
+    est.names.insert(color);
+  }
+  if (color.empty() && !a.picture.png.empty())
+    for (auto it = kSurfaceEstimates.begin(); it != kSurfaceEstimates.begin() + 4; ++it)
+      if (color.empty() && est.names.count(*it) != 0) color = *it;
+  if (color == "none") color.clear();
+  MeshRenderOptions render;
+  render.width = png_w;
+  render.height = png_h;
+  render.threads = a.threads;
+  if (!a.picture.view.empty())
+    std::tie(render.azimuth, render.elevation) = parse_view(a.picture.view);
+  if (const auto r = parse_color_range(a.picture.range)) {
+    render.value_min = r->first;
+    render.value_max = r->second;
+  }
   const Radius radius = parse_radius(a.radius.empty() ? "5v" : a.radius);
   if (a.mesh != "primal" && a.mesh != "marching-cubes")
     throw InvalidArgument("--mesh '" + a.mesh + "': expected primal or marching-cubes");
-  if (!a.output.empty()) check_mesh_extension(a.output);
-  refuse_input_as_output(a.in.path, a.output);
-  refuse_input_as_output(a.in.path, a.csv);
+  std::optional<MeshFormat> mesh_format;
+  if (!a.output.empty()) mesh_format = mesh_format_of(a.output);
+  for (const auto* out : {&a.output, &a.csv, &a.picture.png})
+    refuse_input_as_output(a.in.path, *out);
   OutputSet outputs(a.force ? Existing::replace : Existing::refuse);
   const std::string mesh_staging = a.output.empty() ? "" : outputs.add(a.output).string();
   const std::string csv_staging = a.csv.empty() ? "" : outputs.add(a.csv).string();
+  const std::string png_staging = a.picture.png.empty() ? "" : outputs.add(a.picture.png).string();
 
   Progress progress(!a.quiet);
   nlohmann::json seconds = nlohmann::json::object();
@@ -470,8 +518,8 @@ void run_surface(const SurfaceArgs& a) {
     seconds["estimates"] = progress.done();
   }
 
-  nlohmann::json mesh_json;
-  if (!a.output.empty()) {
+  nlohmann::json mesh_json, picture;
+  if (!a.output.empty() || !a.picture.png.empty()) {
     progress.start(a.mesh + " mesh");
     PolygonMesh mesh;
     std::int64_t edges = 0;
@@ -544,14 +592,23 @@ void run_surface(const SurfaceArgs& a) {
     }
     seconds["mesh"] = progress.done(str(mesh.face_count()) + " faces");
     mesh_json = {{"kind", a.mesh},
-                 {"path", a.output},
                  {"vertices", str(mesh.vertex_count())},
                  {"faces", str(mesh.face_count())},
                  {"edges", str(edges)},
                  {"euler", str(mesh.vertex_count() - edges + mesh.face_count())}};
-    progress.start("writing " + a.output);
-    write_mesh_file(mesh_staging, a.output, mesh);
-    seconds["write_mesh"] = progress.done();
+    if (!a.output.empty()) {
+      mesh_json["path"] = a.output;
+      progress.start("writing " + a.output);
+      write_mesh(mesh_staging, mesh, mesh_format, a.threads);
+      seconds["write_mesh"] = progress.done();
+    }
+    if (!a.picture.png.empty()) {
+      progress.start("picture " + a.picture.png);
+      const auto r = render_mesh_png(png_staging, mesh, color, render);
+      seconds["picture"] = progress.done();
+      picture =
+          picture_json(a.picture.png, color, png_w, png_h, r.value_min, r.value_max, r.color_map);
+    }
   }
   if (!a.csv.empty()) {
     progress.start("writing " + a.csv);
@@ -596,6 +653,7 @@ void run_surface(const SurfaceArgs& a) {
                         {"seconds", seconds},
                         {"threads", worker_count(a.threads, std::int64_t{1} << 30)}};
     if (!mesh_json.is_null()) j["mesh"] = mesh_json;
+    if (!picture.is_null()) j["picture"] = picture;
     if (!a.csv.empty()) j["csv"] = a.csv;
     print_json(j);
     return;
@@ -608,9 +666,9 @@ void run_surface(const SurfaceArgs& a) {
     fmt::print("  {} pinched pointel(s), {} pinched linel(s) (see zdg surface --help)\n",
                ss.pinched_pointels, ss.pinched_linels);
   if (!mesh_json.is_null())
-    fmt::print("  {} mesh: {} vertices, {} faces -> {}\n", a.mesh,
+    fmt::print("  {} mesh: {} vertices, {} faces{}{}\n", a.mesh,
                mesh_json["vertices"].get<std::string>(), mesh_json["faces"].get<std::string>(),
-               a.output);
+               a.output.empty() ? "" : " -> ", a.output);
   if (est.names.count("ii-mean")) {
     const auto s = stats(est.mean);
     if (s.contains("mean"))
@@ -619,6 +677,7 @@ void run_surface(const SurfaceArgs& a) {
                  est.R / est.h);
   }
   if (!a.csv.empty()) fmt::print("  per-surfel values -> {}\n", a.csv);
+  if (!picture.is_null()) print_picture_line(picture);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -631,6 +690,7 @@ struct ContourArgs {
   VolumeInputArgs in;
   std::string adjacency = "4,8", component = "all", estimate, radius;
   std::string output, csv;
+  PictureArgs picture;
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
 };
@@ -688,6 +748,25 @@ void run_contour(const ContourArgs& a) {
                             "' (ii-curvature, bc-tangent, lmst-tangent, mlp-length, gauss-area)");
     names.insert(e);
   }
+  // The picture's colour: --color ii-curvature (computed when not in --estimate), the default
+  // when ii-curvature is estimated; otherwise the contours are drawn in black.
+  const auto [png_w, png_h] = picture_size(a.picture, 1000, 800);
+  std::string color = a.picture.color;
+  if (!color.empty() && color != "none") {
+    if (color != "ii-curvature")
+      throw InvalidArgument("--color '" + color + "': expected ii-curvature or none");
+    names.insert(color);
+  }
+  if (color.empty() && !a.picture.png.empty() && names.count("ii-curvature") != 0)
+    color = "ii-curvature";
+  if (color == "none") color.clear();
+  ContourRenderOptions render;
+  render.width = png_w;
+  render.height = png_h;
+  if (const auto r = parse_color_range(a.picture.range)) {
+    render.value_min = r->first;
+    render.value_max = r->second;
+  }
   req.ii_curvature = names.count("ii-curvature") != 0;
   req.bc_tangent = names.count("bc-tangent") != 0;
   req.lmst_tangent = names.count("lmst-tangent") != 0;
@@ -700,11 +779,12 @@ void run_contour(const ContourArgs& a) {
     if (e != ".svg")
       throw IoError(a.output + ": the contour drawing is an .svg file (got '" + e + "')");
   }
-  refuse_input_as_output(a.in.path, a.output);
-  refuse_input_as_output(a.in.path, a.csv);
+  for (const auto* out : {&a.output, &a.csv, &a.picture.png})
+    refuse_input_as_output(a.in.path, *out);
   OutputSet outputs(a.force ? Existing::replace : Existing::refuse);
   const std::string svg_staging = a.output.empty() ? "" : outputs.add(a.output).string();
   const std::string csv_staging = a.csv.empty() ? "" : outputs.add(a.csv).string();
+  const std::string png_staging = a.picture.png.empty() ? "" : outputs.add(a.picture.png).string();
 
   Progress progress(!a.quiet);
   nlohmann::json seconds = nlohmann::json::object();
@@ -762,6 +842,37 @@ void run_contour(const ContourArgs& a) {
     write_contour_csv(csv_staging, cs, h, origin_pixel, origin, req, e);
     seconds["write_csv"] = progress.done();
   }
+  nlohmann::json picture;
+  if (!a.picture.png.empty()) {
+    progress.start("picture " + a.picture.png);
+    // Each contour through its pointels and linel midpoints (lattice coordinates): a linel's
+    // value at its midpoint, the mean of the two linels' at a pointel.
+    std::vector<ContourPolyline> lines(cs.contours.size());
+    const ContourEmbedding lattice{1.0};
+    for (std::size_t c = 0; c < cs.contours.size(); ++c) {
+      const auto& k = cs.contours[c];
+      auto& line = lines[c];
+      const std::size_t n = k.size();
+      const std::vector<double>* v = color.empty() ? nullptr : &e.ii_curvature[c];
+      Pixel p = k.start;
+      for (std::size_t i = 0; i < n; ++i) {
+        line.points.push_back(lattice.pointel(p));
+        line.points.push_back(lattice.linel_midpoint(p, k.codes[i]));
+        if (v != nullptr) {
+          const double before = (*v)[(i + n - 1) % n], here = (*v)[i];
+          line.values.push_back(std::isnan(before) ? here
+                                : std::isnan(here) ? before
+                                                   : (before + here) / 2);
+          line.values.push_back(here);
+        }
+        p = p + freeman_step(k.codes[i]);
+      }
+    }
+    const auto r = render_contours_png(png_staging, mask, lines, color, render);
+    seconds["picture"] = progress.done();
+    picture =
+        picture_json(a.picture.png, color, png_w, png_h, r.value_min, r.value_max, r.color_map);
+  }
   outputs.commit();
   seconds["total"] = since(t_total);
 
@@ -810,6 +921,7 @@ void run_contour(const ContourArgs& a) {
                         {"threads", worker_count(a.threads, std::int64_t{1} << 30)}};
     if (!a.output.empty()) j["svg"] = a.output;
     if (!a.csv.empty()) j["csv"] = a.csv;
+    if (!picture.is_null()) j["picture"] = picture;
     print_json(j);
     return;
   }
@@ -823,10 +935,12 @@ void run_contour(const ContourArgs& a) {
   }
   if (!a.output.empty()) fmt::print("  drawing -> {}\n", a.output);
   if (!a.csv.empty()) fmt::print("  per-linel values -> {}\n", a.csv);
+  if (!picture.is_null()) print_picture_line(picture);
 }
 
 template <class Args>
-void add_common_options(CLI::App* cmd, Args& a, const char* pairs, const char* mesh_help) {
+void add_common_options(CLI::App* cmd, Args& a, const char* pairs, const char* mesh_help,
+                        const char* png_help) {
   add_volume_input_options(*cmd, a.in);
   cmd->add_option("--adjacency", a.adjacency, pairs);
   cmd->add_option("--component", a.component,
@@ -836,6 +950,13 @@ void add_common_options(CLI::App* cmd, Args& a, const char* pairs, const char* m
                   "(default 5v)");
   cmd->add_option("-o,--output", a.output, mesh_help);
   cmd->add_option("--csv", a.csv, "write one row per boundary element with its estimates");
+  cmd->add_option("--png", a.picture.png, png_help);
+  cmd->add_option("--png-size", a.picture.size,
+                  "picture size WIDTHxHEIGHT in pixels (200x150 .. 8192x8192)");
+  cmd->add_option("--color-range", a.picture.range,
+                  "the values at the ends of the colour map, LO:HI (default: the 1st and 99th "
+                  "percentiles; symmetric about 0 with the diverging map when they differ in "
+                  "sign)");
   cmd->add_option("--threads", a.threads, "worker threads (0 = all cores)");
   cmd->add_flag("--json", a.json, "print a JSON summary on stdout");
   cmd->add_flag("--quiet", a.quiet, "no progress on stderr");
@@ -850,28 +971,47 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
       "surface",
       "the boundary of a 3D object: closed digital surfaces under an adjacency pair (Euler "
       "characteristic, genus), Betti numbers, integral-invariant curvatures, a primal or "
-      "marching-cubes mesh. Under (6,26) and (26,6) the object's continuous analog may join two "
+      "marching-cubes mesh (PLY, OBJ, OFF), a PNG picture coloured by a curvature. Under (6,26) "
+      "and (26,6) the object's continuous analog may join two "
       "sheets at a pointel (pinched pointels) and, under any pair, a surface may pass twice along "
       "a linel (pinched linels, an edge of four quads in the primal mesh; marching cubes stays "
       "a manifold): the JSON counts them; the Betti numbers are exact in every case");
   add_common_options(surface, *s,
                      "adjacency pair (object, background): 6,26 (default), 26,6, 6,18, 18,6",
-                     "mesh output (.ply)");
+                     "mesh output: .ply (binary, with the estimates per face and the normals), "
+                     ".obj or .off",
+                     "picture of the mesh coloured by one estimate (--color), with a colour bar "
+                     "(default size 1200x900)");
   surface->add_option("--estimate", s->estimate,
                       "comma-separated estimators: ii-mean, ii-gaussian, ii-k1, ii-k2, ii-normal, "
                       "ii-directions");
+  surface->add_option("--color", s->picture.color,
+                      "the estimate that colours the picture: ii-mean, ii-gaussian, ii-k1, ii-k2 "
+                      "(computed if not in --estimate), or none; default: the first of these "
+                      "estimated");
+  surface->add_option("--view", s->picture.view,
+                      "picture view AZIMUTH,ELEVATION in degrees (default -60,30; 90,90 looks "
+                      "down the z axis with x to the right)");
   surface->add_option("--mesh", s->mesh, "primal (one quad per surfel, default) or marching-cubes");
   surface->callback([s] { run_surface(*s); });
 
   auto c = std::make_shared<ContourArgs>();
   auto* contour = app.add_subcommand(
-      "contour", "the contours of a 2D object under an adjacency pair, its Betti numbers, 2D "
-                 "estimators along the contours, an SVG drawing");
+      "contour",
+      "the contours of a 2D object under an adjacency pair, its Betti numbers, 2D "
+      "estimators along the contours, an SVG drawing, a PNG picture of the image with its "
+      "contours coloured by the curvature");
   add_common_options(contour, *c, "adjacency pair (object, background): 4,8 (default) or 8,4",
-                     "drawing of the contours (.svg)");
+                     "drawing of the contours (.svg)",
+                     "picture of the image with its contours coloured by ii-curvature (--color), "
+                     "with a colour bar (default size 1000x800)");
   contour->add_option("--estimate", c->estimate,
                       "comma-separated estimators: ii-curvature, bc-tangent, lmst-tangent, "
                       "mlp-length, gauss-area");
+  contour->add_option("--color", c->picture.color,
+                      "the estimate that colours the contours in the picture: ii-curvature "
+                      "(computed if not in --estimate) or none; default: ii-curvature when "
+                      "estimated");
   contour->callback([c] { run_contour(*c); });
 }
 

@@ -4,10 +4,10 @@
 #include <zdg/kernel/render_mesh.hpp>
 
 #include "tests/support/cli.hpp"
+#include "tests/support/png.hpp"
 #include "tests/support/voxel_mesh.hpp"
 
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include <cmath>
 
@@ -16,15 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-RgbImage decode_png(const fs::path& p) {
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  EXPECT_NE(png_image_begin_read_from_file(&png, p.c_str()), 0) << png.message;
-  png.format = PNG_FORMAT_RGB;
-  RgbImage img(static_cast<int>(png.width), static_cast<int>(png.height));
-  EXPECT_NE(png_image_finish_read(&png, nullptr, img.rgb.data(), 0, nullptr), 0) << png.message;
-  return img;
-}
+using test::decode_png;
 
 PolygonMesh ball(std::int64_t r) {
   return test::voxel_primal_mesh([r](std::int64_t x, std::int64_t y,

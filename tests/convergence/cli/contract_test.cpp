@@ -58,6 +58,15 @@ std::string small_npy() {
              std::string("\0\0\0\0\0\1\1\0\0\1\1\0\0\0\0\0", 16));
 }
 
+// A valid 4x4x4 uint8 volume: a 2x2x2 cube in the middle (a surface input).
+std::string cube_npy() {
+  std::string v(64, '\0');
+  for (int z = 1; z < 3; ++z)
+    for (int y = 1; y < 3; ++y)
+      for (int x = 1; x < 3; ++x) v[std::size_t(16 * z + 4 * y + x)] = '\1';
+  return npy("{'descr': '|u1', 'fortran_order': False, 'shape': (4, 4, 4), }", v);
+}
+
 std::vector<BadInput> bad_inputs() {
   const std::string converge = "converge --shape ball:5 --estimator gauss-area --h 1:0.5:3 ";
   return {
@@ -153,11 +162,46 @@ std::vector<BadInput> bad_inputs() {
        {},
        {"hull.txt"},
        "hull.txt: exists (use --force"},
+      {"existing surface mesh",
+       "surface {dir}/v.npy -o {dir}/m.obj",
+       {{"v.npy", cube_npy()}},
+       {"m.obj"},
+       "m.obj: exists (use --force"},
+      {"existing surface picture",
+       "surface {dir}/v.npy -o {dir}/m.ply --png {dir}/pic.png --color ii-mean --radius 1v",
+       {{"v.npy", cube_npy()}},
+       {"pic.png"},
+       "pic.png: exists (use --force"},
+      {"existing contour picture",
+       "contour {dir}/in.npy --png {dir}/pic.png",
+       {{"in.npy", small_npy()}},
+       {"pic.png"},
+       "pic.png: exists (use --force"},
       {"existing hull points output",
        "hull points {dir}/p.txt --json -o {dir}/hull.json",
        {{"p.txt", "0 0\n1 0\n0 1\n"}},
        {"hull.json"},
        "exists"},
+      {"surface mesh of an unknown format",
+       "surface {dir}/v.npy -o {dir}/m.stl",
+       {{"v.npy", cube_npy()}},
+       {},
+       "unknown mesh format '.stl'"},
+      {"surface picture of another format",
+       "surface {dir}/v.npy --png {dir}/pic.jpg",
+       {{"v.npy", cube_npy()}},
+       {},
+       "the picture is a .png file"},
+      {"picture options without a picture",
+       "surface {dir}/v.npy -o {dir}/m.ply --color ii-mean",
+       {{"v.npy", cube_npy()}},
+       {},
+       "--color needs --png"},
+      {"picture size out of range",
+       "contour {dir}/in.npy --png {dir}/pic.png --png-size 100000x10",
+       {{"in.npy", small_npy()}},
+       {},
+       "200x150 .. 8192x8192"},
       // --- 5. sizes announced by headers are checked before allocation ------------------------
       {"PGM claiming width 2^40 in 32 bytes",
        "transform dt {dir}/w.pgm -o {dir}/out.npy",

@@ -1,7 +1,9 @@
 // zdg surface and zdg contour: topology of known objects through the command line, outputs
-// reread by independent readers (numpy for the PLY and the CSV), and the contract on bad input
-// (exit 2, one stderr line naming the problem, nothing written, an existing output untouched).
+// reread by independent readers (numpy for the PLY and the CSV, libpng for the pictures), and
+// the contract on bad input (exit 2, one stderr line naming the problem, nothing written, an
+// existing output untouched).
 #include "tests/support/cli.hpp"
+#include "tests/support/png.hpp"
 #include "tests/support/python.hpp"
 #include <zdg/kernel/npy_io.hpp>
 
@@ -9,9 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <sstream>
 
 namespace zdg {
 namespace {
@@ -142,6 +146,109 @@ print(nv, nf, csv['ii_mean'].mean(), csv['ii_k1'].mean())
   EXPECT_NEAR(mean, 1.0 / 9, 0.03);
 }
 
+// The mesh format follows the extension: OBJ and OFF hold the same vertices and faces as the
+// JSON counts (read back as text), the OFF's faces the primal quads.
+TEST(SurfaceCommand, ObjAndOffByExtension) {
+  Files f;
+  save_volume(f.path("hollow.npy"), 18, hollow);
+  const auto j = run_json("surface " + f("hollow.npy") + " -o " + f("h.obj"));
+  const auto k = run_json("surface " + f("hollow.npy") + " -o " + f("h.off"));
+  EXPECT_EQ(j["mesh"]["path"], f.path("h.obj"));
+  const auto nv = std::stoll(j["mesh"]["vertices"].get<std::string>());
+  const auto nf = std::stoll(j["mesh"]["faces"].get<std::string>());
+  std::istringstream obj(f.bytes("h.obj"));
+  std::int64_t v = 0, faces = 0;
+  for (std::string line; std::getline(obj, line);) {
+    v += line.rfind("v ", 0) == 0 ? 1 : 0;
+    faces += line.rfind("f ", 0) == 0 ? 1 : 0;
+  }
+  EXPECT_EQ(v, nv);
+  EXPECT_EQ(faces, nf);
+  std::istringstream off(f.bytes("h.off"));
+  std::string magic;
+  std::int64_t ov = 0, of = 0, oe = -1;
+  off >> magic >> ov >> of >> oe;
+  EXPECT_EQ(magic, "OFF");
+  EXPECT_EQ(ov, nv);
+  EXPECT_EQ(of, nf);
+  EXPECT_EQ(k["mesh"]["euler"], "4");
+}
+
+// Mean colour difference green - blue over the coloured pixels (|r - b| or |g - b| above 30)
+// of the picture's drawing area (left of the colour bar, below the title) whose x is in
+// [x0, x1) as fractions of the coloured extent. Viridis' green - blue grows with the value and
+// Lambert's factor does not change its sign.
+struct ColouredSpan {
+  double green_minus_blue = 0;
+  std::int64_t pixels = 0;
+};
+
+ColouredSpan coloured_span(const RgbImage& img, int right, double x0, double x1) {
+  auto coloured = [](Rgb c) {
+    return std::abs(int(c.r) - int(c.b)) > 30 || std::abs(int(c.g) - int(c.b)) > 30;
+  };
+  int lo = img.width, hi = -1;
+  for (int y = 40; y < img.height; ++y)
+    for (int x = 0; x < right; ++x)
+      if (coloured(img.at(x, y))) {
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
+  ColouredSpan s;
+  double sum = 0;
+  for (int y = 40; y < img.height; ++y)
+    for (int x = 0; x < right; ++x) {
+      const double t = double(x - lo) / std::max(1, hi - lo);
+      const Rgb c = img.at(x, y);
+      if (t >= x0 && t < x1 && coloured(c)) {
+        sum += double(c.g) - double(c.b);
+        ++s.pixels;
+      }
+    }
+  s.green_minus_blue = s.pixels > 0 ? sum / double(s.pixels) : 0;
+  return s;
+}
+
+// The picture shows where the curvature is high: a prolate spheroid (semi-axes 11, 5.5, 5.5
+// along x, y, z) seen from above (--view 90,90: x to the right), coloured by ii-mean over
+// --color-range 0.1:0.3. Its mean curvature is 1/3 at the tips and 0.1 on the waist: the tips
+// are yellow-green, the waist blue-purple (viridis, a range of one sign), and the picture has
+// the asked size.
+TEST(SurfaceCommand, PictureShowsHighCurvatureAtTheTips) {
+  Files f;
+  save_volume(f.path("spheroid.npy"), 28, [](double x, double y, double z) {
+    return x * x / 121 + (y * y + z * z) / 30.25 <= 1;
+  });
+  const auto j = run_json("surface " + f("spheroid.npy") + " --png " + f("s.png") +
+                          " --color ii-mean --radius 3v --view 90,90 --png-size 600x450 --threads 2"
+                          " --color-range 0.1:0.3");
+  ASSERT_TRUE(j.contains("picture"));
+  EXPECT_EQ(j["picture"]["field"], "ii-mean");
+  EXPECT_EQ(j["picture"]["color_map"], "viridis");
+  EXPECT_EQ(j["picture"]["path"], f.path("s.png"));
+  EXPECT_EQ(j["picture"]["range"], nlohmann::json({0.1, 0.3}));
+  EXPECT_TRUE(j["estimates"].contains("ii-mean")); // --color computes it
+  EXPECT_FALSE(j["mesh"].contains("path"));        // no -o: the mesh is only drawn
+  EXPECT_TRUE(j["seconds"].contains("picture"));
+  const RgbImage img = test::decode_png(f.path("s.png"));
+  ASSERT_EQ(img.width, 600);
+  ASSERT_EQ(img.height, 450);
+  const int right = 600 - 180; // the colour bar's space
+  const auto left_tip = coloured_span(img, right, 0.0, 0.08);
+  const auto right_tip = coloured_span(img, right, 0.92, 1.01);
+  const auto waist = coloured_span(img, right, 0.4, 0.6);
+  ASSERT_GT(left_tip.pixels, 20);
+  ASSERT_GT(right_tip.pixels, 20);
+  ASSERT_GT(waist.pixels, 200);
+  EXPECT_GT(left_tip.green_minus_blue, 0);
+  EXPECT_GT(right_tip.green_minus_blue, 0);
+  EXPECT_LT(waist.green_minus_blue, 0);
+  // Without an estimate the surface is grey and the picture has no colour bar.
+  const auto g = run_json("surface " + f("spheroid.npy") + " --png " + f("g.png"));
+  EXPECT_FALSE(g["picture"].contains("field"));
+  EXPECT_EQ(test::decode_png(f.path("g.png")).width, 1200);
+}
+
 TEST(SurfaceCommand, ComponentSelection) {
   Files f;
   save_volume(f.path("two.npy"), 30, [](double x, double y, double z) {
@@ -195,12 +302,60 @@ TEST(ContourCommand, TopologyEstimatesAndOutputs) {
   }
 }
 
+// The 2D picture: the ring's outer contour (curvature 1/28 > 0) is drawn red, its hole's
+// (curvature -1/10 < 0) blue (coolwarm, signed values), over the grey object.
+TEST(ContourCommand, PictureColoursTheContoursByCurvature) {
+  Files f;
+  const std::int64_t n = 64;
+  std::vector<std::int64_t> v(std::size_t(n * n));
+  for (std::int64_t y = 0; y < n; ++y)
+    for (std::int64_t x = 0; x < n; ++x) {
+      const double r2 = (x - 31.5) * (x - 31.5) + (y - 31.5) * (y - 31.5);
+      v[std::size_t(y * n + x)] = r2 <= 28 * 28 && r2 > 10 * 10 ? 1 : 0;
+    }
+  write_npy(f.path("ring.npy"), make_npy(DType::U8, {n, n}, v));
+  const auto j = run_json("contour " + f("ring.npy") + " --png " + f("r.png") +
+                          " --color ii-curvature --radius 6v --png-size 500x400");
+  EXPECT_EQ(j["picture"]["color_map"], "coolwarm");
+  const RgbImage img = test::decode_png(f.path("r.png"));
+  ASSERT_EQ(img.width, 500);
+  ASSERT_EQ(img.height, 400);
+  // Red and blue pixels left of the colour bar: their distances from the ring's centre.
+  double cx = 0, cy = 0;
+  std::int64_t count = 0;
+  std::vector<std::array<int, 3>> pts; // (x, y, +1 red or -1 blue)
+  for (int y = 40; y < img.height; ++y)
+    for (int x = 0; x < img.width - 180; ++x) {
+      const Rgb c = img.at(x, y);
+      const int sign = int(c.r) - int(c.b) > 60 ? 1 : (int(c.b) - int(c.r) > 60 ? -1 : 0);
+      if (sign == 0) continue;
+      pts.push_back({x, y, sign});
+      cx += x;
+      cy += y;
+      ++count;
+    }
+  ASSERT_GT(count, 100);
+  cx /= double(count);
+  cy /= double(count);
+  double rmax = 0;
+  for (const auto& p : pts) rmax = std::max(rmax, std::hypot(p[0] - cx, p[1] - cy));
+  std::int64_t outer_red = 0, outer_blue = 0, inner_red = 0, inner_blue = 0;
+  for (const auto& p : pts) {
+    const double r = std::hypot(p[0] - cx, p[1] - cy) / rmax;
+    if (r > 0.7) (p[2] > 0 ? outer_red : outer_blue) += 1;
+    if (r < 0.5) (p[2] > 0 ? inner_red : inner_blue) += 1;
+  }
+  EXPECT_GT(outer_red, 20 * outer_blue) << outer_red << " " << outer_blue;
+  EXPECT_GT(inner_blue, 20 * inner_red) << inner_blue << " " << inner_red;
+}
+
 TEST(SurfaceCommand, BadInputIsOneLineExitTwoNothingWritten) {
   Files f;
   save_volume(f.path("ball.npy"), 12,
               [](double x, double y, double z) { return x * x + y * y + z * z <= 16; });
   write_npy(f.path("flat.npy"), make_npy(DType::U8, {3, 3}, {0, 1, 0, 1, 1, 1, 0, 1, 0}));
   std::ofstream(f.path("existing.ply"), std::ios::binary) << "keep me";
+  std::ofstream(f.path("existing.png"), std::ios::binary) << "keep me too";
   const std::vector<std::string> before = f.listing();
   struct Case {
     std::string args, message;
@@ -220,6 +375,21 @@ TEST(SurfaceCommand, BadInputIsOneLineExitTwoNothingWritten) {
       {"surface " + ball + out + " --component none", "--component"},
       {"surface " + ball + out + " --mesh dual", "--mesh"},
       {"surface " + ball + " -o " + f("out.stl"), "unknown mesh format"},
+      {"surface " + ball + " --png " + f("out.jpg"), "is a .png file"},
+      {"surface " + ball + " --png " + f("missing/out.png"), "does not exist"},
+      {"surface " + ball + out + " --png " + f("existing.png"), "exists (use --force"},
+      {"surface " + ball + " --png " + f("out.png") + " --color ii-normal", "--color"},
+      {"surface " + ball + out + " --color ii-mean", "--color needs --png"},
+      {"surface " + ball + out + " --view 0,0", "--view needs --png"},
+      {"surface " + ball + " --png " + f("out.png") + " --view 30", "AZIMUTH,ELEVATION"},
+      {"surface " + ball + " --png " + f("out.png") + " --view 0,91", "between -90 and 90"},
+      {"surface " + ball + " --png " + f("out.png") + " --png-size 100x100", "200x150"},
+      {"surface " + ball + " --png " + f("out.png") + " --png-size 800", "WIDTHxHEIGHT"},
+      {"surface " + ball + " --png " + f("out.png") + " --color-range 1", "LO:HI"},
+      {"surface " + ball + " --png " + f("out.png") + " --color-range 1:0", "below HI"},
+      {"surface " + ball + out + " --color-range 0:1", "--color-range needs --png"},
+      {"surface " + ball + " --png " + f("out.png") + " --color ii-mean --radius 100v",
+       "larger than the volume"},
       {"surface " + f("flat.npy") + out, "3D one is needed"},
       {"surface " + f("missing.npy") + out, "missing.npy"},
       {"surface " + ball + out + " --estimate ii-mean --spacing 1,1,2", "isotropic"},
@@ -231,6 +401,11 @@ TEST(SurfaceCommand, BadInputIsOneLineExitTwoNothingWritten) {
       {"contour " + f("flat.npy") + " -o " + f("out.svg") + " --estimate ii-curvature --radius 9v",
        "larger than the image"},
       {"contour " + f("flat.npy") + " -o " + f("missing/out.svg"), "does not exist"},
+      {"contour " + f("flat.npy") + " --png " + f("existing.ply"), "is a .png file"},
+      {"contour " + f("flat.npy") + " --png " + f("out.png") + " --color ii-mean", "--color"},
+      {"contour " + f("flat.npy") + " --color ii-curvature", "--color needs --png"},
+      {"contour " + f("flat.npy") + " --png " + f("missing/out.png"), "does not exist"},
+      {"contour " + f("flat.npy") + " --png " + f("existing.png"), "exists (use --force"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.args);
@@ -241,6 +416,7 @@ TEST(SurfaceCommand, BadInputIsOneLineExitTwoNothingWritten) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
     EXPECT_EQ(f.listing(), before) << "a file was created or removed";
     EXPECT_EQ(f.bytes("existing.ply"), "keep me");
+    EXPECT_EQ(f.bytes("existing.png"), "keep me too");
   }
   EXPECT_EQ(test::run_zdg("surface --help").status, 0);
   EXPECT_EQ(test::run_zdg("contour --help").status, 0);
