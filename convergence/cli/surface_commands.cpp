@@ -44,6 +44,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -70,28 +71,41 @@ std::string str(std::int64_t v) {
   return std::to_string(v);
 }
 
-// Progress on stderr when it is a terminal (and not --quiet): one line per step.
+// CPU seconds of the process (all threads): with the wall-clock seconds, the time of a step
+// on a machine shared with other work.
+double process_cpu_seconds() {
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+// Progress on stderr when it is a terminal (and not --quiet): one line per step. Records the
+// wall-clock and CPU seconds of each step for --json ("seconds", "cpu_seconds").
 class Progress {
 public:
   explicit Progress(bool enabled) : on_(enabled && ::isatty(2) == 1) {}
   void start(const std::string& what) {
     what_ = what;
     t0_ = Clock::now();
+    cpu0_ = process_cpu_seconds();
     if (on_) fmt::print(stderr, "zdg: {} ...\n", what);
   }
-  /// Ends the step; returns its seconds.
-  double done(const std::string& detail = "") {
+  /// Ends the step, recorded as `key`.
+  void done(const std::string& key, const std::string& detail = "") {
     const double s = since(t0_);
+    seconds[key] = s;
+    cpu_seconds[key] = process_cpu_seconds() - cpu0_;
     if (on_)
       fmt::print(stderr, "zdg: {} done{}{} ({:.2f} s)\n", what_, detail.empty() ? "" : ": ", detail,
                  s);
-    return s;
   }
+  nlohmann::json seconds = nlohmann::json::object(), cpu_seconds = nlohmann::json::object();
 
 private:
   bool on_;
   std::string what_;
   Clock::time_point t0_;
+  double cpu0_ = 0;
 };
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -446,10 +460,12 @@ void run_surface(const SurfaceArgs& a) {
   const std::string png_staging = a.picture.png.empty() ? "" : outputs.add(a.picture.png).string();
 
   Progress progress(!a.quiet);
-  nlohmann::json seconds = nlohmann::json::object();
+  auto& seconds = progress.seconds;
+  const double cpu_read = process_cpu_seconds();
   LoadedObject obj = load_object(a.in, 3, a.threads, !a.quiet);
   seconds["read"] = obj.read_seconds;
   seconds["select"] = obj.select_seconds;
+  progress.cpu_seconds["read_select"] = process_cpu_seconds() - cpu_read;
   const auto& vol = obj.volume;
   const VoxelPlacement place{{vol.spacing[2], vol.spacing[1], vol.spacing[0]},
                              {vol.origin[2], vol.origin[1], vol.origin[0]}};
@@ -474,18 +490,18 @@ void run_surface(const SurfaceArgs& a) {
 
   progress.start("components");
   ComponentSelection comps = select_components(mask, pair.object, which, a.threads, a.in.path);
-  seconds["components"] = progress.done(str(comps.count) + " component(s)");
+  progress.done("components", str(comps.count) + " component(s)");
 
   progress.start("Betti numbers");
   const BettiNumbers betti = betti_numbers(mask, pair, a.threads);
-  seconds["betti"] = progress.done();
+  progress.done("betti");
 
   progress.start("boundary surfels");
   const ImageSurfels sf = image_surfels(mask, a.threads);
-  seconds["surfels"] = progress.done(str(sf.size()) + " surfels");
+  progress.done("surfels", str(sf.size()) + " surfels");
   progress.start("closed surfaces");
   const ImageSurfaces ss = image_surfaces(mask, sf, conv, a.threads);
-  seconds["surfaces"] = progress.done(str(std::int64_t(ss.surfaces.size())) + " surfaces");
+  progress.done("surfaces", str(std::int64_t(ss.surfaces.size())) + " surfaces");
   if (ss.object_euler() != betti.euler)
     throw Error("internal: the surfaces give chi = " + str(ss.object_euler()) +
                 " but the block table gives " + str(betti.euler));
@@ -515,7 +531,7 @@ void run_surface(const SurfaceArgs& a) {
       est.mean = volume_ii_mean_curvature(mask, sf, est.h, est.R, a.threads);
     if (principal)
       est.principal = volume_ii_principal_curvatures(mask, sf, est.h, est.R, a.threads);
-    seconds["estimates"] = progress.done();
+    progress.done("estimates");
   }
 
   nlohmann::json mesh_json, picture;
@@ -590,7 +606,7 @@ void run_surface(const SurfaceArgs& a) {
         if (l > 0) v = {v.x / l, v.y / l, v.z / l};
       }
     }
-    seconds["mesh"] = progress.done(str(mesh.face_count()) + " faces");
+    progress.done("mesh", str(mesh.face_count()) + " faces");
     mesh_json = {{"kind", a.mesh},
                  {"vertices", str(mesh.vertex_count())},
                  {"faces", str(mesh.face_count())},
@@ -600,12 +616,12 @@ void run_surface(const SurfaceArgs& a) {
       mesh_json["path"] = a.output;
       progress.start("writing " + a.output);
       write_mesh(mesh_staging, mesh, mesh_format, a.threads);
-      seconds["write_mesh"] = progress.done();
+      progress.done("write_mesh");
     }
     if (!a.picture.png.empty()) {
       progress.start("picture " + a.picture.png);
       const auto r = render_mesh_png(png_staging, mesh, color, render);
-      seconds["picture"] = progress.done();
+      progress.done("picture");
       picture =
           picture_json(a.picture.png, color, png_w, png_h, r.value_min, r.value_max, r.color_map);
     }
@@ -613,10 +629,11 @@ void run_surface(const SurfaceArgs& a) {
   if (!a.csv.empty()) {
     progress.start("writing " + a.csv);
     write_surface_csv(csv_staging, sf, ss, place, est);
-    seconds["write_csv"] = progress.done();
+    progress.done("write_csv");
   }
   outputs.commit();
   seconds["total"] = since(t_total);
+  progress.cpu_seconds["total"] = process_cpu_seconds();
 
   if (a.json) {
     nlohmann::json components = nlohmann::json::array();
@@ -651,6 +668,7 @@ void run_surface(const SurfaceArgs& a) {
                         {"pinched_linels", str(ss.pinched_linels)},
                         {"estimates", estimates},
                         {"seconds", seconds},
+                        {"cpu_seconds", progress.cpu_seconds},
                         {"threads", worker_count(a.threads, std::int64_t{1} << 30)}};
     if (!mesh_json.is_null()) j["mesh"] = mesh_json;
     if (!picture.is_null()) j["picture"] = picture;
@@ -662,6 +680,16 @@ void run_surface(const SurfaceArgs& a) {
              "Betti numbers {} {} {} (Euler characteristic {})\n",
              a.in.path, comps.count, pair.name(), sf.size(), ss.surfaces.size(), betti.b[0],
              betti.b[1], betti.b[2], betti.euler);
+  std::size_t shown = 0;
+  for (const auto& [l, c] : per) {
+    if (++shown > 5) {
+      fmt::print("  ... {} more component(s) (--json lists them all)\n", per.size() - 5);
+      break;
+    }
+    fmt::print("  component {}: {} voxels, {} surfels in {} surface(s), Euler characteristic {}, "
+               "genus {}\n",
+               l, c.voxels, c.surfels, c.surfaces, c.euler, c.genus);
+  }
   if (ss.pinched_pointels > 0 || ss.pinched_linels > 0)
     fmt::print("  {} pinched pointel(s), {} pinched linel(s) (see zdg surface --help)\n",
                ss.pinched_pointels, ss.pinched_linels);
@@ -787,10 +815,12 @@ void run_contour(const ContourArgs& a) {
   const std::string png_staging = a.picture.png.empty() ? "" : outputs.add(a.picture.png).string();
 
   Progress progress(!a.quiet);
-  nlohmann::json seconds = nlohmann::json::object();
+  auto& seconds = progress.seconds;
+  const double cpu_read = process_cpu_seconds();
   LoadedObject obj = load_object(a.in, 2, a.threads, !a.quiet);
   seconds["read"] = obj.read_seconds;
   seconds["select"] = obj.select_seconds;
+  progress.cpu_seconds["read_select"] = process_cpu_seconds() - cpu_read;
   const auto& vol = obj.volume;
   const double h = isotropic_step(vol.spacing, a.in.path);
   const double R = radius.voxels ? radius.value * h : radius.value;
@@ -805,13 +835,13 @@ void run_contour(const ContourArgs& a) {
   progress.start("components");
   ComponentSelection comps = select_components(mask, pair.object, which, a.threads, a.in.path);
   comps.labels.reset();
-  seconds["components"] = progress.done(str(comps.count) + " component(s)");
+  progress.done("components", str(comps.count) + " component(s)");
   progress.start("Betti numbers");
   const BettiNumbers betti = betti_numbers(mask, pair, a.threads);
-  seconds["betti"] = progress.done();
+  progress.done("betti");
   progress.start("contours");
   const ImageContours cs = image_contours(mask, pair.object, pair.background);
-  seconds["contours"] = progress.done(str(std::int64_t(cs.contours.size())) + " contours");
+  progress.done("contours", str(std::int64_t(cs.contours.size())) + " contours");
   if (cs.b0 != betti.b[0] || cs.b1 != betti.b[1])
     throw Error("internal: the contours give b0, b1 = " + str(cs.b0) + ", " + str(cs.b1) +
                 " but the components give " + str(betti.b[0]) + ", " + str(betti.b[1]));
@@ -820,7 +850,7 @@ void run_contour(const ContourArgs& a) {
   if (!names.empty()) {
     progress.start("estimates");
     e = contour_estimates(mask, cs, req, h, R, a.threads);
-    seconds["estimates"] = progress.done();
+    progress.done("estimates");
   }
   const Pixel origin_pixel{vol.lower[1], vol.lower[0]};
   const Point2<double> origin{vol.origin[1], vol.origin[0]};
@@ -835,12 +865,12 @@ void run_contour(const ContourArgs& a) {
       drawing.field = &e.ii_curvature;
     }
     write_contour_svg(svg_staging, cs.contours, drawing);
-    seconds["write_svg"] = progress.done();
+    progress.done("write_svg");
   }
   if (!a.csv.empty()) {
     progress.start("writing " + a.csv);
     write_contour_csv(csv_staging, cs, h, origin_pixel, origin, req, e);
-    seconds["write_csv"] = progress.done();
+    progress.done("write_csv");
   }
   nlohmann::json picture;
   if (!a.picture.png.empty()) {
@@ -869,12 +899,13 @@ void run_contour(const ContourArgs& a) {
       }
     }
     const auto r = render_contours_png(png_staging, mask, lines, color, render);
-    seconds["picture"] = progress.done();
+    progress.done("picture");
     picture =
         picture_json(a.picture.png, color, png_w, png_h, r.value_min, r.value_max, r.color_map);
   }
   outputs.commit();
   seconds["total"] = since(t_total);
+  progress.cpu_seconds["total"] = process_cpu_seconds();
 
   if (a.json) {
     nlohmann::json contours = nlohmann::json::array();
@@ -918,6 +949,7 @@ void run_contour(const ContourArgs& a) {
                         {"betti", {str(betti.b[0]), str(betti.b[1])}},
                         {"estimates", estimates},
                         {"seconds", seconds},
+                        {"cpu_seconds", progress.cpu_seconds},
                         {"threads", worker_count(a.threads, std::int64_t{1} << 30)}};
     if (!a.output.empty()) j["svg"] = a.output;
     if (!a.csv.empty()) j["csv"] = a.csv;
