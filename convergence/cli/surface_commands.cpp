@@ -605,6 +605,7 @@ void run_surface(const SurfaceArgs& a) {
         const double l = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
         if (l > 0) v = {v.x / l, v.y / l, v.z / l};
       }
+      std::vector<Point3<double>>().swap(normals); // 24 bytes per surfel, not needed any more
     }
     progress.done("mesh", str(mesh.face_count()) + " faces");
     mesh_json = {{"kind", a.mesh},
