@@ -3,7 +3,7 @@
 //
 //   zdg surface INPUT [selection] [--adjacency 6,26] [--component largest|all|K]
 //               [--estimate ii-mean,ii-k1,...] [--radius R|Rv] [--mesh primal|marching-cubes]
-//               [-o OUT.ply] [--csv F] [--threads N] [--json] [--quiet] [--force]
+//               [-o OUT.ply|OUT.png] [--csv F] [--threads N] [--json] [--quiet] [--force]
 //   zdg contour INPUT [selection] [--adjacency 4,8] [--component ...]
 //               [--estimate ii-curvature,...] [--radius R|Rv] [-o OUT.svg] [--csv F] ...
 //
@@ -28,6 +28,7 @@
 #include <zdg/kernel/output_files.hpp>
 #include <zdg/kernel/parallel_for.hpp>
 #include <zdg/kernel/primal_surface_mesh.hpp>
+#include <zdg/kernel/render_mesh.hpp>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -274,18 +275,27 @@ void write_ply_file(const std::string& path, const PolygonMesh& m) {
   if (!f) throw IoError(path + ": write failed");
 }
 
+// .ply: the mesh itself; .png: a picture of it (kernel/render_mesh.hpp), coloured by the
+// first estimate when there is one, grey otherwise.
 void write_mesh_file(const std::string& staging, const std::string& final_path,
-                     const PolygonMesh& m) {
+                     const PolygonMesh& m, unsigned threads) {
   std::string e = std::filesystem::path(final_path).extension().string();
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (e != ".ply") throw IoError(final_path + ": unknown mesh format '" + e + "' (.ply)");
+  if (e == ".png") {
+    MeshRenderOptions opt;
+    opt.threads = threads;
+    render_mesh_png(staging, m, m.face_scalars.empty() ? "" : m.face_scalars.front().first, opt);
+    return;
+  }
+  if (e != ".ply") throw IoError(final_path + ": unknown mesh format '" + e + "' (.ply, .png)");
   write_ply_file(staging, m);
 }
 
 void check_mesh_extension(const std::string& path) {
   std::string e = std::filesystem::path(path).extension().string();
   for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (e != ".ply") throw IoError(path + ": unknown mesh format '" + e + "' (.ply)");
+  if (e != ".ply" && e != ".png")
+    throw IoError(path + ": unknown mesh format '" + e + "' (.ply, .png)");
 }
 
 void refuse_input_as_output(const std::string& input, const std::string& output) {
@@ -550,7 +560,7 @@ void run_surface(const SurfaceArgs& a) {
                  {"edges", str(edges)},
                  {"euler", str(mesh.vertex_count() - edges + mesh.face_count())}};
     progress.start("writing " + a.output);
-    write_mesh_file(mesh_staging, a.output, mesh);
+    write_mesh_file(mesh_staging, a.output, mesh, a.threads);
     seconds["write_mesh"] = progress.done();
   }
   if (!a.csv.empty()) {
@@ -856,7 +866,7 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
       "a manifold): the JSON counts them; the Betti numbers are exact in every case");
   add_common_options(surface, *s,
                      "adjacency pair (object, background): 6,26 (default), 26,6, 6,18, 18,6",
-                     "mesh output (.ply)");
+                     "mesh output (.ply), or a picture of it (.png)");
   surface->add_option("--estimate", s->estimate,
                       "comma-separated estimators: ii-mean, ii-gaussian, ii-k1, ii-k2, ii-normal, "
                       "ii-directions");
