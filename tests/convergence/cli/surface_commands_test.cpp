@@ -104,6 +104,26 @@ TEST(SurfaceCommand, MeshesHaveTheSurfacesEuler) {
   EXPECT_TRUE(fs::exists(f.path("m.ply")));
 }
 
+// -o OUT.png: a picture of the mesh (kernel/render_mesh.hpp), a PNG of the default 1200 x 900
+// pixels (signature and IHDR read back); the JSON still describes the mesh.
+TEST(SurfaceCommand, PngOutputIsAPictureOfTheMesh) {
+  Files f;
+  save_volume(f.path("hollow.npy"), 18, hollow);
+  const auto j = run_json("surface " + f("hollow.npy") + " --png " + f("p.png"));
+  EXPECT_EQ(j["mesh"]["faces"], j["surfels"]);
+  const std::string png = test::read_file(f.path("p.png"));
+  ASSERT_GT(png.size(), 24u);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_EQ(png.substr(12, 4), "IHDR");
+  const auto be32 = [&](std::size_t at) {
+    std::uint32_t v = 0;
+    for (std::size_t i = 0; i < 4; ++i) v = v << 8 | static_cast<unsigned char>(png[at + i]);
+    return v;
+  };
+  EXPECT_EQ(be32(16), 1200u);
+  EXPECT_EQ(be32(20), 900u);
+}
+
 // The PLY and the CSV read back with numpy: the counts of the JSON, indices in range, the
 // per-face ii-mean equal to the CSV's per-surfel column, whose mean is the JSON's.
 TEST(SurfaceCommand, OutputsReadBackWithNumpy) {
