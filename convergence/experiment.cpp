@@ -211,7 +211,7 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
   // integral invariants) run as one job per (h, shape, translation), one after the other on
   // one thread: their cache then computes the shared part once. As separate jobs (the
   // translations of one entry in a row), a computation of the finest levels of the CVIU 2014
-  // 3D sweep (~350 MB) was evicted before the next entry needed it and made again.
+  // 3D sweep (up to 420 MB) was evicted before the next entry needed it and made again.
   struct Job {
     std::size_t shape;
     std::vector<std::size_t> entries;
