@@ -7,7 +7,10 @@
 //    patch of the surface (the surfels within distance 2 of a point of the surface, a few
 //    thousand, contiguous so that the incremental walk moves by unit steps as on the whole
 //    surface). Counters: `columns` (ii_surfel_moments, from the column runs) and `walk`
-//    (ii_surfel_moments_incremental); both give the same integers (checked here too).
+//    (ii_surfel_moments_incremental); both give the same integers (checked here too);
+//  * the same shapes, whole surfaces (every boundary surfel, as in a run of the paper's
+//    sweep, translation (0.1, 0.2, 0.3)), one thread, one iteration: the per-surfel cost of
+//    the sweep, old counter against new (Surface/...).
 //   build/bin/ii_3d_bench --benchmark_counters_tabular=true
 #include <zdg/convergence/shapes_3d.hpp>
 #include <zdg/estimators/ii_3d.hpp>
@@ -134,6 +137,53 @@ void BM_PatchWalk(benchmark::State& state, const std::string& shape) {
   BM_PaperPatch<false>(state, shape);
 }
 
+// The whole surface of the digitized shape at h = exp(-i/10), R = 9 h^{1/3}.
+struct WholeSurface {
+  zdg::VoxelPredicate inside;
+  zdg::VoxelBox box;
+  std::vector<zdg::Surfel> surfels;
+  double h = 0, R = 0;
+};
+
+WholeSurface whole_surface(const std::string& shape, int i) {
+  WholeSurface w;
+  w.h = std::exp(-i / 10.0);
+  w.R = 9.0 * std::cbrt(w.h);
+  const auto s = zdg::parse_shape(shape);
+  const auto& s3 = dynamic_cast<const zdg::Shape3&>(*s);
+  w.inside = s3.digitize(w.h, {0.1, 0.2, 0.3});
+  const std::int64_t n = std::int64_t(std::ceil(10.5 / w.h));
+  w.box = {{-n, -n, -n}, {n, n, n}};
+  w.surfels =
+      zdg::track_surface(w.inside, w.box, zdg::find_boundary_surfel(w.inside, w.box, {0, 0, 0}));
+  return w;
+}
+
+template <bool Columns>
+void BM_WholeSurface(benchmark::State& state, const std::string& shape) {
+  const WholeSurface w = whole_surface(shape, int(state.range(0)));
+  const auto r2 = zdg::ii_digital_radius2(w.R, w.h);
+  zdg::IISurfelMoments m;
+  for (auto _ : state) {
+    m = Columns ? zdg::ii_surfel_moments(w.inside, w.box, w.surfels, r2, 1, true)
+                : zdg::ii_surfel_moments_incremental(w.inside, w.box, w.surfels, r2, 1, true);
+    benchmark::DoNotOptimize(m.moments.data());
+  }
+  state.counters["surfels"] = double(w.surfels.size());
+  state.counters["r"] = w.R / w.h;
+  state.counters["us/surfel"] = benchmark::Counter(double(w.surfels.size()) * 1e-6,
+                                                   benchmark::Counter::kIsIterationInvariantRate |
+                                                       benchmark::Counter::kInvert);
+  state.counters["evals/surfel"] = double(m.stats.predicate_evaluations) / double(w.surfels.size());
+}
+
+void BM_SurfaceColumns(benchmark::State& state, const std::string& shape) {
+  BM_WholeSurface<true>(state, shape);
+}
+void BM_SurfaceWalk(benchmark::State& state, const std::string& shape) {
+  BM_WholeSurface<false>(state, shape);
+}
+
 BENCHMARK(BM_TrackSurface)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Sphere1Moments<true>)
     ->Name("Sphere1/columns")
@@ -171,6 +221,38 @@ BENCHMARK_CAPTURE(BM_PatchWalk, goursat, std::string("goursat"))
     ->Arg(32)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// Whole surfaces: one iteration each (the walk at i = 26 takes about a minute per shape).
+BENCHMARK_CAPTURE(BM_SurfaceColumns, sphere9, std::string("sphere9"))
+    ->Arg(20)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SurfaceWalk, sphere9, std::string("sphere9"))
+    ->Arg(20)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SurfaceColumns, rcube, std::string("rcube"))
+    ->Arg(20)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SurfaceWalk, rcube, std::string("rcube"))
+    ->Arg(20)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SurfaceColumns, goursat, std::string("goursat"))
+    ->Arg(20)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SurfaceWalk, goursat, std::string("goursat"))
+    ->Arg(20)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 
 } // namespace
 

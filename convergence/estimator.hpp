@@ -104,6 +104,11 @@ struct Estimator {
   std::vector<EstimatorParameter> parameters;
   EstimatorTheory theory;
   std::function<ErrorStats(const RunInput&)> run;
+  /// Non-empty when the run shares one computation with the other estimators of the same tag
+  /// (the 3D integral invariants: one set of ball moments per shape, h, translation and R):
+  /// run_plan then runs them one after the other on one thread, where the estimators' own
+  /// cache serves them all.
+  std::string shared_computation = {};
 
   /// The declared parameter `name`, or nullptr.
   const EstimatorParameter* parameter(std::string_view name) const;

@@ -14,7 +14,9 @@
 //   plan_experiment    validation: shapes parse, entries resolve, dimensions agree, grid steps
 //                      sorted decreasing without repeats, counts in range. O(input).
 //   run_plan           scheduling: one job per run, finest grid steps first (the longest jobs,
-//                      for load balance) over `threads` workers (kernel/parallel_for.hpp).
+//                      for load balance) over `threads` workers (kernel/parallel_for.hpp);
+//                      the runs of one (h, shape, translation) whose estimators share a
+//                      computation (Estimator::shared_computation) are one job.
 //   aggregate_levels   aggregation per (shape, entry, h), after sorting the records: O(n log n)
 //                      for n runs.
 //   fit_experiment     the fits per norm on the finest levels, and the theory verdicts.

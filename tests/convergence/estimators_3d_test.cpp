@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -181,6 +182,42 @@ TEST(Estimators3d, DimensionsAndTheoryRows) {
   auto usphere = zdg::parse_shape("unprojected:sphere9");
   EXPECT_NEAR(zdg::test::theory_rate("ii-k1", *usphere, 1.0 / 3)->slope, 1.0 / 3, 1e-12);
   EXPECT_FALSE(zdg::test::theory_rate("ii-directions", *usphere, 1.0 / 3).has_value());
+}
+
+// The 3D integral invariants share one computation per (shape, h, translation, R), and
+// run_plan runs them as one job: every run keeps its own record (entry, translation, k) and
+// the errors of a run of its estimator alone, to the last bit, whatever the other entries and
+// the thread count.
+TEST(Estimators3d, SharedIIRunsKeepTheErrorsOfEachEstimatorAlone) {
+  zdg::ExperimentConfig c;
+  // Under the sanitizers: one shape and one step (a few seconds there).
+  c.shapes = kSanitized ? std::vector<std::string>{"unprojected:sphere9"}
+                        : std::vector<std::string>{"unprojected:sphere9", "rcube"};
+  c.estimators = {"ii-mean", "gauss-volume", "ii-k1", "ii-k2:k=7"};
+  c.hs = kSanitized ? std::vector<double>{0.6} : std::vector<double>{0.6, 0.45};
+  c.translations = 2;
+  c.k_text = "5";
+  c.threads = 2;
+  const auto together = zdg::run_experiment(c);
+  ASSERT_EQ(together.runs.size(), c.shapes.size() * c.estimators.size() * c.hs.size() * 2);
+  for (const auto& est : c.estimators) {
+    zdg::ExperimentConfig alone = c;
+    alone.estimators = {est};
+    alone.threads = 1;
+    const auto r = zdg::run_experiment(alone);
+    for (const auto& a : r.runs) {
+      const auto it = std::find_if(together.runs.begin(), together.runs.end(), [&](const auto& b) {
+        return b.shape == a.shape && b.estimator == a.estimator && b.h == a.h &&
+               b.translation == a.translation;
+      });
+      ASSERT_NE(it, together.runs.end()) << est << " " << a.shape;
+      EXPECT_EQ(it->k, a.k);
+      EXPECT_EQ(it->offset, a.offset);
+      EXPECT_EQ(it->errors.n, a.errors.n);
+      EXPECT_EQ(it->errors.linf, a.errors.linf) << est << " " << a.shape << " h = " << a.h;
+      EXPECT_EQ(it->errors.l2, a.errors.l2);
+    }
+  }
 }
 
 } // namespace
