@@ -12,10 +12,10 @@ input + output (zero-copy: no third buffer).
 """
 import argparse
 import json
-import resource
 import statistics
 import subprocess
 import time
+import tracemalloc
 
 import numpy as np
 
@@ -26,6 +26,32 @@ def ball(n):
     c, r = n // 2, 45 * n // 100
     z, y, x = np.ogrid[:n, :n, :n]
     return ((x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2 < r * r).astype(np.uint8)
+
+
+def current_rss():
+    with open("/proc/self/status") as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) * 1024
+    return 0
+
+
+def peak_rss_reset():
+    """Resets the kernel's peak resident size of this process (Linux >= 4.0)."""
+    try:
+        with open("/proc/self/clear_refs", "w") as f:
+            f.write("5")
+    except OSError:
+        pass
+    return peak_rss()
+
+
+def peak_rss():
+    with open("/proc/self/status") as f:
+        for line in f:
+            if line.startswith("VmHWM:"):
+                return int(line.split()[1]) * 1024
+    return 0
 
 
 def median_seconds(f, repeat):
@@ -47,18 +73,25 @@ def main():
     a = ap.parse_args()
 
     image = ball(a.n)
-    rss0 = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    # Memory of one call: numpy reports its allocations to tracemalloc (the output array);
+    # the process's resident size is read from /proc before and at the peak of the call.
+    rss_before = current_rss()
+    peak = peak_rss_reset()
+    tracemalloc.start()
     out = zdg.distance_transform(image, threads=a.threads)
-    rss1 = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+    _, traced = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    peak = peak_rss()
     print(f"input {image.nbytes / 2**20:.0f} MiB uint8, output {out.nbytes / 2**20:.0f} MiB "
-          f"{out.dtype}; peak RSS grew by {(rss1 - rss0) / 2**20:.0f} MiB during the first call")
+          f"{out.dtype}; allocated by the call {traced / 2**20:.1f} MiB; resident size grew by "
+          f"{(peak - rss_before) / 2**20:.1f} MiB at the peak of the call")
     del out
     t_py = median_seconds(lambda: zdg.distance_transform(image, threads=a.threads), a.repeat)
     print(f"zdg.distance_transform {a.n}^3 l2, {a.threads} threads: {t_py:.3f} s (median of "
           f"{a.repeat})")
     if a.cxx:
         name = f"Dt3d/{a.n}/2/{a.threads}"
-        res = subprocess.run([a.cxx, f"--benchmark_filter=^{name}$", "--benchmark_format=json",
+        res = subprocess.run([a.cxx, f"--benchmark_filter=^{name}/", "--benchmark_format=json",
                               f"--benchmark_repetitions={a.repeat}"],
                              check=True, capture_output=True, text=True)
         runs = [b for b in json.loads(res.stdout)["benchmarks"]
