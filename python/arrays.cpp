@@ -400,8 +400,9 @@ void bind_arrays(py::module_& m) {
         "al. 2000, Maurer et al. 2003), O(N d) for l1, l2, linf, O(N d log n) for other lp. "
         "metric: 'l1', 'l2', 'linf', 'lP' (1 <= P <= 1000); torus: per-axis periodic flags "
         "(or one bool). Zero-copy: a bool/int8/uint8 C- or F-contiguous input is read in "
-        "place, the result is written straight into the returned array (int32 when the "
-        "values fit it, else int64, else an object array of exact Python ints). The GIL is "
+        "place, the result is written straight into the returned array (int32, else int64: "
+        "the narrowest type the proven bound on every intermediate allows, else an object "
+        "array of exact Python ints). The GIL is "
         "released during the work.");
   m.def("connected_components", &connected_components_py, py::arg("image"), py::arg("k") = 0,
         py::kw_only(), py::arg("phase") = "object", py::arg("order") = "size",

@@ -244,7 +244,8 @@ py::dict converge(const std::vector<std::string>& shapes,
     s.h = setting(h, "h");
   } else {
     std::string text;
-    for (py::handle x : py::iter(h)) text += (text.empty() ? "" : ",") + std::string(py::repr(x));
+    for (py::handle x : py::iter(h))
+      text += (text.empty() ? "" : ",") + std::string(py::repr(py::float_(x)));
     s.h = Setting{text, "converge(h=...)"};
   }
   s.k = setting(k, "k");
