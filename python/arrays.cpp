@@ -20,9 +20,12 @@
 #include <zdg/kernel/homotopic_thinning.hpp>
 #include <zdg/kernel/image_surfels.hpp>
 #include <zdg/kernel/output_files.hpp>
+#include <zdg/kernel/reduced_medial_axis.hpp>
+#include <zdg/kernel/reverse_distance_transform.hpp>
 #include <zdg/kernel/separable_engine.hpp>
 #include <zdg/kernel/skeleton_constraints.hpp>
 #include <zdg/kernel/volume_io.hpp>
+#include <zdg/kernel/voronoi_map.hpp>
 
 #include <pybind11/stl.h>
 
@@ -164,6 +167,81 @@ py::array distance_transform_py(const py::object& obj, const std::string& metric
     Py_XDECREF(old);
   }
   return out;
+}
+
+// --- the other separable transforms ----------------------------------------------------
+
+TransformOptions transform_options(const std::string& metric, const py::object& torus,
+                                   unsigned threads, std::size_t d) {
+  TransformOptions opt;
+  opt.metric = parse_metric(metric);
+  opt.threads = threads;
+  if (!torus.is_none()) {
+    if (py::isinstance<py::bool_>(torus)) {
+      opt.torus.assign(d, torus.cast<bool>());
+    } else {
+      for (py::handle t : py::iter(torus)) opt.torus.push_back(t.cast<bool>());
+      if (!opt.torus.empty() && opt.torus.size() != d) {
+        throw InvalidArgument("torus has " + std::to_string(opt.torus.size()) + " flags for a " +
+                              std::to_string(d) + "-dimensional array");
+      }
+    }
+  }
+  return opt;
+}
+
+py::array voronoi_map_py(const py::object& obj, const std::string& metric, const py::object& torus,
+                         unsigned threads) {
+  Image<std::uint8_t> img = image_of(obj, "voronoi_map");
+  TransformOptions opt =
+      transform_options(metric, torus, threads, static_cast<std::size_t>(img.dim()));
+  VoronoiMap v = [&] {
+    py::gil_scoped_release release;
+    return voronoi_map(img, opt);
+  }();
+  return owning_array(std::move(v.site), img.domain().extents());
+}
+
+py::array reverse_distance_transform_py(const py::object& obj, const std::string& metric,
+                                        const py::object& torus, unsigned threads) {
+  py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> a =
+      py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if (!a) throw py::type_error("reverse_distance_transform: expected an integer array");
+  if (a.ndim() == 0 || a.size() == 0) {
+    throw InvalidArgument("reverse_distance_transform: an empty or 0-dimensional array");
+  }
+  std::vector<std::int64_t> shape(a.shape(), a.shape() + a.ndim());
+  Image<std::int64_t> values{Domain(shape),
+                             std::vector<std::int64_t>(a.data(), a.data() + a.size())};
+  TransformOptions opt = transform_options(metric, torus, threads, shape.size());
+  Image<std::uint8_t> r = [&] {
+    py::gil_scoped_release release;
+    return reverse_distance_transform(values, opt);
+  }();
+  return owning_array(std::move(r.values()), shape);
+}
+
+py::tuple reduced_medial_axis_py(const py::object& obj, const std::string& metric,
+                                 const py::object& torus, unsigned threads) {
+  Image<std::uint8_t> img = image_of(obj, "reduced_medial_axis");
+  TransformOptions opt =
+      transform_options(metric, torus, threads, static_cast<std::size_t>(img.dim()));
+  std::vector<MedialBall> balls = [&] {
+    py::gil_scoped_release release;
+    return reduced_medial_axis(img, opt);
+  }();
+  const auto n = static_cast<std::int64_t>(balls.size());
+  const std::int64_t d = img.dim();
+  std::vector<std::int64_t> centres(static_cast<std::size_t>(n * d)), values(balls.size());
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    for (std::int64_t k = 0; k < d; ++k) {
+      centres[i * static_cast<std::size_t>(d) + static_cast<std::size_t>(k)] =
+          balls[i].centre[static_cast<std::size_t>(k)];
+    }
+    values[i] = balls[i].value;
+  }
+  return py::make_tuple(owning_array(std::move(centres), {n, d}),
+                        owning_array(std::move(values), {n}));
 }
 
 // --- topology -------------------------------------------------------------------------------
@@ -404,6 +482,22 @@ void bind_arrays(py::module_& m) {
         "the narrowest type the proven bound on every intermediate allows, else an object "
         "array of exact Python ints). The GIL is "
         "released during the work.");
+  m.def("voronoi_map", &voronoi_map_py, py::arg("image"), py::kw_only(), py::arg("metric") = "l2",
+        py::arg("torus") = py::none(), py::arg("threads") = 0,
+        "Voronoi map of the zero points of a binary image: at every point the C-order linear "
+        "index of a nearest zero point in l_p (ties to the smaller position on each line; the "
+        "separable engine of distance_transform, O(N d)). Returns an int64 array.");
+  m.def("reverse_distance_transform", &reverse_distance_transform_py, py::arg("values"),
+        py::kw_only(), py::arg("metric") = "l2", py::arg("torus") = py::none(),
+        py::arg("threads") = 0,
+        "Reverse distance transform: the union of the open balls {x : d_p(x, c)^p < v(c)} over "
+        "the points c of value v(c) > 0 (the inverse of distance_transform on its medial "
+        "balls; Coeurjolly and Montanvert 2007), separable, O(N d). Returns uint8 (1 inside).");
+  m.def("reduced_medial_axis", &reduced_medial_axis_py, py::arg("image"), py::kw_only(),
+        py::arg("metric") = "l2", py::arg("torus") = py::none(), py::arg("threads") = 0,
+        "Reduced discrete medial axis of the object: the maximal balls whose union is the "
+        "object (power diagram of the distance transform, Coeurjolly and Montanvert 2007), "
+        "O(N d). Returns (centres (n, d) int64, values int64: the squared radii for l2).");
   m.def("connected_components", &connected_components_py, py::arg("image"), py::arg("k") = 0,
         py::kw_only(), py::arg("phase") = "object", py::arg("order") = "size",
         py::arg("threads") = 0,

@@ -19,6 +19,7 @@
 #include <zdg/arith/stern_brocot.hpp>
 #include <zdg/convergence/config.hpp>
 #include <zdg/convergence/experiment.hpp>
+#include <zdg/kernel/lattice_hull_2d.hpp>
 #include <zdg/kernel/maximal_segments.hpp>
 
 #include <pybind11/stl.h>
@@ -225,6 +226,21 @@ py::dict dsl_subsegment_py(py::handle a, py::handle b, py::handle mu, py::handle
   return d;
 }
 
+py::dict hull_py(py::handle points) {
+  auto pts = points_of(points, "hull");
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return lattice_hull_2d_exact<BigInt>(std::span<const Point2<BigInt>>(pts));
+  }();
+  py::list vertices;
+  for (const auto& p : r.value)
+    vertices.append(py::make_tuple(bigint_to_py(p.x), bigint_to_py(p.y)));
+  py::dict d;
+  d["vertices"] = vertices;
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
 // --- experiments --------------------------------------------------------------------------
 
 std::optional<Setting> setting(const py::object& v, const std::string& name) {
@@ -245,7 +261,7 @@ py::dict converge(const std::vector<std::string>& shapes,
   } else {
     std::string text;
     for (py::handle x : py::iter(h))
-      text += (text.empty() ? "" : ",") + std::string(py::repr(py::float_(x)));
+      text += (text.empty() ? "" : ",") + std::string(py::repr(py::float_(x.cast<double>())));
     s.h = Setting{text, "converge(h=...)"};
   }
   s.k = setting(k, "k");
@@ -363,6 +379,10 @@ PYBIND11_MODULE(_zdg, m) {
         "digital straight line mu <= a x - b y < mu + b (0 <= a < b): reversed smart DSS "
         "(Said and Lachaud 2011), O(log(x1 - x0)), exact by escalation. Returns {'a', 'b', "
         "'mu', 'integer_type'}.");
+  m.def("hull", &hull_py, py::arg("points"),
+        "Convex hull of 2D integer points (Python ints of any size): its vertices, input points "
+        "without collinear ones, counter-clockwise (Andrew's monotone chain, O(n log n), exact "
+        "orientation tests by escalation). Returns {'vertices', 'integer_type'}.");
   m.def("converge", &converge, py::arg("shapes"), py::arg("estimators"), py::kw_only(),
         py::arg("h"), py::arg("k") = py::none(), py::arg("alpha") = py::none(),
         py::arg("translations") = 0, py::arg("seed") = 0, py::arg("fit_levels") = 0,

@@ -5,12 +5,14 @@ and say which type served), numpy arrays go in and out without copies where the 
 and long computations release the GIL. Errors: ValueError (bad argument), OSError (files),
 OverflowError (never from an exact entry point).
 """
-from ._zdg import (betti_numbers, cf, christoffel, connected_components, converge,
+from ._zdg import (betti_numbers, cf, christoffel, connected_components, converge, hull,
                    distance_transform, dsl_subsegment, floor_sum, ii_curvature, read_volume,
-                   recognize_dss, surfels, tangential_cover, thinning, write_volume)
+                   recognize_dss, reduced_medial_axis, reverse_distance_transform, surfels,
+                   tangential_cover, thinning, voronoi_map, write_volume)
 
-__all__ = ["betti_numbers", "cf", "christoffel", "connected_components", "converge",
+__all__ = ["betti_numbers", "cf", "christoffel", "connected_components", "converge", "hull",
            "distance_transform", "dsl_subsegment", "floor_sum", "ii_curvature", "plot",
+           "reduced_medial_axis", "reverse_distance_transform", "voronoi_map",
            "read_volume", "recognize_dss", "surfels", "tangential_cover", "thinning",
            "write_volume"]
 

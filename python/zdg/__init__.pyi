@@ -48,6 +48,10 @@ class DslSubsegment(TypedDict):
     mu: int
     integer_type: IntegerType
 
+class Hull(TypedDict):
+    vertices: list[tuple[int, int]]
+    integer_type: IntegerType
+
 class Betti(TypedDict):
     betti: tuple[int, ...]
     euler: int
@@ -67,6 +71,16 @@ def recognize_dss(points: Sequence[Point], connectivity: int = 0) -> DssRecognit
 def tangential_cover(points: Sequence[Point], closed: bool = True,
                      connectivity: int = 0) -> list[MaximalSegment]: ...
 def dsl_subsegment(a: int, b: int, mu: int, x0: int, x1: int) -> DslSubsegment: ...
+def hull(points: Sequence[Point]) -> Hull: ...
+def voronoi_map(image: npt.ArrayLike, *, metric: str = "l2",
+                torus: Union[None, bool, Sequence[bool]] = None,
+                threads: int = 0) -> npt.NDArray[np.int64]: ...
+def reverse_distance_transform(values: npt.ArrayLike, *, metric: str = "l2",
+                               torus: Union[None, bool, Sequence[bool]] = None,
+                               threads: int = 0) -> npt.NDArray[np.uint8]: ...
+def reduced_medial_axis(image: npt.ArrayLike, *, metric: str = "l2",
+                        torus: Union[None, bool, Sequence[bool]] = None, threads: int = 0
+                        ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
 def distance_transform(image: npt.ArrayLike, *, metric: str = "l2",
                        torus: Union[None, bool, Sequence[bool]] = None,
                        threads: int = 0) -> np.ndarray: ...

@@ -142,3 +142,23 @@ def test_bad_input_raises_the_mapped_exceptions():
         zdg.cf(1.5, 2)
     with pytest.raises(TypeError):
         zdg.cf(True, 2)
+
+
+@given(st.lists(st.tuples(big, big), min_size=1, max_size=30))
+def test_hull_vertices_are_a_convex_polygon_containing_the_points(points):
+    """Vertices are input points, strictly convex and counter-clockwise, and every input point
+    lies on the left of (or on) every edge: checked with Python's exact integers."""
+    r = zdg.hull(points)
+    v = r["vertices"]
+    assert all(p in points for p in v)
+
+    def orient(a, b, c):
+        return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+
+    if len(v) >= 3:
+        for i in range(len(v)):
+            a, b, c = v[i], v[(i + 1) % len(v)], v[(i + 2) % len(v)]
+            assert orient(a, b, c) > 0
+            assert all(orient(a, b, p) >= 0 for p in points)
+    else:
+        assert all(orient(v[0], v[-1], p) == 0 for p in points)

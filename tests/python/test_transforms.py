@@ -142,3 +142,38 @@ def test_bad_input():
         zdg.distance_transform(np.zeros((3, 3)), torus=(True,))
     with pytest.raises(ValueError, match="0-dimensional"):
         zdg.distance_transform(np.array(1))
+
+
+@given(binary_images, st.sampled_from(["l1", "l2", "linf", "l3"]))
+def test_voronoi_sites_are_nearest_zero_points(image, metric):
+    """The site of every point is a zero point at the distance the transform gives."""
+    if image.all():
+        return
+    p = {"l1": 1, "l2": 2, "l3": 3, "linf": 0}[metric]
+    sites = zdg.voronoi_map(image, metric=metric)
+    dt = zdg.distance_transform(image, metric=metric)
+    assert sites.shape == image.shape and sites.dtype == np.int64
+    flat = image.ravel()
+    for i, s in enumerate(sites.ravel()):
+        assert not flat[s]
+        x = np.unravel_index(i, image.shape)
+        y = np.unravel_index(int(s), image.shape)
+        d = [abs(int(a) - int(b)) for a, b in zip(x, y)]
+        assert (max(d) if p == 0 else sum(t**p for t in d)) == dt.ravel()[i]
+
+
+@given(binary_images, st.sampled_from(["l1", "l2", "linf"]))
+def test_medial_axis_balls_rebuild_the_shape(image, metric):
+    """Theorem (Coeurjolly-Montanvert 2007): the reverse transform of the reduced medial axis
+    is the shape, and so is the reverse transform of the whole distance transform; the
+    centres are object points with their DT value."""
+    if image.all():
+        return
+    dt = zdg.distance_transform(image, metric=metric)
+    assert np.array_equal(zdg.reverse_distance_transform(dt, metric=metric).astype(bool), image)
+    centres, values = zdg.reduced_medial_axis(image, metric=metric)
+    balls = np.zeros(image.shape, dtype=np.int64)
+    for c, v in zip(centres, values):
+        assert image[tuple(c)] and dt[tuple(c)] == v
+        balls[tuple(c)] = v
+    assert np.array_equal(zdg.reverse_distance_transform(balls, metric=metric).astype(bool), image)
