@@ -11,7 +11,7 @@ import zdg
 
 ndimage = pytest.importorskip("scipy.ndimage")
 hyp = pytest.importorskip("hypothesis")
-from hypothesis import given, strategies as st  # noqa: E402
+from hypothesis import given, settings, strategies as st  # noqa: E402
 from hypothesis.extra.numpy import arrays  # noqa: E402
 
 
@@ -60,6 +60,7 @@ def test_l1_and_linf_equal_scipy_chamfer(image):
                           ndimage.distance_transform_cdt(image, metric="chessboard"))
 
 
+@settings(max_examples=30)  # brute force is quadratic in the image size
 @given(arrays(np.uint8, st.tuples(st.integers(1, 5), st.integers(1, 5))),
        st.sampled_from([1, 2, 3, 7, 0]), st.tuples(st.booleans(), st.booleans()))
 def test_lp_on_the_torus_equals_brute_force(image, p, torus):
@@ -68,6 +69,9 @@ def test_lp_on_the_torus_equals_brute_force(image, p, torus):
     metric = "linf" if p == 0 else f"l{p}"
     ours = zdg.distance_transform(image, metric=metric, torus=torus)
     assert [int(v) for v in ours.ravel()] == list(brute_force(image, p, torus).ravel())
+    # F order: the axes are reversed inside, the torus flags with them.
+    f = zdg.distance_transform(np.asfortranarray(image), metric=metric, torus=torus)
+    assert np.array_equal(f, ours)
 
 
 @given(arrays(np.int16, st.tuples(st.integers(1, 6), st.integers(1, 6), st.integers(1, 6)),
