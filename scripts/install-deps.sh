@@ -9,7 +9,8 @@ packages=(
   librapidcheck-dev libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev pybind11-dev
   zlib1g-dev libnifti2-dev libpng-dev
-  python3 python3-numpy python3-scipy python3-matplotlib python3-nibabel
+  python3 python3-dev python3-numpy python3-scipy python3-matplotlib python3-nibabel
+  python3-pytest python3-hypothesis
 )
 
 missing=()

@@ -1,0 +1,397 @@
+// The Python module zdg._zdg, part 1: the exception mapping, the exact arithmetic on Python
+// ints of any size (continued fractions, Christoffel words, floor sums, DSS recognition, DSL
+// subsegments) and the convergence experiments. Part 2 (arrays.cpp): numpy arrays.
+//
+// Every exact entry point is "exact by escalation" (arith/escalate.hpp): it computes on int64,
+// then int128, then BigInt, and says which type served ("integer_type"), so no OverflowError
+// escapes it. zdg::InvalidArgument becomes ValueError, zdg::IoError OSError, and a remaining
+// zdg::OverflowError (a fixed-width entry point) OverflowError, with the library's one-line
+// message (the one the command line prints).
+#include "python/common.hpp"
+
+#include <zdg/arith/christoffel.hpp>
+#include <zdg/arith/continued_fraction.hpp>
+#include <zdg/arith/dsl_subsegment.hpp>
+#include <zdg/arith/dss_recognizer.hpp>
+#include <zdg/arith/error.hpp>
+#include <zdg/arith/escalate.hpp>
+#include <zdg/arith/floor_sum.hpp>
+#include <zdg/arith/stern_brocot.hpp>
+#include <zdg/convergence/config.hpp>
+#include <zdg/convergence/experiment.hpp>
+#include <zdg/kernel/lattice_hull_2d.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
+
+#include <pybind11/stl.h>
+
+#include <string>
+#include <vector>
+
+namespace zdg::python {
+
+namespace {
+
+std::string served(IntKind k) {
+  return std::string(to_string(k));
+}
+
+py::dict cf(py::handle p_obj, py::handle q_obj) {
+  BigInt p = py_to_bigint(p_obj, "cf: p"), q = py_to_bigint(q_obj, "cf: q");
+  if (q == 0) throw InvalidArgument("cf: zero denominator");
+  struct Out {
+    std::vector<BigInt> terms;
+    std::vector<std::pair<BigInt, BigInt>> conv;
+  };
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return escalate([&]<class I>(std::type_identity<I>) {
+      auto terms = continued_fraction<I>(int_cast<I>(p), int_cast<I>(q));
+      auto conv = convergents<I>(std::span<const I>(terms));
+      Out o;
+      for (const auto& t : terms) o.terms.push_back(to_bigint(t));
+      for (const auto& [a, b] : conv) o.conv.emplace_back(to_bigint(a), to_bigint(b));
+      return o;
+    });
+  }();
+  py::list terms, conv;
+  for (const auto& t : r.value.terms) terms.append(bigint_to_py(t));
+  for (const auto& [a, b] : r.value.conv)
+    conv.append(py::make_tuple(bigint_to_py(a), bigint_to_py(b)));
+  py::dict d;
+  d["terms"] = terms;
+  d["convergents"] = conv;
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+py::dict christoffel(py::handle p_obj, py::handle q_obj, bool upper, bool word) {
+  BigInt p = py_to_bigint(p_obj, "christoffel: p"), q = py_to_bigint(q_obj, "christoffel: q");
+  if (p < 0 || q <= 0) {
+    throw InvalidArgument("christoffel: slope " + p.str() + "/" + q.str() +
+                          " must satisfy p >= 0 and q > 0");
+  }
+  BigInt g = gcd(p, q);
+  p /= g;
+  q /= g;
+  struct Out {
+    std::string word, u, v;
+    bool has_parents = false;
+    BigInt lp, lq, rp, rq;
+  };
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return escalate([&]<class I>(std::type_identity<I>) {
+      I pi = int_cast<I>(p), qi = int_cast<I>(q);
+      Out o;
+      if (word) o.word = upper ? upper_christoffel_word(pi, qi) : lower_christoffel_word(pi, qi);
+      if (pi > 0) {
+        auto par = stern_brocot_parents(pi, qi);
+        o.has_parents = true;
+        o.lp = to_bigint(par.left.p);
+        o.lq = to_bigint(par.left.q);
+        o.rp = to_bigint(par.right.p);
+        o.rq = to_bigint(par.right.q);
+        if (word) {
+          auto sf = standard_factorization(pi, qi);
+          o.u = sf.u;
+          o.v = sf.v;
+          if (upper) { // the upper word is the reverse: its factorization is rev(v) rev(u)
+            o.u.assign(sf.v.rbegin(), sf.v.rend());
+            o.v.assign(sf.u.rbegin(), sf.u.rend());
+          }
+        }
+      }
+      return o;
+    });
+  }();
+  const Out& o = r.value;
+  py::dict d;
+  d["p"] = bigint_to_py(p);
+  d["q"] = bigint_to_py(q);
+  d["word"] = word ? py::object(py::str(o.word)) : py::object(py::none());
+  d["standard_factorization"] =
+      (word && o.has_parents) ? py::object(py::make_tuple(o.u, o.v)) : py::object(py::none());
+  d["parents"] =
+      o.has_parents
+          ? py::object(py::make_tuple(py::make_tuple(bigint_to_py(o.lp), bigint_to_py(o.lq)),
+                                      py::make_tuple(bigint_to_py(o.rp), bigint_to_py(o.rq))))
+          : py::object(py::none());
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+py::dict floor_sum_py(py::handle n_obj, py::handle m_obj, py::handle a_obj, py::handle b_obj) {
+  BigInt n = py_to_bigint(n_obj, "floor_sum: n"), m = py_to_bigint(m_obj, "floor_sum: m"),
+         a = py_to_bigint(a_obj, "floor_sum: a"), b = py_to_bigint(b_obj, "floor_sum: b");
+  if (n < 0) throw InvalidArgument("floor-sum: N = " + n.str() + " must be >= 0");
+  if (m == 0) throw InvalidArgument("floor-sum: M must not be 0");
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return floor_sum_exact(n, m, a, b);
+  }();
+  py::dict d;
+  d["value"] = bigint_to_py(r.value);
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+std::vector<Point2<BigInt>> points_of(py::handle seq, const char* what) {
+  std::vector<Point2<BigInt>> pts;
+  for (py::handle item : py::iter(seq)) {
+    py::sequence s = py::reinterpret_borrow<py::sequence>(item);
+    if (py::len(s) != 2)
+      throw InvalidArgument(std::string(what) + ": a point is not a pair (x, y)");
+    pts.push_back({py_to_bigint(s[0], what), py_to_bigint(s[1], what)});
+  }
+  return pts;
+}
+
+Connectivity connectivity_of(int c, const char* what) {
+  if (c == 4) return Connectivity::four;
+  if (c == 8) return Connectivity::eight;
+  throw InvalidArgument(std::string(what) + ": connectivity " + std::to_string(c) +
+                        " is not 4 or 8");
+}
+
+py::dict recognize_dss_py(py::handle points, int connectivity) {
+  auto pts = points_of(points, "recognize_dss");
+  if (pts.empty()) throw InvalidArgument("recognize_dss: no point");
+  Connectivity c = connectivity == 0 ? path_connectivity(std::span<const Point2<BigInt>>(pts))
+                                     : connectivity_of(connectivity, "recognize_dss");
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return recognize_dss_exact(std::span<const Point2<BigInt>>(pts), c);
+  }();
+  const auto& ch = r.value.characteristics;
+  py::dict d;
+  d["is_dss"] = r.value.is_dss;
+  d["longest_prefix"] = r.value.longest_prefix;
+  d["connectivity"] = r.value.connectivity == Connectivity::four ? 4 : 8;
+  d["a"] = bigint_to_py(ch.a);
+  d["b"] = bigint_to_py(ch.b);
+  d["mu"] = bigint_to_py(ch.mu);
+  d["omega"] = bigint_to_py(ch.omega);
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+py::list tangential_cover(py::handle points, bool closed, int connectivity) {
+  auto big = points_of(points, "tangential_cover");
+  std::vector<Point2<std::int64_t>> pts;
+  pts.reserve(big.size());
+  for (const auto& p : big) {
+    try {
+      pts.push_back({int_cast<Int64>(p.x).value(), int_cast<Int64>(p.y).value()});
+    } catch (const OverflowError&) {
+      throw InvalidArgument("tangential_cover: point (" + p.x.str() + ", " + p.y.str() +
+                            ") has a coordinate beyond 64 bits (the cover works on int64 points)");
+    }
+  }
+  if (closed && pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+  std::optional<Connectivity> c;
+  if (connectivity != 0) c = connectivity_of(connectivity, "tangential_cover");
+  auto segs = [&] {
+    py::gil_scoped_release release;
+    return maximal_segments_exact(pts, closed, c).value;
+  }();
+  py::list out;
+  for (const auto& s : segs) {
+    py::dict d;
+    d["begin"] = s.begin;
+    d["end"] = s.end;
+    d["length"] = s.length;
+    d["a"] = s.a;
+    d["b"] = s.b;
+    d["mu"] = bigint_to_py(int_cast<BigInt>(Int128(s.mu)));
+    d["omega"] = s.omega;
+    out.append(d);
+  }
+  return out;
+}
+
+py::dict dsl_subsegment_py(py::handle a, py::handle b, py::handle mu, py::handle x0,
+                           py::handle x1) {
+  BigInt A = py_to_bigint(a, "dsl_subsegment: a"), B = py_to_bigint(b, "dsl_subsegment: b"),
+         M = py_to_bigint(mu, "dsl_subsegment: mu"), X0 = py_to_bigint(x0, "dsl_subsegment: x0"),
+         X1 = py_to_bigint(x1, "dsl_subsegment: x1");
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return dsl_subsegment_exact(A, B, M, X0, X1);
+  }();
+  py::dict d;
+  d["a"] = bigint_to_py(r.value.a);
+  d["b"] = bigint_to_py(r.value.b);
+  d["mu"] = bigint_to_py(r.value.mu);
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+py::dict hull_py(py::handle points) {
+  auto pts = points_of(points, "hull");
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return lattice_hull_2d_exact<BigInt>(std::span<const Point2<BigInt>>(pts));
+  }();
+  py::list vertices;
+  for (const auto& p : r.value)
+    vertices.append(py::make_tuple(bigint_to_py(p.x), bigint_to_py(p.y)));
+  py::dict d;
+  d["vertices"] = vertices;
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+// --- experiments --------------------------------------------------------------------------
+
+std::optional<Setting> setting(const py::object& v, const std::string& name) {
+  if (v.is_none()) return std::nullopt;
+  return Setting{std::string(py::str(v)), "converge(" + name + "=...)"};
+}
+
+py::dict converge(const std::vector<std::string>& shapes,
+                  const std::vector<std::string>& estimators, const py::object& h,
+                  const py::object& k, const py::object& alpha, int translations,
+                  std::uint64_t seed, int fit_levels, double tolerance, int threads,
+                  const py::object& box) {
+  ExperimentSettings s;
+  for (const auto& x : shapes) s.shapes.push_back({x, "converge(shapes=...)"});
+  for (const auto& x : estimators) s.estimators.push_back({x, "converge(estimators=...)"});
+  if (py::isinstance<py::str>(h)) {
+    s.h = setting(h, "h");
+  } else {
+    std::string text;
+    for (py::handle x : py::iter(h))
+      text += (text.empty() ? "" : ",") + std::string(py::repr(py::float_(x.cast<double>())));
+    s.h = Setting{text, "converge(h=...)"};
+  }
+  s.k = setting(k, "k");
+  s.alpha = setting(alpha, "alpha");
+  s.translations = Setting{std::to_string(translations), "converge(translations=...)"};
+  s.seed = Setting{std::to_string(seed), "converge(seed=...)"};
+  s.fit_levels = Setting{std::to_string(fit_levels), "converge(fit_levels=...)"};
+  s.tolerance = Setting{std::string(py::repr(py::float_(tolerance))), "converge(tolerance=...)"};
+  s.threads = Setting{std::to_string(threads), "converge(threads=...)"};
+  if (!box.is_none()) {
+    auto t = box.cast<std::pair<double, double>>();
+    s.box = Setting{std::string(py::repr(py::float_(t.first))) + ":" +
+                        std::string(py::repr(py::float_(t.second))),
+                    "converge(box=...)"};
+  }
+  ExperimentConfig config = validate_experiment_settings(s);
+  ExperimentResult r = [&] {
+    py::gil_scoped_release release;
+    return run_experiment(config);
+  }();
+  py::list runs, fits;
+  for (const auto& x : r.runs) {
+    py::dict d;
+    d["shape"] = x.shape;
+    d["estimator"] = x.estimator;
+    d["h"] = x.h;
+    d["translation"] = x.translation;
+    d["offset"] = x.offset;
+    d["k"] = x.k;
+    d["alpha"] = x.alpha;
+    d["linf"] = x.errors.linf;
+    d["l2"] = x.errors.l2;
+    d["mean"] = x.errors.mean;
+    d["n"] = x.errors.n;
+    d["seconds"] = x.seconds;
+    runs.append(d);
+  }
+  for (const auto& f : r.fits) {
+    py::dict d;
+    d["shape"] = f.shape;
+    d["estimator"] = f.estimator;
+    d["norm"] = f.norm;
+    d["slope"] = f.fit.slope;
+    d["intercept"] = f.fit.intercept;
+    d["stderr_slope"] = f.fit.stderr_slope;
+    d["levels"] = f.fit.n;
+    d["hs"] = f.hs;
+    d["expected"] = f.expected ? py::object(py::float_(*f.expected)) : py::object(py::none());
+    d["theory"] = f.theory;
+    d["source"] = f.source;
+    d["pass"] = f.pass ? py::object(py::bool_(*f.pass)) : py::object(py::none());
+    fits.append(d);
+  }
+  py::dict d;
+  d["runs"] = runs;
+  d["fits"] = fits;
+  d["all_pass"] = r.all_pass;
+  return d;
+}
+
+} // namespace
+
+} // namespace zdg::python
+
+PYBIND11_MODULE(_zdg, m) {
+  namespace py = pybind11;
+  using namespace zdg::python;
+  m.doc() = "zdg: exact digital geometry (the C++ library zdg, bound with pybind11)";
+
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const zdg::InvalidArgument& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const zdg::IoError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const zdg::OverflowError& e) {
+      PyErr_SetString(PyExc_OverflowError, e.what());
+    } catch (const zdg::Error& e) {
+      PyErr_SetString(PyExc_RuntimeError, e.what());
+    }
+  });
+
+  m.def("cf", &cf, py::arg("p"), py::arg("q"),
+        "Continued fraction [a0; a1, ..., an] of p/q (q != 0) and its convergents, exact on "
+        "Python ints of any size (Euclid's algorithm, O(log q) steps; escalates int64 -> "
+        "int128 -> BigInt). Returns {'terms', 'convergents', 'integer_type'}.");
+  m.def("christoffel", &christoffel, py::arg("p"), py::arg("q"), py::kw_only(),
+        py::arg("upper") = false, py::arg("word") = true,
+        "Christoffel word of slope p/q (p >= 0, q > 0; reduced first): q letters '0' and p "
+        "letters '1', the prefix of length k holding floor(k p / (p + q)) ones (lower word; "
+        "upper: its reverse), with the Stern-Brocot parents and the standard factorization "
+        "(Borel-Laubie 1993). O(p + q) for the word (at most 2^30 letters; word=False for "
+        "huge slopes), O(log q) for the parents. Returns {'p', 'q', 'word', "
+        "'standard_factorization', 'parents', 'integer_type'}.");
+  m.def("floor_sum", &floor_sum_py, py::arg("n"), py::arg("m"), py::arg("a"), py::arg("b"),
+        "sum_{i=0}^{n-1} floor((a i + b) / m) for n >= 0, m != 0, exact, O(log m) (the "
+        "Euclidean-like reduction). Returns {'value', 'integer_type'}.");
+  m.def("recognize_dss", &recognize_dss_py, py::arg("points"), py::arg("connectivity") = 0,
+        "Whether the 4- or 8-connected path (a sequence of (x, y) integer pairs; connectivity 0: "
+        "4 when every step is an axis step, else 8) is a digital straight segment, and the "
+        "minimal characteristics (a, b, mu, omega) of its longest DSS prefix: mu <= a x - b y "
+        "< mu + omega. Incremental arithmetic recognition (Debled-Rennesson and Reveilles "
+        "1995), O(1) amortized per point, exact by escalation. Returns {'is_dss', "
+        "'longest_prefix', 'connectivity', 'a', 'b', 'mu', 'omega', 'integer_type'}.");
+  m.def("tangential_cover", &tangential_cover, py::arg("points"), py::arg("closed") = true,
+        py::arg("connectivity") = 0,
+        "The maximal digital straight segments of a digital curve (int64 points; a closed "
+        "curve may repeat its first point at the end), O(n) (Lachaud, Vialard, de Vieilleville "
+        "2007). Returns a list of {'begin', 'end', 'length', 'a', 'b', 'mu', 'omega'} "
+        "(inclusive indices; end < begin when a closed curve wraps).");
+  m.def("dsl_subsegment", &dsl_subsegment_py, py::arg("a"), py::arg("b"), py::arg("mu"),
+        py::arg("x0"), py::arg("x1"),
+        "Minimal characteristics (a', b', mu') of the subsegment x0 <= x <= x1 of the naive "
+        "digital straight line mu <= a x - b y < mu + b (0 <= a < b): reversed smart DSS "
+        "(Said and Lachaud 2011), O(log(x1 - x0)), exact by escalation. Returns {'a', 'b', "
+        "'mu', 'integer_type'}.");
+  m.def("hull", &hull_py, py::arg("points"),
+        "Convex hull of 2D integer points (Python ints of any size): its vertices, input points "
+        "without collinear ones, counter-clockwise (Andrew's monotone chain, O(n log n), exact "
+        "orientation tests by escalation). Returns {'vertices', 'integer_type'}.");
+  m.def("converge", &converge, py::arg("shapes"), py::arg("estimators"), py::kw_only(),
+        py::arg("h"), py::arg("k") = py::none(), py::arg("alpha") = py::none(),
+        py::arg("translations") = 0, py::arg("seed") = 0, py::arg("fit_levels") = 0,
+        py::arg("tolerance") = 0.1, py::arg("threads") = 1, py::arg("box") = py::none(),
+        "A multigrid convergence experiment (zdg converge): every shape x estimator entry x "
+        "grid step h (a list of numbers, or the text 'HMAX:HMIN:N') x translation, the error "
+        "statistics per run, then log-log fits of the error against h and the verdict against "
+        "the proven rate (papers/THEORY.md). Returns {'runs': [records], 'fits': [records], "
+        "'all_pass': bool}.");
+
+  bind_arrays(m);
+}

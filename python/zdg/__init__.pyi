@@ -1,0 +1,108 @@
+# Type stubs of the zdg package (the extension zdg._zdg and zdg.plot).
+from typing import Any, Literal, Optional, Sequence, TypedDict, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+IntegerType = Literal["int64", "int128", "bigint"]
+
+class ContinuedFraction(TypedDict):
+    terms: list[int]
+    convergents: list[tuple[int, int]]
+    integer_type: IntegerType
+
+class ChristoffelWord(TypedDict):
+    p: int
+    q: int
+    word: Optional[str]
+    standard_factorization: Optional[tuple[str, str]]
+    parents: Optional[tuple[tuple[int, int], tuple[int, int]]]
+    integer_type: IntegerType
+
+class FloorSum(TypedDict):
+    value: int
+    integer_type: IntegerType
+
+class DssRecognition(TypedDict):
+    is_dss: bool
+    longest_prefix: int
+    connectivity: int
+    a: int
+    b: int
+    mu: int
+    omega: int
+    integer_type: IntegerType
+
+class MaximalSegment(TypedDict):
+    begin: int
+    end: int
+    length: int
+    a: int
+    b: int
+    mu: int
+    omega: int
+
+class DslSubsegment(TypedDict):
+    a: int
+    b: int
+    mu: int
+    integer_type: IntegerType
+
+class Hull(TypedDict):
+    vertices: list[tuple[int, int]]
+    integer_type: IntegerType
+
+class Betti(TypedDict):
+    betti: tuple[int, ...]
+    euler: int
+    adjacency: str
+
+class ConvergeResult(TypedDict):
+    runs: list[dict[str, Any]]
+    fits: list[dict[str, Any]]
+    all_pass: bool
+
+Point = tuple[int, int]
+
+def cf(p: int, q: int) -> ContinuedFraction: ...
+def christoffel(p: int, q: int, *, upper: bool = False, word: bool = True) -> ChristoffelWord: ...
+def floor_sum(n: int, m: int, a: int, b: int) -> FloorSum: ...
+def recognize_dss(points: Sequence[Point], connectivity: int = 0) -> DssRecognition: ...
+def tangential_cover(points: Sequence[Point], closed: bool = True,
+                     connectivity: int = 0) -> list[MaximalSegment]: ...
+def dsl_subsegment(a: int, b: int, mu: int, x0: int, x1: int) -> DslSubsegment: ...
+def hull(points: Sequence[Point]) -> Hull: ...
+def voronoi_map(image: npt.ArrayLike, *, metric: str = "l2",
+                torus: Union[None, bool, Sequence[bool]] = None,
+                threads: int = 0) -> npt.NDArray[np.int64]: ...
+def reverse_distance_transform(values: npt.ArrayLike, *, metric: str = "l2",
+                               torus: Union[None, bool, Sequence[bool]] = None,
+                               threads: int = 0) -> npt.NDArray[np.uint8]: ...
+def reduced_medial_axis(image: npt.ArrayLike, *, metric: str = "l2",
+                        torus: Union[None, bool, Sequence[bool]] = None, threads: int = 0
+                        ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
+def distance_transform(image: npt.ArrayLike, *, metric: str = "l2",
+                       torus: Union[None, bool, Sequence[bool]] = None,
+                       threads: int = 0) -> np.ndarray: ...
+def connected_components(image: npt.ArrayLike, k: int = 0, *, phase: str = "object",
+                         order: str = "size", threads: int = 0
+                         ) -> tuple[npt.NDArray[np.uint32], npt.NDArray[np.int64],
+                                    npt.NDArray[np.bool_]]: ...
+def betti_numbers(image: npt.ArrayLike, adjacency: Optional[str] = None, *,
+                  threads: int = 0) -> Betti: ...
+def thinning(image: npt.ArrayLike, *, method: str = "critical-kernel", skeleton: str = "ultimate",
+             adjacency: Optional[str] = None, threads: int = 0) -> npt.NDArray[np.uint8]: ...
+def surfels(volume: npt.ArrayLike, *, threads: int = 0) -> dict[str, np.ndarray]: ...
+def ii_curvature(volume: npt.ArrayLike, *, h: float, radius: float, principal: bool = False,
+                 threads: int = 0) -> dict[str, np.ndarray]: ...
+@overload
+def read_volume(path: str, *, metadata: Literal[False] = ...) -> np.ndarray: ...
+@overload
+def read_volume(path: str, *, metadata: Literal[True]) -> tuple[np.ndarray, dict[str, Any]]: ...
+def write_volume(path: str, array: npt.ArrayLike, *, force: bool = False) -> None: ...
+def converge(shapes: Sequence[str], estimators: Sequence[str], *,
+             h: Union[str, Sequence[float]], k: Union[None, float, str] = None,
+             alpha: Union[None, float, str] = None, translations: int = 0, seed: int = 0,
+             fit_levels: int = 0, tolerance: float = 0.1, threads: int = 1,
+             box: Optional[tuple[float, float]] = None) -> ConvergeResult: ...
+def plot(result: ConvergeResult, norm: str = "linf", ax: Any = None) -> Any: ...

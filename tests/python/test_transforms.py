@@ -1,0 +1,183 @@
+"""Distance transforms on numpy arrays: equal to scipy.ndimage's (squared and rounded) and to
+brute force, zero-copy in and out, the GIL released."""
+import threading
+import time
+import tracemalloc
+
+import numpy as np
+import pytest
+
+import zdg
+
+ndimage = pytest.importorskip("scipy.ndimage")
+hyp = pytest.importorskip("hypothesis")
+from hypothesis import given, settings, strategies as st  # noqa: E402
+from hypothesis.extra.numpy import arrays  # noqa: E402
+
+
+def brute_force(image, p, torus=()):
+    """min over zero points y of sum_k |x_k - y_k|^p (max for p = 0, l_inf)."""
+    shape = image.shape
+    zeros = np.argwhere(image == 0)
+    out = np.zeros(shape, dtype=object)
+    for x in np.ndindex(*shape):
+        best = None
+        for y in zeros:
+            diffs = []
+            for k, (a, b) in enumerate(zip(x, y)):
+                t = abs(int(a) - int(b))
+                if torus and torus[k]:
+                    t = min(t, shape[k] - t)
+                diffs.append(t)
+            v = max(diffs) if p == 0 else sum(t**p for t in diffs)
+            best = v if best is None else min(best, v)
+        out[x] = best
+    return out
+
+
+binary_images = st.integers(1, 3).flatmap(
+    lambda d: arrays(np.bool_, st.tuples(*[st.integers(1, 7)] * d)))
+
+
+@given(binary_images)
+def test_l2_equals_scipy_edt_squared(image):
+    """Theorem (exactness): DT_l2 = round(edt^2) where scipy's edt is exact up to rounding."""
+    if image.all():
+        return
+    ours = zdg.distance_transform(image)
+    ref = np.rint(ndimage.distance_transform_edt(image) ** 2).astype(np.int64)
+    assert ours.shape == image.shape and np.array_equal(ours, ref)
+
+
+@given(binary_images)
+def test_l1_and_linf_equal_scipy_chamfer(image):
+    """l1 is the 4-/6-... chamfer (taxicab) distance, linf the chessboard one: both exact."""
+    if image.all():
+        return
+    assert np.array_equal(zdg.distance_transform(image, metric="l1"),
+                          ndimage.distance_transform_cdt(image, metric="taxicab"))
+    assert np.array_equal(zdg.distance_transform(image, metric="linf"),
+                          ndimage.distance_transform_cdt(image, metric="chessboard"))
+
+
+@settings(max_examples=30)  # brute force is quadratic in the image size
+@given(arrays(np.uint8, st.tuples(st.integers(1, 5), st.integers(1, 5))),
+       st.sampled_from([1, 2, 3, 7, 0]), st.tuples(st.booleans(), st.booleans()))
+def test_lp_on_the_torus_equals_brute_force(image, p, torus):
+    if image.all():
+        return
+    metric = "linf" if p == 0 else f"l{p}"
+    ours = zdg.distance_transform(image, metric=metric, torus=torus)
+    assert [int(v) for v in ours.ravel()] == list(brute_force(image, p, torus).ravel())
+    # F order: the axes are reversed inside, the torus flags with them.
+    f = zdg.distance_transform(np.asfortranarray(image), metric=metric, torus=torus)
+    assert np.array_equal(f, ours)
+
+
+@given(arrays(np.int16, st.tuples(st.integers(1, 6), st.integers(1, 6), st.integers(1, 6)),
+              elements=st.integers(-3, 3)))
+def test_any_dtype_and_layout_gives_the_same_result(image):
+    """Nonzero = object whatever the dtype; C order, F order and strided views agree."""
+    if image.all():
+        return
+    ref = zdg.distance_transform((image != 0).astype(np.uint8))
+    assert np.array_equal(zdg.distance_transform(image), ref)
+    f = zdg.distance_transform(np.asfortranarray(image != 0))
+    assert f.flags["F_CONTIGUOUS"] and np.array_equal(f, ref)
+    t = zdg.distance_transform((image != 0).transpose(2, 0, 1))
+    assert np.array_equal(t, ref.transpose(2, 0, 1))
+
+
+def test_values_beyond_64_bits_are_exact_python_ints():
+    image = np.ones((1, 40), dtype=np.uint8)
+    image[0, 0] = 0
+    ours = zdg.distance_transform(image, metric="l200")
+    assert ours.dtype == object
+    assert [int(v) for v in ours[0]] == [x**200 for x in range(40)]
+
+
+def test_zero_copy_input_and_output():
+    """A C- or F-contiguous bool/uint8 input is not copied: the only allocation is the
+    result (int32 here), and the result owns its memory."""
+    image = np.ones((64, 64, 64), dtype=np.bool_)
+    image[32, 32, 32] = False
+    for a in (image, np.asfortranarray(image), image.view(np.uint8)):
+        tracemalloc.start()
+        out = zdg.distance_transform(a, threads=1)
+        _, peak = tracemalloc.get_traced_memory()
+        tracemalloc.stop()
+        assert out.dtype == np.int32
+        assert peak < out.nbytes * 1.05 + 65536
+        assert out.flags["OWNDATA"] and out.flags["WRITEABLE"]
+        assert not np.shares_memory(out, a)
+
+
+def test_the_gil_is_released():
+    """While one thread is inside the transform, another runs Python code: a fixed loop of
+    the main thread (a few ms alone) ends before the call does. With the GIL held for the
+    call, the loop could not finish before the call returns (checked on a GIL-holding builtin,
+    sum(range(3e7)): the loop then ends after it)."""
+    image = np.ones((200, 200, 200), dtype=np.bool_)
+    image[0, 0, 0] = False
+    window = {}
+
+    def work():
+        window["start"] = time.perf_counter()
+        zdg.distance_transform(image, threads=1)
+        window["end"] = time.perf_counter()
+
+    t = threading.Thread(target=work)
+    t.start()
+    time.sleep(0.05)  # the worker enters the call
+    x = 0
+    for i in range(100000):
+        x += i
+    loop_done = time.perf_counter()
+    t.join()
+    assert loop_done < window["end"]
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="no background point"):
+        zdg.distance_transform(np.ones((3, 3)))
+    with pytest.raises(ValueError, match="metric"):
+        zdg.distance_transform(np.zeros((3, 3)), metric="l0")
+    with pytest.raises(ValueError, match="torus"):
+        zdg.distance_transform(np.zeros((3, 3)), torus=(True,))
+    with pytest.raises(ValueError, match="0-dimensional"):
+        zdg.distance_transform(np.array(1))
+
+
+@given(binary_images, st.sampled_from(["l1", "l2", "linf", "l3"]))
+def test_voronoi_sites_are_nearest_zero_points(image, metric):
+    """The site of every point is a zero point at the distance the transform gives."""
+    if image.all():
+        return
+    p = {"l1": 1, "l2": 2, "l3": 3, "linf": 0}[metric]
+    sites = zdg.voronoi_map(image, metric=metric)
+    dt = zdg.distance_transform(image, metric=metric)
+    assert sites.shape == image.shape and sites.dtype == np.int64
+    flat = image.ravel()
+    for i, s in enumerate(sites.ravel()):
+        assert not flat[s]
+        x = np.unravel_index(i, image.shape)
+        y = np.unravel_index(int(s), image.shape)
+        d = [abs(int(a) - int(b)) for a, b in zip(x, y)]
+        assert (max(d) if p == 0 else sum(t**p for t in d)) == dt.ravel()[i]
+
+
+@given(binary_images, st.sampled_from(["l1", "l2", "linf"]))
+def test_medial_axis_balls_rebuild_the_shape(image, metric):
+    """Theorem (Coeurjolly-Montanvert 2007): the reverse transform of the reduced medial axis
+    is the shape, and so is the reverse transform of the whole distance transform; the
+    centres are object points with their DT value."""
+    if image.all():
+        return
+    dt = zdg.distance_transform(image, metric=metric)
+    assert np.array_equal(zdg.reverse_distance_transform(dt, metric=metric).astype(bool), image)
+    centres, values = zdg.reduced_medial_axis(image, metric=metric)
+    balls = np.zeros(image.shape, dtype=np.int64)
+    for c, v in zip(centres, values):
+        assert image[tuple(c)] and dt[tuple(c)] == v
+        balls[tuple(c)] = v
+    assert np.array_equal(zdg.reverse_distance_transform(balls, metric=metric).astype(bool), image)
