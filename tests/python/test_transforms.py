@@ -113,27 +113,32 @@ def test_zero_copy_input_and_output():
 
 
 def test_the_gil_is_released():
-    """While one thread is inside the transform, another runs Python code: a fixed loop of
-    the main thread (a few ms alone) ends before the call does. With the GIL held for the
-    call, the loop could not finish before the call returns (checked on a GIL-holding builtin,
-    sum(range(3e7)): the loop then ends after it)."""
-    image = np.ones((200, 200, 200), dtype=np.bool_)
+    """While one thread is inside the transform, another runs Python code: the main thread,
+    once the worker is inside a long call (a 300^3 transform on one thread, a few tenths of a
+    second), sleeps 20 ms and runs a short loop, and is done before the call returns. With
+    the GIL held for the call, the main thread could not wake up before the call returns."""
+    image = np.ones((300, 300, 300), dtype=np.bool_)
     image[0, 0, 0] = False
     window = {}
+    entered = threading.Event()
 
     def work():
+        entered.set()
         window["start"] = time.perf_counter()
         zdg.distance_transform(image, threads=1)
         window["end"] = time.perf_counter()
 
     t = threading.Thread(target=work)
     t.start()
-    time.sleep(0.05)  # the worker enters the call
+    entered.wait()
+    time.sleep(0.02)  # the worker enters the call
     x = 0
-    for i in range(100000):
+    for i in range(10000):
         x += i
     loop_done = time.perf_counter()
     t.join()
+    # Meaningful only when the call outlasted the sleep and the loop.
+    assert window["end"] - window["start"] > 0.1
     assert loop_done < window["end"]
 
 
