@@ -689,7 +689,9 @@ std::vector<BigRational> rationals(std::string_view args, std::string_view spec)
     try {
       out.push_back(parse_rational<BigInt>(item));
     } catch (const InvalidArgument&) {
-      throw InvalidArgument(shown_spec(spec) + ": " + which + " is not a number");
+      throw InvalidArgument(shown_spec(spec) + ": " + which +
+                            " is not a number of the form 7, -3/4 or 0.125 (shape parameters are "
+                            "exact: no exponent, inf or nan)");
     }
     const double d = out.back().to_double();
     if (!std::isfinite(d) || std::abs(d) > kMaxShapeMagnitude ||

@@ -58,14 +58,20 @@ std::string small_npy() {
              std::string("\0\0\0\0\0\1\1\0\0\1\1\0\0\0\0\0", 16));
 }
 
-// A valid 4x4x4 uint8 volume: a 2x2x2 cube in the middle (a surface input).
+// A valid 6x6x6 uint8 volume holding a 4x4x4 cube (a surface and topology input).
 std::string cube_npy() {
-  std::string v(64, '\0');
-  for (int z = 1; z < 3; ++z)
-    for (int y = 1; y < 3; ++y)
-      for (int x = 1; x < 3; ++x) v[std::size_t(16 * z + 4 * y + x)] = '\1';
-  return npy("{'descr': '|u1', 'fortran_order': False, 'shape': (4, 4, 4), }", v);
+  std::string v(6 * 6 * 6, '\0');
+  for (int z = 1; z < 5; ++z) {
+    for (int y = 1; y < 5; ++y) {
+      for (int x = 1; x < 5; ++x) v[static_cast<std::size_t>((z * 6 + y) * 6 + x)] = '\1';
+    }
+  }
+  return npy("{'descr': '|u1', 'fortran_order': False, 'shape': (6, 6, 6), }", v);
 }
+
+// Files whose header promises more than they hold.
+const char* const kCutPgm = "P5\n4 4\n255\nab";
+const char* const kCutVol = "X: 4\nY: 4\nZ: 4\nVersion: 2\n.\nab";
 
 std::vector<BadInput> bad_inputs() {
   const std::string converge = "converge --shape ball:5 --estimator gauss-area --h 1:0.5:3 ";
@@ -287,6 +293,96 @@ std::vector<BadInput> bad_inputs() {
        {{"in.npy", small_npy()}},
        {"out.npy"},
        "exists"},
+      // --- 8, 10. TOML values and shape parameters, as the issue wrote them ------------------
+      {"TOML tolerance = inf",
+       "converge {dir}/run.toml -o {dir}/out --no-plot",
+       {{"run.toml", "shape = \"ball:5\"\nestimator = \"gauss-area\"\nh = \"1:0.5:3\"\n"
+                     "tolerance = inf\n"}},
+       {},
+       "key 'tolerance': 'inf' is not a finite number"},
+      {"infinite flower angle",
+       "converge --shape flower:20,7,6,1e400 --estimator gauss-area --h 1 -o {dir}/out --no-plot",
+       {},
+       {},
+       "'flower:20,7,6,1e400': parameter 4 '1e400' is not a number of the form"},
+      {"ball radius that rounds to 0",
+       "converge --shape ball:1e-401 --estimator gauss-area --h 1 -o {dir}/out --no-plot",
+       {},
+       {},
+       "'ball:1e-401': parameter 1"},
+      // --- every command family that reads files and writes outputs: a bad file, a missing
+      // output folder, an existing output without --force ---------------------------------------
+      {"convert: truncated PGM",
+       "convert {dir}/cut.pgm {dir}/out.npy",
+       {{"cut.pgm", kCutPgm}},
+       {},
+       "cut.pgm:3: truncated pixel data"},
+      {"convert: output in a missing folder",
+       "convert {dir}/in.npy {dir}/missing/out.vol",
+       {{"in.npy", cube_npy()}},
+       {},
+       "folder '"},
+      {"convert: existing output",
+       "convert {dir}/in.npy {dir}/out.vol",
+       {{"in.npy", cube_npy()}},
+       {"out.vol"},
+       "out.vol: exists (use --force"},
+      {"surface: malformed npy header",
+       "surface {dir}/bad.npy -o {dir}/out.ply",
+       {{"bad.npy", npy("{'descr': '|u1', 'fortran_order': False, 'shape': }", "")}},
+       {},
+       "bad.npy: malformed npy header"},
+      {"surface: CSV in a missing folder",
+       "surface {dir}/in.npy --csv {dir}/missing/surfels.csv",
+       {{"in.npy", cube_npy()}},
+       {},
+       "does not exist"},
+      {"surface: existing mesh",
+       "surface {dir}/in.npy -o {dir}/out.ply",
+       {{"in.npy", cube_npy()}},
+       {"out.ply"},
+       "out.ply: exists (use --force"},
+      {"surface: an existing second output (nothing written)",
+       "surface {dir}/in.npy -o {dir}/out.ply --csv {dir}/surfels.csv",
+       {{"in.npy", cube_npy()}},
+       {"surfels.csv"},
+       "surfels.csv: exists (use --force"},
+      {"contour: truncated PGM",
+       "contour {dir}/cut.pgm -o {dir}/out.svg",
+       {{"cut.pgm", kCutPgm}},
+       {},
+       "cut.pgm:3: truncated pixel data"},
+      {"contour: drawing in a missing folder",
+       "contour {dir}/in.npy -o {dir}/missing/out.svg",
+       {{"in.npy", small_npy()}},
+       {},
+       "does not exist"},
+      {"contour: existing drawing",
+       "contour {dir}/in.npy -o {dir}/out.svg",
+       {{"in.npy", small_npy()}},
+       {"out.svg"},
+       "out.svg: exists (use --force"},
+      {"topology: truncated .vol",
+       "topology betti {dir}/cut.vol",
+       {{"cut.vol", kCutVol}},
+       {},
+       "cut.vol: truncated voxel data"},
+      {"topology: thinning into a missing folder",
+       "topology thin {dir}/in.npy -o {dir}/missing/out.npy",
+       {{"in.npy", cube_npy()}},
+       {},
+       "does not exist"},
+      {"topology: existing labels",
+       "topology components {dir}/in.npy -o {dir}/out.npy",
+       {{"in.npy", cube_npy()}},
+       {"out.npy"},
+       "out.npy: exists (use --force"},
+      {"paper: unknown name", "paper nosuch -o {dir}/out", {}, {}, "unknown paper 'nosuch'"},
+      {"paper: existing results",
+       "paper gauss-area --quick -o {dir}/out --no-plot",
+       {},
+       {"out/results.csv"},
+       "results.csv: exists (use --force"},
   };
 }
 
