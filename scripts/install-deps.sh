@@ -13,6 +13,10 @@ packages=(
   python3-pytest python3-hypothesis
 )
 
+# Extra packages for one caller (CI adds the fuzzing toolchain: clang-14 libclang-rt-14-dev).
+# shellcheck disable=SC2206
+packages+=(${ZDG_EXTRA_PACKAGES:-})
+
 missing=()
 for p in "${packages[@]}"; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
