@@ -217,10 +217,16 @@ NpyHeader parse_header(const std::string& source, std::string_view text, std::si
   if (!has_descr) fail(source, "npy header has no 'descr' entry");
   if (!has_order) fail(source, "npy header has no 'fortran_order' entry");
   if (!has_shape) fail(source, "npy header has no 'shape' entry");
-  std::uint64_t count = 1;
+  std::uint64_t count = 1, extents = 1;
   for (auto e : out.shape) {
     if (__builtin_mul_overflow(count, static_cast<std::uint64_t>(e), &count)) {
       fail(source, "shape too large (more than 2^64 elements)");
+    }
+    // The extents themselves, zeros skipped: an empty array (4, 0, 88884, ...) still has a
+    // domain whose other extents multiply, and that product must fit int64 too.
+    if (__builtin_mul_overflow(extents, static_cast<std::uint64_t>(e == 0 ? 1 : e), &extents) ||
+        extents > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+      fail(source, "shape too large (its nonzero extents multiply past 2^63)");
     }
   }
   if (__builtin_mul_overflow(count, static_cast<std::uint64_t>(dtype_size(out.dtype)),
@@ -262,7 +268,12 @@ std::size_t dtype_size(DType t) {
 
 std::int64_t NpyArray::count() const {
   std::int64_t n = 1;
-  for (auto s : shape) n *= s;
+  for (auto s : shape) {
+    if (s == 0) return 0;
+  }
+  for (auto s : shape) {
+    if (__builtin_mul_overflow(n, s, &n)) throw OverflowError("npy shape: element count past 2^63");
+  }
   return n;
 }
 

@@ -134,6 +134,24 @@ TEST(NpyIo, LongHeadersRoundTripAsVersion2) {
 // A header may announce any shape: the data size (a product checked against overflow) is
 // compared with the bytes present before anything is allocated, so a 100-byte file claiming
 // 2^40 elements, or a product past 2^64, is an immediate error.
+// Found by the npy fuzzer (kept in tests/fuzz/regressions/npy): an empty array whose other
+// extents multiply past 2^63 passed the size check (0 elements) and overflowed count().
+TEST(NpyIo, RegressionEmptyArrayWithHugeExtentsIsRefused) {
+  try {
+    parse_npy(npy_bytes("{'descr': '<u2', 'fortran_order': False, 'shape': (4, 1, 88, 8, 8898, "
+                        "88, 8, 888, 8, 88884, 0, 8, 8, 778, 8888, 8), }",
+                        ""),
+              "mem");
+    ADD_FAILURE() << "accepted";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("too large"), std::string::npos) << e.what();
+  }
+  // A small empty array is fine and counts 0 elements.
+  const NpyArray a = parse_npy(
+      npy_bytes("{'descr': '<u2', 'fortran_order': False, 'shape': (4, 0, 3), }", ""), "mem");
+  EXPECT_EQ(a.count(), 0);
+}
+
 TEST(NpyIo, HeaderSizesAreCheckedBeforeAllocation) {
   auto expect_error = [](const std::string& bytes, const std::string& msg) {
     try {
