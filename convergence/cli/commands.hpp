@@ -36,6 +36,7 @@ void add_hull_commands(CLI::App& app, Context& ctx);
 void add_convert_commands(CLI::App& app, Context& ctx);
 void add_topology_commands(CLI::App& app, Context& ctx);
 void add_surface_commands(CLI::App& app, Context& ctx);
+void add_plane_commands(CLI::App& app, Context& ctx);
 
 /// Prints j on stdout (two-space indent), followed by a newline.
 void print_json(const nlohmann::json& j);
