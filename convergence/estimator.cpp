@@ -38,6 +38,7 @@ const std::vector<Estimator>& estimators() {
     detail::register_2d_estimators(v);
     detail::register_3d_estimators(v);
     detail::register_hausdorff_estimators(v);
+    detail::register_jet_estimators(v);
     return v;
   }();
   return all;
@@ -166,6 +167,7 @@ EstimatorParameters resolve_parameters(const EstimatorSpec& spec,
     const double value = checked_value(e, p, text, origin);
     if (p.name == "k") out.k = value;
     if (p.name == "alpha") out.alpha = value;
+    if (p.name == "degree") out.degree = value;
   }
   return out;
 }

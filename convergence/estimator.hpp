@@ -57,8 +57,9 @@ private:
 
 /// The parameters an estimator may read (each entry declares which ones it uses).
 struct EstimatorParameters {
-  double k = 0;     // radius or mask factor
-  double alpha = 0; // exponent of the law R = k h^alpha (or n = k h^{-alpha})
+  double k = 0;      // radius or mask factor
+  double alpha = 0;  // exponent of the law R = k h^alpha (or n = k h^{-alpha})
+  double degree = 0; // polynomial degree (jet fitting); 0 where unused
 };
 
 /// Everything one run needs.
@@ -69,6 +70,7 @@ struct RunInput {
   std::vector<std::pair<double, double>> box; // continuous digitization domain per axis
   double k;                                   // estimator parameter (radius/mask factor)
   double alpha;                               // exponent of the radius law
+  double degree = 0;                          // polynomial degree (jet fitting)
 };
 
 /// One parameter of an estimator: its name (`k` or `alpha`), default (a rational, as text),
@@ -156,6 +158,7 @@ bool is_one_third(double alpha);
 void register_2d_estimators(std::vector<Estimator>& out);
 void register_3d_estimators(std::vector<Estimator>& out);
 void register_hausdorff_estimators(std::vector<Estimator>& out); // dimension 0: any
+void register_jet_estimators(std::vector<Estimator>& out);
 } // namespace detail
 
 } // namespace zdg

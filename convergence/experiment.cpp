@@ -271,7 +271,13 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
                      : random_translation(config.seed, job.translation, shape.dimension(), job.h);
       r.k = entry.on_shape(job.shape).k;
       r.alpha = entry.on_shape(job.shape).alpha;
-      RunInput in{shape, job.h, r.offset, run_box(config, shape, r.offset, job.h), r.k, r.alpha};
+      RunInput in{shape,
+                  job.h,
+                  r.offset,
+                  run_box(config, shape, r.offset, job.h),
+                  r.k,
+                  r.alpha,
+                  entry.on_shape(job.shape).degree};
       auto t0 = std::chrono::steady_clock::now();
       r.errors = entry.estimator->run(in);
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
