@@ -1,4 +1,5 @@
 #include "tests/support/cli.hpp"
+#include "tests/support/png.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -229,3 +230,25 @@ TEST(ConvergeCli, UnknownPaperIsAnError) {
 }
 
 } // namespace
+
+TEST(ConvergeCli, ComparisonPlotHasAnErrorAndATimeRow) {
+  // Two estimators on two shapes: the comparison layout, one column per shape and two rows
+  // (errors, then seconds per run), against the one-estimator layout (one row, one panel).
+  auto dir = zdg::test::scratch_dir("converge");
+  auto two = run_zdg("converge --shape ball:10 --shape ellipse:10,6 --estimator gauss-area "
+                     "--estimator dss-length --h 0.5:0.25:2 --tolerance 10 --quiet -o '" +
+                     (dir / "two").string() + "'");
+  ASSERT_EQ(two.status, 0) << two.err;
+  auto one = run_zdg("converge --shape ball:10 --estimator gauss-area --h 0.5:0.25:2 --tolerance "
+                     "10 --quiet -o '" +
+                     (dir / "one").string() + "'");
+  ASSERT_EQ(one.status, 0) << one.err;
+  if (!std::filesystem::exists(dir / "two" / "convergence.png")) {
+    GTEST_SKIP() << "no plot drawn (matplotlib missing): " << two.err;
+  }
+  const auto a = zdg::test::decode_png(dir / "two" / "convergence.png");
+  const auto b = zdg::test::decode_png(dir / "one" / "convergence.png");
+  EXPECT_GT(a.height, b.height * 3 / 2); // two rows
+  EXPECT_GT(a.width, b.width * 3 / 2);   // two shape columns
+  std::filesystem::remove_all(dir);
+}
