@@ -37,8 +37,12 @@ BigInt distance_transform_max_value(const Domain& domain, const TransformOptions
 }
 
 void require_background(const Image<std::uint8_t>& shape, const TransformOptions& opt) {
-  const auto& v = shape.values();
-  if (std::find(v.begin(), v.end(), std::uint8_t{0}) == v.end()) {
+  require_background(shape.domain(), shape.values().data(), opt);
+}
+
+void require_background(const Domain& dom, const std::uint8_t* mask, const TransformOptions& opt) {
+  const std::uint8_t* end = mask + dom.size();
+  if (std::find(mask, end, std::uint8_t{0}) == end) {
     bool torus = std::any_of(opt.torus.begin(), opt.torus.end(), [](bool b) { return b; });
     throw InvalidArgument(std::string("distance transform: the image has no background point "
                                       "(value 0)") +

@@ -9,15 +9,19 @@ namespace zdg {
 
 std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
                                             const TransformOptions& opt) {
-  const Domain& dom = shape.domain();
+  return reduced_medial_axis(shape.domain(), shape.values().data(), opt);
+}
+
+std::vector<MedialBall> reduced_medial_axis(const Domain& dom, const std::uint8_t* mask,
+                                            const TransformOptions& opt) {
   auto dt_bounds = detail::envelope_bounds(dom, opt, BigInt(0));
-  require_background(shape, opt);
+  require_background(dom, mask, opt);
   auto bounds = detail::envelope_bounds(dom, opt, dt_bounds.value_max);
   std::vector<MedialBall> balls;
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
     V inf = detail::envelope_infinity<V>(bounds);
     std::vector<V> dt(static_cast<std::size_t>(dom.size()));
-    detail::separable_envelope<V>(dom, opt, shape.values().data(), dt.data(), inf, nullptr);
+    detail::separable_envelope<V>(dom, opt, mask, dt.data(), inf, nullptr);
     std::vector<std::int64_t> site;
     if (opt.metric.is_inf()) {
       // l_inf: the centre of the largest cube covering each point (DT values fit int64:
@@ -38,7 +42,7 @@ std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
     }
     std::vector<std::uint8_t> kept(dt.size(), 0);
     for (std::size_t i = 0; i < dt.size(); ++i) {
-      if (shape.values()[i] != 0) kept[static_cast<std::size_t>(site[i])] = 1;
+      if (mask[i] != 0) kept[static_cast<std::size_t>(site[i])] = 1;
     }
     for (std::size_t i = 0; i < kept.size(); ++i) {
       if (kept[i] == 0) continue;

@@ -34,5 +34,8 @@ struct MedialBall {
 /// The balls in increasing linear index of their centre.
 std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
                                             const TransformOptions& opt = {});
+/// The same on a mask read in place (no copy): dom.size() bytes in C order, nonzero = object.
+std::vector<MedialBall> reduced_medial_axis(const Domain& dom, const std::uint8_t* mask,
+                                            const TransformOptions& opt = {});
 
 } // namespace zdg

@@ -6,14 +6,17 @@
 namespace zdg {
 
 VoronoiMap voronoi_map(const Image<std::uint8_t>& shape, const TransformOptions& opt) {
-  const Domain& dom = shape.domain();
+  return voronoi_map(shape.domain(), shape.values().data(), opt);
+}
+
+VoronoiMap voronoi_map(const Domain& dom, const std::uint8_t* mask, const TransformOptions& opt) {
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
-  require_background(shape, opt);
+  require_background(dom, mask, opt);
   VoronoiMap map{dom, {}};
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
     std::vector<V> f(static_cast<std::size_t>(dom.size()));
     V inf = detail::envelope_infinity<V>(bounds);
-    detail::separable_envelope<V>(dom, opt, shape.values().data(), f.data(), inf, &map.site);
+    detail::separable_envelope<V>(dom, opt, mask, f.data(), inf, &map.site);
   });
   return map;
 }

@@ -31,5 +31,8 @@ struct VoronoiMap {
 };
 
 VoronoiMap voronoi_map(const Image<std::uint8_t>& shape, const TransformOptions& opt = {});
+/// The same on a mask read in place (no copy): dom.size() bytes in C order, nonzero = object.
+VoronoiMap voronoi_map(const Domain& dom, const std::uint8_t* mask,
+                       const TransformOptions& opt = {});
 
 } // namespace zdg

@@ -5,8 +5,11 @@
 // `a != 0` by numpy. The distance transform reads that buffer directly and writes into a
 // numpy array it allocates (zero-copy in and out; an F-ordered input is the C-ordered image
 // of the reversed axes, and the transform commutes with the permutation of axes, so its
-// result is returned F-ordered). The functions built on the library's Image<uint8_t> copy the
-// mask once (1 byte a voxel); results made by the library as vectors are handed to numpy
+// result is returned F-ordered). The Voronoi map and the reduced medial axis read a C-ordered
+// mask in place too (the library's Domain + pointer overloads); the functions built on the
+// library's Image<uint8_t> (components, Betti numbers, thinning, surfels, curvature, meshes)
+// copy the mask once (1 byte a voxel), and the integer-valued inputs (reverse DT, power map)
+// are converted to int64 once. Results made by the library as vectors are handed to numpy
 // without a copy (capsule-owned). Long computations run without the GIL.
 #include "python/common.hpp"
 
@@ -18,8 +21,12 @@
 #include <zdg/kernel/critical_kernel_thinning.hpp>
 #include <zdg/kernel/distance_transform.hpp>
 #include <zdg/kernel/homotopic_thinning.hpp>
+#include <zdg/kernel/image_surfaces.hpp>
 #include <zdg/kernel/image_surfels.hpp>
+#include <zdg/kernel/marching_cubes.hpp>
 #include <zdg/kernel/output_files.hpp>
+#include <zdg/kernel/power_map.hpp>
+#include <zdg/kernel/primal_surface_mesh.hpp>
 #include <zdg/kernel/reduced_medial_axis.hpp>
 #include <zdg/kernel/reverse_distance_transform.hpp>
 #include <zdg/kernel/separable_engine.hpp>
@@ -192,14 +199,15 @@ TransformOptions transform_options(const std::string& metric, const py::object& 
 
 py::array voronoi_map_py(const py::object& obj, const std::string& metric, const py::object& torus,
                          unsigned threads) {
-  Image<std::uint8_t> img = image_of(obj, "voronoi_map");
-  TransformOptions opt =
-      transform_options(metric, torus, threads, static_cast<std::size_t>(img.dim()));
+  // Read in place (C order: the sites are C-order linear indices of the input's shape).
+  MaskView in = mask_view(obj, false, "voronoi_map");
+  TransformOptions opt = transform_options(metric, torus, threads, in.shape.size());
+  const Domain dom(in.shape);
   VoronoiMap v = [&] {
     py::gil_scoped_release release;
-    return voronoi_map(img, opt);
+    return voronoi_map(dom, in.data, opt);
   }();
-  return owning_array(std::move(v.site), img.domain().extents());
+  return owning_array(std::move(v.site), in.shape);
 }
 
 py::array reverse_distance_transform_py(const py::object& obj, const std::string& metric,
@@ -223,15 +231,15 @@ py::array reverse_distance_transform_py(const py::object& obj, const std::string
 
 py::tuple reduced_medial_axis_py(const py::object& obj, const std::string& metric,
                                  const py::object& torus, unsigned threads) {
-  Image<std::uint8_t> img = image_of(obj, "reduced_medial_axis");
-  TransformOptions opt =
-      transform_options(metric, torus, threads, static_cast<std::size_t>(img.dim()));
+  MaskView in = mask_view(obj, false, "reduced_medial_axis"); // read in place
+  TransformOptions opt = transform_options(metric, torus, threads, in.shape.size());
+  const Domain dom(in.shape);
   std::vector<MedialBall> balls = [&] {
     py::gil_scoped_release release;
-    return reduced_medial_axis(img, opt);
+    return reduced_medial_axis(dom, in.data, opt);
   }();
   const auto n = static_cast<std::int64_t>(balls.size());
-  const std::int64_t d = img.dim();
+  const std::int64_t d = static_cast<std::int64_t>(in.shape.size());
   std::vector<std::int64_t> centres(static_cast<std::size_t>(n * d)), values(balls.size());
   for (std::size_t i = 0; i < balls.size(); ++i) {
     for (std::int64_t k = 0; k < d; ++k) {
@@ -242,6 +250,26 @@ py::tuple reduced_medial_axis_py(const py::object& obj, const std::string& metri
   }
   return py::make_tuple(owning_array(std::move(centres), {n, d}),
                         owning_array(std::move(values), {n}));
+}
+
+py::tuple power_map_py(const py::object& obj, const std::string& metric, const py::object& torus,
+                       unsigned threads) {
+  py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> a =
+      py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if (!a) throw py::type_error("power_map: expected an integer array of weights");
+  if (a.ndim() == 0 || a.size() == 0) {
+    throw InvalidArgument("power_map: an empty or 0-dimensional array");
+  }
+  std::vector<std::int64_t> shape(a.shape(), a.shape() + a.ndim());
+  Image<std::int64_t> weights{Domain(shape),
+                              std::vector<std::int64_t>(a.data(), a.data() + a.size())};
+  TransformOptions opt = transform_options(metric, torus, threads, shape.size());
+  PowerMap m = [&] {
+    py::gil_scoped_release release;
+    return power_map(weights, opt);
+  }();
+  return py::make_tuple(owning_array(std::move(m.site), shape),
+                        owning_array(std::move(m.negative), shape));
 }
 
 // --- topology -------------------------------------------------------------------------------
@@ -402,6 +430,47 @@ py::dict ii_curvature_py(const py::object& obj, double h, double radius, bool pr
   return d;
 }
 
+py::dict surface_py(const py::object& obj, const std::string& mesh,
+                    const std::optional<std::string>& adjacency, const py::object& spacing,
+                    unsigned threads) {
+  Image<std::uint8_t> img = image_of(obj, "surface");
+  if (img.dim() != 3) throw InvalidArgument("surface: a 3D volume is needed");
+  const AdjacencyPair pair = pair_of(adjacency, 3);
+  const SurfaceConvention conv = SurfaceConvention::of(pair);
+  VoxelPlacement place = VoxelPlacement::lattice(VoxelGrid::of(img.domain()));
+  if (!spacing.is_none()) {
+    std::vector<double> sp;
+    for (py::handle v : py::iter(spacing)) sp.push_back(v.cast<double>());
+    if (sp.size() != 3 || !(sp[0] > 0 && sp[1] > 0 && sp[2] > 0) ||
+        !(std::isfinite(sp[0]) && std::isfinite(sp[1]) && std::isfinite(sp[2]))) {
+      throw InvalidArgument("surface: spacing must be three positive numbers (z, y, x)");
+    }
+    place.spacing = {sp[2], sp[1], sp[0]};
+  }
+  if (mesh != "primal" && mesh != "marching-cubes") {
+    throw InvalidArgument("surface: mesh '" + mesh + "' is not 'primal' or 'marching-cubes'");
+  }
+  PolygonMesh m = [&] {
+    py::gil_scoped_release release;
+    ImageSurfels sf = image_surfels(img, threads);
+    return mesh == "primal" ? primal_surface_mesh(img, sf, conv, place, threads)
+                            : marching_cubes(img, sf, conv, place, nullptr, threads);
+  }();
+  const std::int64_t nv = m.vertex_count(), nf = m.face_count();
+  std::vector<double> xyz(static_cast<std::size_t>(3 * nv));
+  for (std::int64_t i = 0; i < nv; ++i) {
+    const auto& v = m.vertices[static_cast<std::size_t>(i)];
+    xyz[static_cast<std::size_t>(3 * i)] = v.x;
+    xyz[static_cast<std::size_t>(3 * i + 1)] = v.y;
+    xyz[static_cast<std::size_t>(3 * i + 2)] = v.z;
+  }
+  py::dict d;
+  d["vertices"] = owning_array(std::move(xyz), {nv, 3});
+  d["faces"] = owning_array(std::move(m.indices), {nf, static_cast<std::int64_t>(m.face_size)});
+  d["adjacency"] = pair.name();
+  return d;
+}
+
 // --- volumes --------------------------------------------------------------------------------
 
 struct DTypeName {
@@ -530,6 +599,21 @@ void bind_arrays(py::module_& m) {
         "units, R/h <= 256 voxels): mean curvature, and with principal=True k1 <= k2, Gaussian "
         "curvature, unit normal and principal directions. About 2 pi (R/h)^2 look-ups per "
         "surfel. Returns {'codes', 'centres', 'mean', ...}.");
+  m.def("power_map", &power_map_py, py::arg("weights"), py::kw_only(), py::arg("metric") = "l2",
+        py::arg("torus") = py::none(), py::arg("threads") = 0,
+        "Exact discrete power map of the weighted sites (points of weight > 0) of an integer "
+        "array of any dimension, for l_p with p finite (Coeurjolly and Montanvert, PAMI 2007): "
+        "at every point the C-order linear index of a site minimising d_p(x, c)^p - w(c), and "
+        "whether that minimal power is negative (the point lies in the site's open ball). "
+        "O(N d) for l1, l2. Returns (site, negative) arrays of the weights' shape.");
+  m.def("surface", &surface_py, py::arg("volume"), py::kw_only(), py::arg("mesh") = "primal",
+        py::arg("adjacency") = py::none(), py::arg("spacing") = py::none(), py::arg("threads") = 0,
+        "The boundary of the nonzero voxels of a 3D volume (axes z, y, x) as a mesh: 'primal' "
+        "(one quad per surfel, vertices at the pointels) or 'marching-cubes' (triangles), "
+        "ambiguities resolved by the adjacency pair ('6,26' default, '26,6', '6,18', '18,6'); "
+        "spacing (sz, sy, sx) scales the vertices. Returns {'vertices' (n, 3) float64 as x, y, "
+        "z (x along the last axis), 'faces' (m, 4 or 3) int64, counter-clockwise from outside, "
+        "'adjacency'}, the mesh zdg surface writes as PLY.");
   m.def("read_volume", &read_volume_py, py::arg("path"), py::kw_only(), py::arg("metadata") = false,
         "Reads a volume (.vol v2/v3, .nii, .nii.gz, .npy, .pgm) into a numpy array of its "
         "stored value type (no copy after the read); metadata=True also returns {'lower', "

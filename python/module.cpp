@@ -16,14 +16,21 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/arith/escalate.hpp>
 #include <zdg/arith/floor_sum.hpp>
+#include <zdg/arith/rational.hpp>
 #include <zdg/arith/stern_brocot.hpp>
 #include <zdg/convergence/config.hpp>
 #include <zdg/convergence/experiment.hpp>
+#include <zdg/kernel/convex_body_hull.hpp>
+#include <zdg/kernel/digital_plane_recognition.hpp>
 #include <zdg/kernel/lattice_hull_2d.hpp>
+#include <zdg/kernel/lattice_hull_3d.hpp>
 #include <zdg/kernel/maximal_segments.hpp>
+#include <zdg/kernel/plane_probing.hpp>
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -226,17 +233,183 @@ py::dict dsl_subsegment_py(py::handle a, py::handle b, py::handle mu, py::handle
   return d;
 }
 
+// Points as a list of 2D or 3D integer tuples (Python ints of any size); all the same
+// dimension, one of `dims`.
+struct PointsIn {
+  int dim = 0;
+  std::vector<BigInt> coords;
+  std::size_t size() const { return dim == 0 ? 0 : coords.size() / static_cast<std::size_t>(dim); }
+};
+
+PointsIn points_nd(py::handle seq, const char* what, std::initializer_list<int> dims) {
+  PointsIn out;
+  for (py::handle item : py::iter(seq)) {
+    py::sequence s = py::reinterpret_borrow<py::sequence>(item);
+    const int n = static_cast<int>(py::len(s));
+    if (out.dim == 0) {
+      if (std::find(dims.begin(), dims.end(), n) == dims.end()) {
+        throw InvalidArgument(std::string(what) + ": a point has " + std::to_string(n) +
+                              " coordinates");
+      }
+      out.dim = n;
+    } else if (n != out.dim) {
+      throw InvalidArgument(std::string(what) + ": points of " + std::to_string(out.dim) +
+                            " and of " + std::to_string(n) + " coordinates are mixed");
+    }
+    for (int k = 0; k < n; ++k)
+      out.coords.push_back(py_to_bigint(s[static_cast<std::size_t>(k)], what));
+  }
+  if (out.dim == 0) throw InvalidArgument(std::string(what) + ": no point");
+  return out;
+}
+
+py::tuple tuple3(const Point3<BigInt>& p) {
+  return py::make_tuple(bigint_to_py(p.x), bigint_to_py(p.y), bigint_to_py(p.z));
+}
+
 py::dict hull_py(py::handle points) {
-  auto pts = points_of(points, "hull");
+  auto in = points_nd(points, "hull", {2, 3});
+  py::dict d;
+  if (in.dim == 2) {
+    std::vector<Point2<BigInt>> pts;
+    for (std::size_t i = 0; i < in.size(); ++i)
+      pts.push_back({in.coords[2 * i], in.coords[2 * i + 1]});
+    auto r = [&] {
+      py::gil_scoped_release release;
+      return lattice_hull_2d_exact<BigInt>(std::span<const Point2<BigInt>>(pts));
+    }();
+    py::list vertices;
+    for (const auto& p : r.value)
+      vertices.append(py::make_tuple(bigint_to_py(p.x), bigint_to_py(p.y)));
+    d["vertices"] = vertices;
+    d["integer_type"] = served(r.served);
+    return d;
+  }
+  std::vector<Point3<BigInt>> pts;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    pts.push_back({in.coords[3 * i], in.coords[3 * i + 1], in.coords[3 * i + 2]});
+  }
   auto r = [&] {
     py::gil_scoped_release release;
-    return lattice_hull_2d_exact<BigInt>(std::span<const Point2<BigInt>>(pts));
+    return lattice_hull_3d_exact<BigInt>(std::span<const Point3<BigInt>>(pts));
   }();
+  const auto& h = r.value;
+  py::list vertices, facets, normals;
+  for (const auto& p : h.vertices) vertices.append(tuple3(p));
+  for (std::size_t f = 0; f < h.facets.size(); ++f) {
+    facets.append(py::cast(h.facets[f]));
+    normals.append(tuple3(h.normals[f]));
+  }
+  d["dimension"] = h.dimension;
+  d["vertices"] = vertices;
+  d["facets"] = facets;
+  d["normals"] = normals;
+  d["volume6"] = bigint_to_py(h.volume6);
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+// A rational from a Python int, a fractions.Fraction (numerator / denominator) or a str
+// ("7", "-3/4", "1000.5": zdg's decimal rational syntax).
+Rational<BigInt> rational_of(py::handle h, const std::string& what) {
+  if (py::isinstance<py::str>(h)) {
+    try {
+      return parse_rational<BigInt>(std::string(py::str(h)));
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(what + ": " + e.what());
+    }
+  }
+  if (py::hasattr(h, "numerator") && py::hasattr(h, "denominator") && !PyFloat_Check(h.ptr())) {
+    return Rational<BigInt>(py_to_bigint(h.attr("numerator"), what.c_str()),
+                            py_to_bigint(h.attr("denominator"), what.c_str()));
+  }
+  if (PyFloat_Check(h.ptr())) {
+    throw py::type_error(what + ": a float is not exact; pass an int, a Fraction or a str");
+  }
+  return Rational<BigInt>(py_to_bigint(h, what.c_str()));
+}
+
+py::dict body_hull_dict(const Escalated<BodyHull>& r) {
   py::list vertices;
-  for (const auto& p : r.value)
+  for (const auto& p : r.value.vertices)
     vertices.append(py::make_tuple(bigint_to_py(p.x), bigint_to_py(p.y)));
   py::dict d;
   d["vertices"] = vertices;
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+void check_bound(const char* what, std::uint64_t bound, std::uint64_t max_vertices) {
+  if (bound > max_vertices) {
+    throw InvalidArgument(std::string(what) + ": the hull could have up to " +
+                          std::to_string(bound) + " vertices, more than max_vertices " +
+                          std::to_string(max_vertices));
+  }
+}
+
+py::dict hull_disc_py(py::handle cx, py::handle cy, py::handle r, std::uint64_t max_vertices) {
+  auto X = rational_of(cx, "hull_disc: cx"), Y = rational_of(cy, "hull_disc: cy"),
+       R = rational_of(r, "hull_disc: r");
+  if (R < Rational<BigInt>(0)) throw InvalidArgument("hull_disc: negative radius " + R.str());
+  check_bound("hull_disc", disc_hull_max_vertices(R), max_vertices);
+  auto h = [&] {
+    py::gil_scoped_release release;
+    return disc_hull_exact(X, Y, R);
+  }();
+  return body_hull_dict(h);
+}
+
+py::dict hull_ellipse_py(py::handle cx, py::handle cy, py::handle a, py::handle b,
+                         std::uint64_t max_vertices) {
+  auto X = rational_of(cx, "hull_ellipse: cx"), Y = rational_of(cy, "hull_ellipse: cy"),
+       A = rational_of(a, "hull_ellipse: a"), B = rational_of(b, "hull_ellipse: b");
+  ellipse_body(X, Y, A, B); // a, b > 0
+  check_bound("hull_ellipse", ellipse_hull_max_vertices(A, B), max_vertices);
+  auto h = [&] {
+    py::gil_scoped_release release;
+    return ellipse_hull_exact(X, Y, A, B);
+  }();
+  return body_hull_dict(h);
+}
+
+py::dict recognize_plane_py(py::handle points) {
+  auto in = points_nd(points, "recognize_plane", {3});
+  std::vector<Point3<BigInt>> pts;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    pts.push_back({in.coords[3 * i], in.coords[3 * i + 1], in.coords[3 * i + 2]});
+  }
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return recognize_naive_plane_exact(std::span<const Point3<BigInt>>(pts));
+  }();
+  py::dict d;
+  d["is_plane"] = r.value.is_plane;
+  if (r.value.is_plane) {
+    d["normal"] = tuple3(r.value.normal);
+    d["mu"] = bigint_to_py(r.value.mu);
+    d["omega"] = bigint_to_py(r.value.omega);
+  }
+  d["integer_type"] = served(r.served);
+  return d;
+}
+
+py::dict probe_plane_py(py::handle a, py::handle b, py::handle c, const std::string& algorithm,
+                        std::uint64_t max_steps) {
+  Point3<BigInt> n{py_to_bigint(a, "probe_plane: a"), py_to_bigint(b, "probe_plane: b"),
+                   py_to_bigint(c, "probe_plane: c")};
+  if (algorithm != "h" && algorithm != "r") {
+    throw InvalidArgument("probe_plane: algorithm '" + algorithm + "' is not 'h' or 'r'");
+  }
+  auto r = [&] {
+    py::gil_scoped_release release;
+    return probe_standard_plane_exact(
+        n, algorithm == "h" ? ProbingAlgorithm::h : ProbingAlgorithm::r, max_steps);
+  }();
+  py::dict d;
+  d["normal"] = tuple3(r.value.normal);
+  d["steps"] = r.value.steps;
+  d["predicate_calls"] = r.value.predicate_calls;
+  d["reduced_basis"] = r.value.reduced_basis;
   d["integer_type"] = served(r.served);
   return d;
 }
@@ -380,9 +553,33 @@ PYBIND11_MODULE(_zdg, m) {
         "(Said and Lachaud 2011), O(log(x1 - x0)), exact by escalation. Returns {'a', 'b', "
         "'mu', 'integer_type'}.");
   m.def("hull", &hull_py, py::arg("points"),
-        "Convex hull of 2D integer points (Python ints of any size): its vertices, input points "
-        "without collinear ones, counter-clockwise (Andrew's monotone chain, O(n log n), exact "
-        "orientation tests by escalation). Returns {'vertices', 'integer_type'}.");
+        "Convex hull of 2D or 3D integer points (Python ints of any size), exact by "
+        "escalation. 2D: its vertices counter-clockwise, without collinear points (Andrew's "
+        "monotone chain, O(n log n)); returns {'vertices', 'integer_type'}. 3D: Quickhull with "
+        "exact predicates and merged coplanar facets; returns {'dimension', 'vertices', "
+        "'facets' (vertex indices, counter-clockwise from outside), 'normals' (primitive, "
+        "outward), 'volume6' (6 x volume), 'integer_type'}.");
+  m.def("hull_disc", &hull_disc_py, py::arg("cx"), py::arg("cy"), py::arg("r"),
+        py::arg("max_vertices") = 100'000'000,
+        "Vertices of the convex hull of the lattice points of the closed disc of centre (cx, cy) "
+        "and radius r (ints, fractions.Fraction or str rationals such as '1000.5'), counter-"
+        "clockwise, exact (zdg hull disc). Refused when the proven vertex bound exceeds "
+        "max_vertices. Returns {'vertices', 'integer_type'}.");
+  m.def("hull_ellipse", &hull_ellipse_py, py::arg("cx"), py::arg("cy"), py::arg("a"), py::arg("b"),
+        py::arg("max_vertices") = 100'000'000,
+        "Vertices of the convex hull of the lattice points of ((x - cx)/a)^2 + ((y - cy)/b)^2 "
+        "<= 1 (rationals as for hull_disc; a, b > 0), exact. Returns {'vertices', "
+        "'integer_type'}.");
+  m.def("recognize_plane", &recognize_plane_py, py::arg("points"),
+        "Is a set of 3D integer points a naive digital plane segment (mu <= N.x < mu + "
+        "||N||_inf)? Exact, by the chord theorem (kernel/digital_plane_recognition.hpp). "
+        "Returns {'is_plane', 'normal', 'mu', 'omega', 'integer_type'} (normal, mu, omega "
+        "when is_plane).");
+  m.def("probe_plane", &probe_plane_py, py::arg("a"), py::arg("b"), py::arg("c"),
+        py::arg("algorithm") = "r", py::arg("max_steps") = 100'000'000,
+        "Plane probing (H or R algorithm, Lachaud-Provencal-Roussillon 2017) of the standard "
+        "plane 0 <= a x + b y + c z < |a| + |b| + |c| from the origin: the normal found (the "
+        "plane's own), steps, predicate calls, whether the final basis is reduced.");
   m.def("converge", &converge, py::arg("shapes"), py::arg("estimators"), py::kw_only(),
         py::arg("h"), py::arg("k") = py::none(), py::arg("alpha") = py::none(),
         py::arg("translations") = 0, py::arg("seed") = 0, py::arg("fit_levels") = 0,

@@ -6,11 +6,13 @@ and long computations release the GIL. Errors: ValueError (bad argument), OSErro
 OverflowError (never from an exact entry point).
 """
 from ._zdg import (betti_numbers, cf, christoffel, connected_components, converge, hull,
-                   distance_transform, dsl_subsegment, floor_sum, ii_curvature, read_volume,
-                   recognize_dss, reduced_medial_axis, reverse_distance_transform, surfels,
-                   tangential_cover, thinning, voronoi_map, write_volume)
+                   hull_disc, hull_ellipse, distance_transform, dsl_subsegment, floor_sum,
+                   ii_curvature, power_map, probe_plane, read_volume, recognize_dss,
+                   recognize_plane, reduced_medial_axis, reverse_distance_transform, surface,
+                   surfels, tangential_cover, thinning, voronoi_map, write_volume)
 
 __all__ = ["betti_numbers", "cf", "christoffel", "connected_components", "converge", "hull",
+           "hull_disc", "hull_ellipse", "power_map", "probe_plane", "recognize_plane", "surface",
            "distance_transform", "dsl_subsegment", "floor_sum", "ii_curvature", "plot",
            "reduced_medial_axis", "reverse_distance_transform", "voronoi_map",
            "read_volume", "recognize_dss", "surfels", "tangential_cover", "thinning",

@@ -52,6 +52,35 @@ class Hull(TypedDict):
     vertices: list[tuple[int, int]]
     integer_type: IntegerType
 
+class Hull3d(TypedDict):
+    dimension: int
+    vertices: list[tuple[int, int, int]]
+    facets: list[list[int]]
+    normals: list[tuple[int, int, int]]
+    volume6: int
+    integer_type: IntegerType
+
+class PlaneRecognition(TypedDict, total=False):
+    is_plane: bool
+    normal: tuple[int, int, int]
+    mu: int
+    omega: int
+    integer_type: IntegerType
+
+class PlaneProbing(TypedDict):
+    normal: tuple[int, int, int]
+    steps: int
+    predicate_calls: int
+    reduced_basis: bool
+    integer_type: IntegerType
+
+class SurfaceMesh(TypedDict):
+    vertices: npt.NDArray[np.float64]
+    faces: npt.NDArray[np.int64]
+    adjacency: str
+
+Rational = Union[int, str, Any]  # int, fractions.Fraction or text such as "1000.5"
+
 class Betti(TypedDict):
     betti: tuple[int, ...]
     euler: int
@@ -71,7 +100,23 @@ def recognize_dss(points: Sequence[Point], connectivity: int = 0) -> DssRecognit
 def tangential_cover(points: Sequence[Point], closed: bool = True,
                      connectivity: int = 0) -> list[MaximalSegment]: ...
 def dsl_subsegment(a: int, b: int, mu: int, x0: int, x1: int) -> DslSubsegment: ...
-def hull(points: Sequence[Point]) -> Hull: ...
+@overload
+def hull(points: Sequence[tuple[int, int]]) -> Hull: ...
+@overload
+def hull(points: Sequence[tuple[int, int, int]]) -> Hull3d: ...
+def hull_disc(cx: Rational, cy: Rational, r: Rational,
+              max_vertices: int = 100_000_000) -> Hull: ...
+def hull_ellipse(cx: Rational, cy: Rational, a: Rational, b: Rational,
+                 max_vertices: int = 100_000_000) -> Hull: ...
+def recognize_plane(points: Sequence[tuple[int, int, int]]) -> PlaneRecognition: ...
+def probe_plane(a: int, b: int, c: int, algorithm: Literal["h", "r"] = "r",
+                max_steps: int = 100_000_000) -> PlaneProbing: ...
+def power_map(weights: npt.ArrayLike, *, metric: str = "l2",
+              torus: Union[None, bool, Sequence[bool]] = None,
+              threads: int = 0) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.uint8]]: ...
+def surface(volume: npt.ArrayLike, *, mesh: Literal["primal", "marching-cubes"] = "primal",
+            adjacency: Optional[str] = None,
+            spacing: Optional[Sequence[float]] = None, threads: int = 0) -> SurfaceMesh: ...
 def voronoi_map(image: npt.ArrayLike, *, metric: str = "l2",
                 torus: Union[None, bool, Sequence[bool]] = None,
                 threads: int = 0) -> npt.NDArray[np.int64]: ...

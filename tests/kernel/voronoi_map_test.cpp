@@ -3,6 +3,7 @@
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"
 #include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/reduced_medial_axis.hpp>
 
 #include <gtest/gtest.h>
 
@@ -57,6 +58,27 @@ TEST(VoronoiMap, ThreadCountIndependence) {
     opt.threads = 3;
     EXPECT_EQ(voronoi_map(shape, opt).site, ref) << p;
   }
+}
+
+// The in-place overload (what the Python module calls) reads any nonzero byte as object and
+// agrees with the Image overload; the reduced medial axis likewise.
+TEST(VoronoiMap, InPlaceMaskOfAnyNonzeroBytesAgrees) {
+  Domain dom({23, 31});
+  std::mt19937 rng(11);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(dom.size())), binary(bytes.size());
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    bytes[i] = rng() % 9 == 0 ? 0 : static_cast<std::uint8_t>(1 + rng() % 255);
+    binary[i] = bytes[i] != 0 ? 1 : 0;
+  }
+  const Image<std::uint8_t> shape(dom, binary);
+  for (int p : {1, 2, 0}) {
+    TransformOptions opt;
+    opt.metric = Metric{p};
+    EXPECT_EQ(voronoi_map(dom, bytes.data(), opt).site, voronoi_map(shape, opt).site) << p;
+    EXPECT_EQ(reduced_medial_axis(dom, bytes.data(), opt), reduced_medial_axis(shape, opt)) << p;
+  }
+  std::vector<std::uint8_t> full(bytes.size(), 3);
+  EXPECT_THROW(voronoi_map(dom, full.data(), {}), InvalidArgument);
 }
 
 TEST(VoronoiMap, NoBackgroundIsAnError) {

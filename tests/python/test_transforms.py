@@ -186,3 +186,40 @@ def test_medial_axis_balls_rebuild_the_shape(image, metric):
         assert image[tuple(c)] and dt[tuple(c)] == v
         balls[tuple(c)] = v
     assert np.array_equal(zdg.reverse_distance_transform(balls, metric=metric).astype(bool), image)
+
+
+
+MEMORY_CHECK = r"""
+import resource, sys
+import numpy as np
+import zdg
+n = int(sys.argv[2])
+a = np.ones((n, n, n), dtype=np.uint8)
+a[n // 2, n // 2, n // 2] = 0
+a[0, 0, 0] = 0
+def peak():
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024  # bytes (KiB on Linux)
+base = peak()
+out = getattr(zdg, sys.argv[1])(a, threads=2)
+grown = peak() - base
+print(a.nbytes, out.nbytes, grown)
+"""
+
+
+@pytest.mark.parametrize("function,n,work", [("distance_transform", 512, 0),
+                                             ("voronoi_map", 256, 4)])
+def test_large_calls_do_not_copy_their_input(function, n, work):
+    """The issue's zero-copy check at scale, in a fresh interpreter (where ru_maxrss is this
+    call's peak): the 512^3 distance transform grows the resident memory by at most input +
+    output + 5% (in fact by the output alone: the input is read in place and the result is
+    computed in its own buffer); the Voronoi map also needs its squared distances (int32, 4
+    bytes a voxel) beside the sites (int64): its growth stays below 1.05 (output + work),
+    which a copy of the input (1 byte a voxel, 20% of that) would exceed."""
+    import subprocess
+    import sys
+    r = subprocess.run([sys.executable, "-c", MEMORY_CHECK, function, str(n)],
+                       capture_output=True, text=True, check=True)
+    inp, out, grown = (int(v) for v in r.stdout.split())
+    if work == 0:
+        assert grown <= 1.05 * (inp + out), (inp, out, grown)
+    assert grown <= 1.05 * (out + work * n**3) + 4 * 2**20, (inp, out, grown)
