@@ -103,6 +103,26 @@ std::vector<std::int64_t> shape_of(const MaskView& v) {
   return s;
 }
 
+// Metric, torus flags (one bool, or one per axis) and threads of a transform call.
+TransformOptions transform_options(const std::string& metric, const py::object& torus,
+                                   unsigned threads, std::size_t d) {
+  TransformOptions opt;
+  opt.metric = parse_metric(metric);
+  opt.threads = threads;
+  if (!torus.is_none()) {
+    if (py::isinstance<py::bool_>(torus)) {
+      opt.torus.assign(d, torus.cast<bool>());
+    } else {
+      for (py::handle t : py::iter(torus)) opt.torus.push_back(t.cast<bool>());
+      if (!opt.torus.empty() && opt.torus.size() != d) {
+        throw InvalidArgument("torus has " + std::to_string(opt.torus.size()) + " flags for a " +
+                              std::to_string(d) + "-dimensional array");
+      }
+    }
+  }
+  return opt;
+}
+
 // --- distance transform ---------------------------------------------------------------------
 
 template <class V>
@@ -123,23 +143,10 @@ py::array engine_array(const MaskView& in, const Domain& dom, const TransformOpt
 
 py::array distance_transform_py(const py::object& obj, const std::string& metric,
                                 const py::object& torus, unsigned threads) {
-  TransformOptions opt;
-  opt.metric = parse_metric(metric);
-  opt.threads = threads;
   MaskView in = mask_view(obj, true, "distance_transform");
-  const std::size_t d = in.shape.size();
-  if (!torus.is_none()) {
-    if (py::isinstance<py::bool_>(torus)) {
-      opt.torus.assign(d, torus.cast<bool>());
-    } else {
-      for (py::handle t : py::iter(torus)) opt.torus.push_back(t.cast<bool>());
-      if (!opt.torus.empty() && opt.torus.size() != d) {
-        throw InvalidArgument("distance_transform: torus has " + std::to_string(opt.torus.size()) +
-                              " flags for a " + std::to_string(d) + "-dimensional array");
-      }
-      if (in.fortran) std::reverse(opt.torus.begin(), opt.torus.end());
-    }
-  }
+  TransformOptions opt = transform_options(metric, torus, threads, in.shape.size());
+  // An F-ordered input is the C-ordered image of the reversed axes.
+  if (in.fortran) std::reverse(opt.torus.begin(), opt.torus.end());
   Domain dom(in.shape);
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
   if (std::memchr(in.data, 0, static_cast<std::size_t>(in.size())) == nullptr) {
@@ -177,25 +184,6 @@ py::array distance_transform_py(const py::object& obj, const std::string& metric
 }
 
 // --- the other separable transforms ----------------------------------------------------
-
-TransformOptions transform_options(const std::string& metric, const py::object& torus,
-                                   unsigned threads, std::size_t d) {
-  TransformOptions opt;
-  opt.metric = parse_metric(metric);
-  opt.threads = threads;
-  if (!torus.is_none()) {
-    if (py::isinstance<py::bool_>(torus)) {
-      opt.torus.assign(d, torus.cast<bool>());
-    } else {
-      for (py::handle t : py::iter(torus)) opt.torus.push_back(t.cast<bool>());
-      if (!opt.torus.empty() && opt.torus.size() != d) {
-        throw InvalidArgument("torus has " + std::to_string(opt.torus.size()) + " flags for a " +
-                              std::to_string(d) + "-dimensional array");
-      }
-    }
-  }
-  return opt;
-}
 
 py::array voronoi_map_py(const py::object& obj, const std::string& metric, const py::object& torus,
                          unsigned threads) {
