@@ -370,15 +370,10 @@ py::dict surfels_py(const py::object& obj, unsigned threads) {
   return d;
 }
 
-py::dict ii_curvature_py(const py::object& obj, double h, double radius, bool principal,
-                         unsigned threads) {
-  Image<std::uint8_t> img = image_of(obj, "ii_curvature");
-  ImageSurfels s = [&] {
-    py::gil_scoped_release release;
-    return image_surfels(img, threads);
-  }();
-  py::dict d;
-  d["centres"] = surfel_centres(s);
+// The integral-invariant estimates at the surfels s of img, added to d: 'mean', and with
+// principal 'k1', 'k2', 'gaussian', 'normal', 'd1', 'd2' (one row per surfel, in s's order).
+void add_ii_estimates(py::dict& d, const Image<std::uint8_t>& img, const ImageSurfels& s, double h,
+                      double radius, bool principal, unsigned threads) {
   const std::int64_t n = s.size();
   if (!principal) {
     std::vector<double> mean = [&] {
@@ -414,12 +409,26 @@ py::dict ii_curvature_py(const py::object& obj, double h, double radius, bool pr
     d["d1"] = owning_array(std::move(d1), {n, 3});
     d["d2"] = owning_array(std::move(d2), {n, 3});
   }
+}
+
+py::dict ii_curvature_py(const py::object& obj, double h, double radius, bool principal,
+                         unsigned threads) {
+  Image<std::uint8_t> img = image_of(obj, "ii_curvature");
+  ImageSurfels s = [&] {
+    py::gil_scoped_release release;
+    return image_surfels(img, threads);
+  }();
+  py::dict d;
+  d["centres"] = surfel_centres(s);
+  const std::int64_t n = s.size();
+  add_ii_estimates(d, img, s, h, radius, principal, threads);
   d["codes"] = owning_array(std::move(s.codes), {n});
   return d;
 }
 
 py::dict surface_py(const py::object& obj, const std::string& mesh,
                     const std::optional<std::string>& adjacency, const py::object& spacing,
+                    const py::object& estimate, double h, const py::object& radius,
                     unsigned threads) {
   Image<std::uint8_t> img = image_of(obj, "surface");
   if (img.dim() != 3) throw InvalidArgument("surface: a 3D volume is needed");
@@ -438,9 +447,16 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
   if (mesh != "primal" && mesh != "marching-cubes") {
     throw InvalidArgument("surface: mesh '" + mesh + "' is not 'primal' or 'marching-cubes'");
   }
+  if (!estimate.is_none() && mesh != "primal") {
+    throw InvalidArgument("surface: estimates are per surfel, that is per face of the primal "
+                          "mesh: use mesh='primal'");
+  }
+  ImageSurfels sf = [&] {
+    py::gil_scoped_release release;
+    return image_surfels(img, threads);
+  }();
   PolygonMesh m = [&] {
     py::gil_scoped_release release;
-    ImageSurfels sf = image_surfels(img, threads);
     return mesh == "primal" ? primal_surface_mesh(img, sf, conv, place, threads)
                             : marching_cubes(img, sf, conv, place, nullptr, threads);
   }();
@@ -456,6 +472,14 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
   d["vertices"] = owning_array(std::move(xyz), {nv, 3});
   d["faces"] = owning_array(std::move(m.indices), {nf, static_cast<std::int64_t>(m.face_size)});
   d["adjacency"] = pair.name();
+  if (!estimate.is_none()) {
+    const std::string what = py::str(estimate);
+    if (what != "mean" && what != "principal") {
+      throw InvalidArgument("surface: estimate '" + what + "' is not 'mean' or 'principal'");
+    }
+    if (radius.is_none()) throw InvalidArgument("surface: an estimate needs radius=R");
+    add_ii_estimates(d, img, sf, h, radius.cast<double>(), what == "principal", threads);
+  }
   return d;
 }
 
@@ -595,13 +619,17 @@ void bind_arrays(py::module_& m) {
         "whether that minimal power is negative (the point lies in the site's open ball). "
         "O(N d) for l1, l2. Returns (site, negative) arrays of the weights' shape.");
   m.def("surface", &surface_py, py::arg("volume"), py::kw_only(), py::arg("mesh") = "primal",
-        py::arg("adjacency") = py::none(), py::arg("spacing") = py::none(), py::arg("threads") = 0,
+        py::arg("adjacency") = py::none(), py::arg("spacing") = py::none(),
+        py::arg("estimate") = py::none(), py::arg("h") = 1.0, py::arg("radius") = py::none(),
+        py::arg("threads") = 0,
         "The boundary of the nonzero voxels of a 3D volume (axes z, y, x) as a mesh: 'primal' "
         "(one quad per surfel, vertices at the pointels) or 'marching-cubes' (triangles), "
         "ambiguities resolved by the adjacency pair ('6,26' default, '26,6', '6,18', '18,6'); "
         "spacing (sz, sy, sx) scales the vertices. Returns {'vertices' (n, 3) float64 as x, y, "
         "z (x along the last axis), 'faces' (m, 4 or 3) int64, counter-clockwise from outside, "
-        "'adjacency'}, the mesh zdg surface writes as PLY.");
+        "'adjacency'}, the mesh zdg surface writes as PLY. estimate='mean' or 'principal' (primal "
+        "mesh only: face f is surfel f) adds the integral-invariant estimates per face at grid "
+        "step h and radius R, as ii_curvature returns them.");
   m.def("read_volume", &read_volume_py, py::arg("path"), py::kw_only(), py::arg("metadata") = false,
         "Reads a volume (.vol v2/v3, .nii, .nii.gz, .npy, .pgm) into a numpy array of its "
         "stored value type (no copy after the read); metadata=True also returns {'lower', "

@@ -12,11 +12,21 @@ from ._zdg import (betti_numbers, cf, christoffel, connected_components, converg
                    surfels, tangential_cover, thinning, voronoi_map, write_volume)
 
 __all__ = ["betti_numbers", "cf", "christoffel", "connected_components", "converge", "hull",
-           "hull_disc", "hull_ellipse", "power_map", "probe_plane", "recognize_plane", "surface",
+           "hull_disc", "hull_ellipse", "power_map", "probe_plane", "recognize_plane", "skeleton",
+           "surface",
            "distance_transform", "dsl_subsegment", "floor_sum", "ii_curvature", "plot",
            "reduced_medial_axis", "reverse_distance_transform", "voronoi_map",
            "read_volume", "recognize_dss", "surfels", "tangential_cover", "thinning",
            "write_volume"]
+
+
+def skeleton(image, method="critical-kernel", skeleton="curve", adjacency=None, threads=0):
+    """The skeleton of the object of a 2D or 3D binary image: `thinning` with a curve
+    skeleton by default ('ultimate', 'curve' or 'surface'; methods 'critical-kernel',
+    parallel, Bertrand and Couprie, or 'sequential'). Returns a uint8 array of the image's
+    shape (1 on the skeleton); the topology of the object is kept."""
+    return thinning(image, method=method, skeleton=skeleton, adjacency=adjacency,
+                    threads=threads)
 
 
 def plot(result, norm="linf", ax=None):

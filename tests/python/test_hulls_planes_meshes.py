@@ -186,3 +186,26 @@ def test_surface_mesh_equals_the_command_lines_ply(tmp_path):
     nf = int(header.split("element face ")[1].split()[0])
     s = zdg.surface(vol)
     assert (nv, nf) == (len(s["vertices"]), len(s["faces"]))
+
+
+def test_surface_estimates_are_the_ii_estimates_per_face():
+    z, y, x = np.mgrid[:20, :20, :20]
+    ball = ((x - 9.5) ** 2 + (y - 10.1) ** 2 + (z - 9.7) ** 2 <= 49).astype(np.uint8)
+    s = zdg.surface(ball, estimate="principal", h=1.0, radius=3.0)
+    ii = zdg.ii_curvature(ball, h=1.0, radius=3.0, principal=True)
+    assert len(s["faces"]) == len(ii["mean"])  # face f is surfel f
+    for key in ("mean", "k1", "k2", "gaussian", "normal"):
+        assert np.array_equal(s[key], ii[key]), key
+    with pytest.raises(ValueError, match="primal"):
+        zdg.surface(ball, mesh="marching-cubes", estimate="mean", radius=3.0)
+    with pytest.raises(ValueError, match="radius"):
+        zdg.surface(ball, estimate="mean")
+
+
+def test_skeleton_is_the_curve_thinning_and_keeps_the_topology():
+    z, y, x = np.mgrid[:16, :16, :16]
+    torus = ((np.sqrt((x - 7.5) ** 2 + (y - 7.5) ** 2) - 5) ** 2 + (z - 7.5) ** 2 <= 4)
+    sk = zdg.skeleton(torus.astype(np.uint8))
+    assert np.array_equal(sk, zdg.thinning(torus.astype(np.uint8), skeleton="curve"))
+    assert zdg.betti_numbers(sk)["betti"] == zdg.betti_numbers(torus)["betti"] == (1, 1, 0)
+    assert 0 < sk.sum() < torus.sum() / 2
