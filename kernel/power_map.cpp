@@ -17,11 +17,15 @@ void require_finite_p(const TransformOptions& opt, const char* what) {
 }
 
 std::int64_t check_weights(const Image<std::int64_t>& weights) {
+  return check_weights(weights.domain(), weights.values().data());
+}
+
+std::int64_t check_weights(const Domain& dom, const std::int64_t* weights) {
   std::int64_t wmax = 0;
-  for (std::int64_t i = 0; i < weights.size(); ++i) {
+  for (std::int64_t i = 0; i < dom.size(); ++i) {
     std::int64_t w = weights[i];
     if (w < 0) {
-      auto p = weights.domain().point(i);
+      auto p = dom.point(i);
       std::string at;
       for (auto c : p) {
         if (!at.empty()) at.push_back(',');
@@ -39,9 +43,12 @@ std::int64_t check_weights(const Image<std::int64_t>& weights) {
 } // namespace detail
 
 PowerMap power_map(const Image<std::int64_t>& weights, const TransformOptions& opt) {
+  return power_map(weights.domain(), weights.values().data(), opt);
+}
+
+PowerMap power_map(const Domain& dom, const std::int64_t* weights, const TransformOptions& opt) {
   detail::require_finite_p(opt, "power map");
-  const Domain& dom = weights.domain();
-  std::int64_t wmax = detail::check_weights(weights);
+  std::int64_t wmax = detail::check_weights(dom, weights);
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(wmax));
   PowerMap map{dom, {}, std::vector<std::uint8_t>(static_cast<std::size_t>(dom.size()), 0)};
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {

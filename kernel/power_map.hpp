@@ -33,12 +33,16 @@ struct PowerMap {
 };
 
 PowerMap power_map(const Image<std::int64_t>& weights, const TransformOptions& opt = {});
+/// The same on weights read in place (no copy): dom.size() values in C order.
+PowerMap power_map(const Domain& dom, const std::int64_t* weights,
+                   const TransformOptions& opt = {});
 
 namespace detail {
 /// Throws for l_inf (the power map is not separable there).
 void require_finite_p(const TransformOptions& opt, const char* what);
 /// Checks weights >= 0 and returns the largest; InvalidArgument when no weight is > 0.
 std::int64_t check_weights(const Image<std::int64_t>& weights);
+std::int64_t check_weights(const Domain& dom, const std::int64_t* weights);
 } // namespace detail
 
 } // namespace zdg

@@ -10,17 +10,21 @@ namespace zdg {
 
 Image<std::uint8_t> reverse_distance_transform(const Image<std::int64_t>& values,
                                                const TransformOptions& opt) {
-  const Domain& dom = values.domain();
+  return reverse_distance_transform(values.domain(), values.values().data(), opt);
+}
+
+Image<std::uint8_t> reverse_distance_transform(const Domain& dom, const std::int64_t* v,
+                                               const TransformOptions& opt) {
   Image<std::uint8_t> out(dom, std::uint8_t{0});
-  const auto& v = values.values();
-  if (std::all_of(v.begin(), v.end(), [](std::int64_t x) { return x == 0; })) {
+  const std::int64_t* end = v + dom.size();
+  if (std::all_of(v, end, [](std::int64_t x) { return x == 0; })) {
     detail::envelope_bounds(dom, opt, BigInt(0)); // validates the options
     return out;
   }
-  std::int64_t wmax = detail::check_weights(values);
+  std::int64_t wmax = detail::check_weights(dom, v);
   if (opt.metric.is_inf()) {
     detail::envelope_bounds(dom, opt, BigInt(0)); // validates the options
-    std::vector<std::int64_t> r = v;
+    std::vector<std::int64_t> r(v, end);
     detail::linf_covering(dom, opt, r, nullptr);
     for (std::size_t i = 0; i < r.size(); ++i) out.values()[i] = r[i] > 0 ? 1 : 0;
     return out;

@@ -21,5 +21,8 @@ namespace zdg {
 
 Image<std::uint8_t> reverse_distance_transform(const Image<std::int64_t>& values,
                                                const TransformOptions& opt = {});
+/// The same on values read in place (no copy): dom.size() values in C order.
+Image<std::uint8_t> reverse_distance_transform(const Domain& dom, const std::int64_t* values,
+                                               const TransformOptions& opt = {});
 
 } // namespace zdg

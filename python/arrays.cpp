@@ -5,11 +5,12 @@
 // `a != 0` by numpy. The distance transform reads that buffer directly and writes into a
 // numpy array it allocates (zero-copy in and out; an F-ordered input is the C-ordered image
 // of the reversed axes, and the transform commutes with the permutation of axes, so its
-// result is returned F-ordered). The Voronoi map and the reduced medial axis read a C-ordered
-// mask in place too (the library's Domain + pointer overloads); the functions built on the
-// library's Image<uint8_t> (components, Betti numbers, thinning, surfels, curvature, meshes)
-// copy the mask once (1 byte a voxel), and the integer-valued inputs (reverse DT, power map)
-// are converted to int64 once. Results made by the library as vectors are handed to numpy
+// result is returned F-ordered). The Voronoi map and the reduced medial axis read such masks in
+// place too (the library's Domain + pointer overloads; F order through the reversed axes, the
+// site indices re-encoded), the reverse DT and the power map read C-contiguous int64 arrays in
+// place (other integer arrays are converted once); the functions built on the library's
+// Image<uint8_t> (components, Betti numbers, thinning, surfels, curvature, meshes) copy the
+// mask once (1 byte a voxel). Results made by the library as vectors are handed to numpy
 // without a copy (capsule-owned). Long computations run without the GIL.
 #include "python/common.hpp"
 
@@ -187,15 +188,35 @@ py::array distance_transform_py(const py::object& obj, const std::string& metric
 
 py::array voronoi_map_py(const py::object& obj, const std::string& metric, const py::object& torus,
                          unsigned threads) {
-  // Read in place (C order: the sites are C-order linear indices of the input's shape).
-  MaskView in = mask_view(obj, false, "voronoi_map");
+  // Read in place, C or F order. An F-ordered input is the C-ordered image of the reversed
+  // axes: the map is computed there, returned F-ordered, and each site index (a C-order
+  // index of the reversed shape) is re-encoded as the C-order index of the input's shape.
+  MaskView in = mask_view(obj, true, "voronoi_map");
   TransformOptions opt = transform_options(metric, torus, threads, in.shape.size());
+  if (in.fortran) std::reverse(opt.torus.begin(), opt.torus.end());
   const Domain dom(in.shape);
   VoronoiMap v = [&] {
     py::gil_scoped_release release;
-    return voronoi_map(dom, in.data, opt);
+    VoronoiMap r = voronoi_map(dom, in.data, opt);
+    if (in.fortran) {
+      const std::vector<std::int64_t> ext = in.shape; // reversed shape, C order
+      const std::size_t d = ext.size();
+      for (auto& s : r.site) {
+        // Coordinates in the reversed shape (last axis fastest), then C index of the input's
+        // shape (its axis k is the reversed shape's axis d - 1 - k).
+        std::int64_t rest = s, c = 0;
+        std::vector<std::int64_t> coord(d);
+        for (std::size_t k = d; k-- > 0;) {
+          coord[k] = rest % ext[k];
+          rest /= ext[k];
+        }
+        for (std::size_t k = d; k-- > 0;) c = c * ext[k] + coord[k];
+        s = c;
+      }
+    }
+    return r;
   }();
-  return owning_array(std::move(v.site), in.shape);
+  return owning_array(std::move(v.site), shape_of(in), in.fortran);
 }
 
 py::array reverse_distance_transform_py(const py::object& obj, const std::string& metric,
@@ -206,21 +227,22 @@ py::array reverse_distance_transform_py(const py::object& obj, const std::string
   if (a.ndim() == 0 || a.size() == 0) {
     throw InvalidArgument("reverse_distance_transform: an empty or 0-dimensional array");
   }
+  // ensure() returns the array itself when it is int64 and C-contiguous: read in place.
   std::vector<std::int64_t> shape(a.shape(), a.shape() + a.ndim());
-  Image<std::int64_t> values{Domain(shape),
-                             std::vector<std::int64_t>(a.data(), a.data() + a.size())};
+  const Domain dom(shape);
   TransformOptions opt = transform_options(metric, torus, threads, shape.size());
   Image<std::uint8_t> r = [&] {
     py::gil_scoped_release release;
-    return reverse_distance_transform(values, opt);
+    return reverse_distance_transform(dom, a.data(), opt);
   }();
   return owning_array(std::move(r.values()), shape);
 }
 
 py::tuple reduced_medial_axis_py(const py::object& obj, const std::string& metric,
                                  const py::object& torus, unsigned threads) {
-  MaskView in = mask_view(obj, false, "reduced_medial_axis"); // read in place
+  MaskView in = mask_view(obj, true, "reduced_medial_axis"); // read in place, C or F order
   TransformOptions opt = transform_options(metric, torus, threads, in.shape.size());
+  if (in.fortran) std::reverse(opt.torus.begin(), opt.torus.end());
   const Domain dom(in.shape);
   std::vector<MedialBall> balls = [&] {
     py::gil_scoped_release release;
@@ -231,8 +253,10 @@ py::tuple reduced_medial_axis_py(const py::object& obj, const std::string& metri
   std::vector<std::int64_t> centres(static_cast<std::size_t>(n * d)), values(balls.size());
   for (std::size_t i = 0; i < balls.size(); ++i) {
     for (std::int64_t k = 0; k < d; ++k) {
-      centres[i * static_cast<std::size_t>(d) + static_cast<std::size_t>(k)] =
-          balls[i].centre[static_cast<std::size_t>(k)];
+      // An F-ordered input was processed with its axes reversed: reverse the coordinates.
+      const std::size_t src =
+          in.fortran ? static_cast<std::size_t>(d - 1 - k) : static_cast<std::size_t>(k);
+      centres[i * static_cast<std::size_t>(d) + static_cast<std::size_t>(k)] = balls[i].centre[src];
     }
     values[i] = balls[i].value;
   }
@@ -248,13 +272,13 @@ py::tuple power_map_py(const py::object& obj, const std::string& metric, const p
   if (a.ndim() == 0 || a.size() == 0) {
     throw InvalidArgument("power_map: an empty or 0-dimensional array");
   }
+  // ensure() returns the array itself when it is int64 and C-contiguous: read in place.
   std::vector<std::int64_t> shape(a.shape(), a.shape() + a.ndim());
-  Image<std::int64_t> weights{Domain(shape),
-                              std::vector<std::int64_t>(a.data(), a.data() + a.size())};
+  const Domain dom(shape);
   TransformOptions opt = transform_options(metric, torus, threads, shape.size());
   PowerMap m = [&] {
     py::gil_scoped_release release;
-    return power_map(weights, opt);
+    return power_map(dom, a.data(), opt);
   }();
   return py::make_tuple(owning_array(std::move(m.site), shape),
                         owning_array(std::move(m.negative), shape));

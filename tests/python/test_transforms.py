@@ -223,3 +223,80 @@ def test_large_calls_do_not_copy_their_input(function, n, work):
     if work == 0:
         assert grown <= 1.05 * (inp + out), (inp, out, grown)
     assert grown <= 1.05 * (out + work * n**3) + 4 * 2**20, (inp, out, grown)
+
+
+def metric_distance(x, y, shape, torus, p):
+    d = []
+    for k in range(len(shape)):
+        t = abs(int(x[k]) - int(y[k]))
+        if torus[k]:
+            t = min(t, shape[k] - t)
+        d.append(t)
+    return max(d) if p == 0 else sum(t ** p for t in d)
+
+
+def test_voronoi_map_and_medial_axis_read_fortran_order_in_place():
+    """An F-ordered mask is read in place: its Voronoi sites (C-order indices of the array's
+    shape) are background points attaining the distance transform, as for the C-ordered copy
+    (ties may pick another site), and its medial balls rebuild the shape (reverse DT), with
+    torus flags following the axes."""
+    rng = np.random.default_rng(3)
+    for shape, torus in (((9, 13, 7), (True, False, False)), ((17, 11), (False, True))):
+        c = (rng.random(shape) < 0.9).astype(np.uint8)
+        c.flat[0] = 0
+        f = np.asfortranarray(c)
+        assert f.flags["F_CONTIGUOUS"] and not f.flags["C_CONTIGUOUS"]
+        for metric, p in (("l2", 2), ("l1", 1), ("linf", 0)):
+            dt = zdg.distance_transform(c, metric=metric, torus=torus)
+            for a in (c, f):
+                v = zdg.voronoi_map(a, metric=metric, torus=torus)
+                for x in np.ndindex(*shape):
+                    y = np.unravel_index(v[x], shape)
+                    assert c[y] == 0
+                    assert metric_distance(x, y, shape, torus, p) == dt[x], (shape, metric, x)
+                centres, values = zdg.reduced_medial_axis(a, metric=metric, torus=torus)
+                weights = np.zeros(shape, dtype=np.int64)
+                for ctr, val in zip(centres, values):
+                    weights[tuple(ctr)] = val
+                rebuilt = zdg.reverse_distance_transform(weights, metric=metric, torus=torus)
+                assert np.array_equal(rebuilt, c), (shape, metric)
+
+
+def test_power_map_and_reverse_dt_read_int64_weights_in_place():
+    rng = np.random.default_rng(4)
+    w = np.where(rng.random((40, 30)) < 0.05, rng.integers(1, 30, (40, 30)), 0)
+    for dtype in (np.int64, np.int32, np.uint8):
+        s, neg = zdg.power_map(w.astype(dtype))
+        s64, neg64 = zdg.power_map(w.astype(np.int64))
+        assert np.array_equal(s, s64) and np.array_equal(neg, neg64)
+        assert np.array_equal(zdg.reverse_distance_transform(w.astype(dtype)),
+                              zdg.reverse_distance_transform(w.astype(np.int64)))
+
+
+POWER_MEMORY = r"""
+import resource, sys
+import numpy as np
+import zdg
+n = 256
+w = np.zeros((n, n, n), dtype=np.int64)
+w[::37, ::41, ::43] = 50
+def peak():
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+base = peak()
+site, negative = zdg.power_map(w, threads=2)
+print(w.nbytes, site.nbytes + negative.nbytes, peak() - base)
+"""
+
+
+def test_power_map_does_not_copy_int64_weights():
+    """256^3 int64 weights (128 MB) read in place: the growth is the outputs (sites int64,
+    flags uint8) and the int32 working values, 13 bytes a voxel; a copy of the weights would
+    add 8 more."""
+    import subprocess
+    import sys
+    r = subprocess.run([sys.executable, "-c", POWER_MEMORY], capture_output=True, text=True,
+                       check=True)
+    inp, out, grown = (int(v) for v in r.stdout.split())
+    n3 = 256**3
+    assert out == 9 * n3
+    assert grown <= 1.05 * (out + 4 * n3) + 4 * 2**20, (inp, out, grown)
