@@ -40,9 +40,15 @@ void require_background(const Image<std::uint8_t>& shape, const TransformOptions
   require_background(shape.domain(), shape.values().data(), opt);
 }
 
-void require_background(const Domain& dom, const std::uint8_t* mask, const TransformOptions& opt) {
-  const std::uint8_t* end = mask + dom.size();
-  if (std::find(mask, end, std::uint8_t{0}) == end) {
+void require_background(const Domain& dom, const std::uint8_t* mask, const TransformOptions& opt,
+                        int mask_item_bytes) {
+  const auto item = static_cast<std::int64_t>(mask_item_bytes);
+  bool found = false;
+  for (std::int64_t i = 0; i < dom.size() && !found; ++i) {
+    const std::uint8_t* p = mask + i * item;
+    found = std::all_of(p, p + item, [](std::uint8_t b) { return b == 0; });
+  }
+  if (!found) {
     bool torus = std::any_of(opt.torus.begin(), opt.torus.end(), [](bool b) { return b; });
     throw InvalidArgument(std::string("distance transform: the image has no background point "
                                       "(value 0)") +

@@ -34,7 +34,9 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
 
 /// Throws InvalidArgument when `shape` has no background point (value 0).
 void require_background(const Image<std::uint8_t>& shape, const TransformOptions& opt);
-/// The same for a mask of dom.size() bytes in C order read in place.
-void require_background(const Domain& dom, const std::uint8_t* mask, const TransformOptions& opt);
+/// The same for a mask of dom.size() items of mask_item_bytes bytes (1, 2, 4, 8) in C order
+/// read in place (an item is background when all its bytes are 0).
+void require_background(const Domain& dom, const std::uint8_t* mask, const TransformOptions& opt,
+                        int mask_item_bytes = 1);
 
 } // namespace zdg

@@ -5,6 +5,8 @@
 #include <zdg/kernel/power_map.hpp>
 #include <zdg/kernel/separable_engine.hpp>
 
+#include <algorithm>
+
 namespace zdg {
 
 std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
@@ -13,15 +15,20 @@ std::vector<MedialBall> reduced_medial_axis(const Image<std::uint8_t>& shape,
 }
 
 std::vector<MedialBall> reduced_medial_axis(const Domain& dom, const std::uint8_t* mask,
-                                            const TransformOptions& opt) {
+                                            const TransformOptions& opt, int mask_item_bytes) {
   auto dt_bounds = detail::envelope_bounds(dom, opt, BigInt(0));
-  require_background(dom, mask, opt);
+  require_background(dom, mask, opt, mask_item_bytes);
+  const auto item = static_cast<std::size_t>(mask_item_bytes);
+  auto object = [&](std::size_t i) {
+    const std::uint8_t* p = mask + i * item;
+    return std::any_of(p, p + item, [](std::uint8_t b) { return b != 0; });
+  };
   auto bounds = detail::envelope_bounds(dom, opt, dt_bounds.value_max);
   std::vector<MedialBall> balls;
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
     V inf = detail::envelope_infinity<V>(bounds);
     std::vector<V> dt(static_cast<std::size_t>(dom.size()));
-    detail::separable_envelope<V>(dom, opt, mask, dt.data(), inf, nullptr);
+    detail::separable_envelope<V>(dom, opt, mask, dt.data(), inf, nullptr, mask_item_bytes);
     std::vector<std::int64_t> site;
     if (opt.metric.is_inf()) {
       // l_inf: the centre of the largest cube covering each point (DT values fit int64:
@@ -42,7 +49,7 @@ std::vector<MedialBall> reduced_medial_axis(const Domain& dom, const std::uint8_
     }
     std::vector<std::uint8_t> kept(dt.size(), 0);
     for (std::size_t i = 0; i < dt.size(); ++i) {
-      if (mask[i] != 0) kept[static_cast<std::size_t>(site[i])] = 1;
+      if (object(i)) kept[static_cast<std::size_t>(site[i])] = 1;
     }
     for (std::size_t i = 0; i < kept.size(); ++i) {
       if (kept[i] == 0) continue;

@@ -283,74 +283,92 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
 // the nearest point with mask == 0 (two scans), turned into its metric length.
 template <int K, class V>
 void mask_pass(const Domain& dom, bool periodic, const LineMetric<K, V>& m,
-               const std::uint8_t* mask, V* f, const V& inf, std::vector<std::int64_t>* sites,
-               unsigned threads) {
+               const std::uint8_t* mask, int item, V* f, const V& inf,
+               std::vector<std::int64_t>* sites, unsigned threads) {
   const int a = dom.dim() - 1;
   const std::int64_t n = dom.extent(a), lines = dom.size() / n;
   V* fp = f;
   std::int64_t* sp = sites != nullptr ? sites->data() : nullptr;
   const V zero{};
-  parallel_chunks(lines, threads, [&](std::int64_t begin, std::int64_t end) {
-    std::vector<std::int64_t> dist(static_cast<std::size_t>(n)), near(static_cast<std::size_t>(n));
-    for (std::int64_t line = begin; line < end; ++line) {
-      const std::int64_t base = line * n;
-      const std::uint8_t* mk = mask + base;
-      std::int64_t z = -1;
-      for (std::int64_t x = 0; x < n && z < 0; ++x) {
-        if (mk[x] == 0) z = x;
-      }
-      if (z < 0) {
-        for (std::int64_t x = 0; x < n; ++x) {
-          fp[base + x] = inf;
-          if (sp != nullptr) sp[base + x] = -1;
+  // site_at(mk, x): point x of the line starting at mk is a site (every byte of its item is
+  // 0). The loops are compiled twice: for one-byte items (the common case, kept as fast as a
+  // plain byte test) and for wider ones.
+  auto lines_with = [&](auto site_at) {
+    parallel_chunks(lines, threads, [&](std::int64_t begin, std::int64_t end) {
+      std::vector<std::int64_t> dist(static_cast<std::size_t>(n)),
+          near(static_cast<std::size_t>(n));
+      for (std::int64_t line = begin; line < end; ++line) {
+        const std::int64_t base = line * n;
+        const std::uint8_t* mk = mask + base * item;
+        auto site = [&](std::int64_t x) { return site_at(mk, x); };
+        std::int64_t z = -1;
+        for (std::int64_t x = 0; x < n && z < 0; ++x) {
+          if (site(x)) z = x;
         }
-        continue;
-      }
-      if (!periodic) {
-        std::int64_t last = -1;
-        for (std::int64_t x = 0; x < n; ++x) {
-          if (mk[x] == 0) last = x;
-          near[static_cast<std::size_t>(x)] = last;
-          dist[static_cast<std::size_t>(x)] = last < 0 ? n : x - last;
+        if (z < 0) {
+          for (std::int64_t x = 0; x < n; ++x) {
+            fp[base + x] = inf;
+            if (sp != nullptr) sp[base + x] = -1;
+          }
+          continue;
         }
-        last = -1;
-        for (std::int64_t x = n; x-- > 0;) {
-          if (mk[x] == 0) last = x;
-          if (last >= 0 && last - x < dist[static_cast<std::size_t>(x)]) {
-            dist[static_cast<std::size_t>(x)] = last - x;
+        if (!periodic) {
+          std::int64_t last = -1;
+          for (std::int64_t x = 0; x < n; ++x) {
+            if (site(x)) last = x;
             near[static_cast<std::size_t>(x)] = last;
+            dist[static_cast<std::size_t>(x)] = last < 0 ? n : x - last;
           }
-        }
-      } else {
-        // Around the circle from the zero z: forward, then backward.
-        std::int64_t last = 0;
-        for (std::int64_t k = 0; k < n; ++k) {
-          std::int64_t x = (z + k) % n;
-          if (mk[x] == 0) last = k;
-          near[static_cast<std::size_t>(x)] = (z + last) % n;
-          dist[static_cast<std::size_t>(x)] = k - last;
-        }
-        last = 0;
-        for (std::int64_t k = 0; k < n; ++k) {
-          std::int64_t x = ((z - k) % n + n) % n;
-          if (mk[x] == 0) last = k;
-          if (k - last < dist[static_cast<std::size_t>(x)]) {
+          last = -1;
+          for (std::int64_t x = n; x-- > 0;) {
+            if (site(x)) last = x;
+            if (last >= 0 && last - x < dist[static_cast<std::size_t>(x)]) {
+              dist[static_cast<std::size_t>(x)] = last - x;
+              near[static_cast<std::size_t>(x)] = last;
+            }
+          }
+        } else {
+          // Around the circle from the zero z: forward, then backward.
+          std::int64_t last = 0;
+          for (std::int64_t k = 0; k < n; ++k) {
+            std::int64_t x = (z + k) % n;
+            if (site(x)) last = k;
+            near[static_cast<std::size_t>(x)] = (z + last) % n;
             dist[static_cast<std::size_t>(x)] = k - last;
-            near[static_cast<std::size_t>(x)] = ((z - last) % n + n) % n;
+          }
+          last = 0;
+          for (std::int64_t k = 0; k < n; ++k) {
+            std::int64_t x = ((z - k) % n + n) % n;
+            if (site(x)) last = k;
+            if (k - last < dist[static_cast<std::size_t>(x)]) {
+              dist[static_cast<std::size_t>(x)] = k - last;
+              near[static_cast<std::size_t>(x)] = ((z - last) % n + n) % n;
+            }
           }
         }
+        for (std::int64_t x = 0; x < n; ++x) {
+          fp[base + x] = m.eval(zero, dist[static_cast<std::size_t>(x)]);
+          if (sp != nullptr) sp[base + x] = base + near[static_cast<std::size_t>(x)];
+        }
       }
-      for (std::int64_t x = 0; x < n; ++x) {
-        fp[base + x] = m.eval(zero, dist[static_cast<std::size_t>(x)]);
-        if (sp != nullptr) sp[base + x] = base + near[static_cast<std::size_t>(x)];
+    });
+  };
+  if (item == 1) {
+    lines_with([](const std::uint8_t* mk, std::int64_t x) { return mk[x] == 0; });
+  } else {
+    lines_with([item](const std::uint8_t* mk, std::int64_t x) {
+      const std::uint8_t* p = mk + x * item;
+      for (int b = 0; b < item; ++b) {
+        if (p[b] != 0) return false;
       }
-    }
-  });
+      return true;
+    });
+  }
 }
 
 template <int K, class V>
-void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask, V* f,
-                const V& inf, std::vector<std::int64_t>* sites, const std::vector<V>& pw) {
+void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask, int item,
+                V* f, const V& inf, std::vector<std::int64_t>* sites, const std::vector<V>& pw) {
   LineMetric<K, V> m;
   m.pw = pw.data();
   m.p = opt.metric.p;
@@ -358,7 +376,7 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
   const unsigned threads = resolve_threads(opt.threads, dom.size());
   const int d = dom.dim();
   if (mask != nullptr) {
-    mask_pass(dom, opt.periodic(d - 1), m, mask, f, inf, sites, threads);
+    mask_pass(dom, opt.periodic(d - 1), m, mask, item, f, inf, sites, threads);
   } else {
     if (sites != nullptr) {
       sites->resize(static_cast<std::size_t>(dom.size()));
@@ -448,16 +466,21 @@ V envelope_infinity(const EnvelopeBounds& b) {
 
 template <class V>
 void separable_envelope(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
-                        V* f, const V& inf, std::vector<std::int64_t>* sites) {
+                        V* f, const V& inf, std::vector<std::int64_t>* sites, int mask_item_bytes) {
+  if (mask_item_bytes != 1 && mask_item_bytes != 2 && mask_item_bytes != 4 &&
+      mask_item_bytes != 8) {
+    throw InvalidArgument("transform: mask items of " + std::to_string(mask_item_bytes) +
+                          " bytes (1, 2, 4 or 8 supported)");
+  }
   if (sites != nullptr) sites->resize(static_cast<std::size_t>(dom.size()));
   const Metric& mt = opt.metric;
   std::vector<V> pw;
   if (mt.is_inf()) {
-    run_passes<kLinf>(dom, opt, mask, f, inf, sites, pw);
+    run_passes<kLinf>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw);
   } else if (mt.p == 1) {
-    run_passes<kL1>(dom, opt, mask, f, inf, sites, pw);
+    run_passes<kL1>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw);
   } else if (mt.p == 2) {
-    run_passes<kL2>(dom, opt, mask, f, inf, sites, pw);
+    run_passes<kL2>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw);
   } else {
     std::int64_t lmax = 1;
     for (int k = 0; k < dom.dim(); ++k) {
@@ -474,14 +497,14 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt, const st
       }
       pw[static_cast<std::size_t>(t)] = v;
     }
-    run_passes<kLp>(dom, opt, mask, f, inf, sites, pw);
+    run_passes<kLp>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw);
   }
 }
 
 #define ZDG_ENGINE_INSTANTIATE(V)                                                                  \
   template V envelope_infinity<V>(const EnvelopeBounds&);                                          \
   template void separable_envelope<V>(const Domain&, const TransformOptions&, const std::uint8_t*, \
-                                      V*, const V&, std::vector<std::int64_t>*);
+                                      V*, const V&, std::vector<std::int64_t>*, int);
 ZDG_ENGINE_INSTANTIATE(std::int32_t)
 ZDG_ENGINE_INSTANTIATE(std::int64_t)
 ZDG_ENGINE_INSTANTIATE(int128_t)

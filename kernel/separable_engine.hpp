@@ -59,12 +59,15 @@ template <class V>
 V envelope_infinity(const EnvelopeBounds& b);
 
 /// Runs the passes in place on f[0, N). mask != nullptr: f is overwritten with the
-/// transform of the sites {mask == 0} (all of weight 0). Otherwise f holds F_0 (inf where
+/// transform of the sites {mask == 0} (all of weight 0); the mask has N items of
+/// mask_item_bytes bytes (1, 2, 4 or 8: a point is a site when all its bytes are 0, so any
+/// integer or bool array serves in place). Otherwise f holds F_0 (inf where
 /// no site). sites (optional): on output the linear index of a minimising site (-1 where
 /// there is none); in value mode it is initialised here.
 template <class V>
 void separable_envelope(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
-                        V* f, const V& inf, std::vector<std::int64_t>* sites);
+                        V* f, const V& inf, std::vector<std::int64_t>* sites,
+                        int mask_item_bytes = 1);
 
 /// Calls fn(std::type_identity<V>{}) with the engine type of width w.
 template <class Fn>
@@ -95,7 +98,7 @@ BigInt engine_to_bigint(const V& v) {
   extern template V envelope_infinity<V>(const EnvelopeBounds&);                                   \
   extern template void separable_envelope<V>(const Domain&, const TransformOptions&,               \
                                              const std::uint8_t*, V*, const V&,                    \
-                                             std::vector<std::int64_t>*);
+                                             std::vector<std::int64_t>*, int);
 ZDG_ENGINE_EXTERN(std::int32_t)
 ZDG_ENGINE_EXTERN(std::int64_t)
 ZDG_ENGINE_EXTERN(int128_t)

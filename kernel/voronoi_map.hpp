@@ -31,8 +31,9 @@ struct VoronoiMap {
 };
 
 VoronoiMap voronoi_map(const Image<std::uint8_t>& shape, const TransformOptions& opt = {});
-/// The same on a mask read in place (no copy): dom.size() bytes in C order, nonzero = object.
+/// The same on a mask read in place (no copy): dom.size() items of mask_item_bytes bytes (1, 2,
+/// 4 or 8) in C order, nonzero = object.
 VoronoiMap voronoi_map(const Domain& dom, const std::uint8_t* mask,
-                       const TransformOptions& opt = {});
+                       const TransformOptions& opt = {}, int mask_item_bytes = 1);
 
 } // namespace zdg

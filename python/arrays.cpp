@@ -1,9 +1,10 @@
 // The Python module zdg._zdg, part 2: numpy arrays in and out.
 //
-// Binary images: any numpy array; nonzero = object (foreground). A bool, int8 or uint8 array
-// that is C- or F-contiguous is read in place (no copy); any other one is first reduced to
-// `a != 0` by numpy. The distance transform reads that buffer directly and writes into a
-// numpy array it allocates (zero-copy in and out; an F-ordered input is the C-ordered image
+// Binary images: any numpy array; nonzero = object (foreground). A bool or integer array (1,
+// 2, 4 or 8 bytes a value) that is C- or F-contiguous is read in place (no copy: a value is 0
+// iff all its bytes are, whatever the byte order); any other one (floats, strided views) is
+// first reduced to `a != 0` by numpy. The distance transform reads that buffer directly and writes
+// into a numpy array it allocates (zero-copy in and out; an F-ordered input is the C-ordered image
 // of the reversed axes, and the transform commutes with the permutation of axes, so its
 // result is returned F-ordered). The Voronoi map and the reduced medial axis read such masks in
 // place too (the library's Domain + pointer overloads; F order through the reversed axes, the
@@ -50,6 +51,7 @@ namespace {
 /// of `shape`; `fortran`: the array is F-ordered and `shape` is its reversed shape.
 struct MaskView {
   const std::uint8_t* data = nullptr;
+  int item = 1; // bytes per point (1, 2, 4 or 8): a point is background when all are 0
   std::vector<std::int64_t> shape;
   bool fortran = false;
   py::array keep; // the array that owns `data`
@@ -58,11 +60,22 @@ struct MaskView {
     for (auto e : shape) n *= e;
     return n;
   }
+  /// Point i is object (some byte nonzero).
+  bool object(std::int64_t i) const {
+    const std::uint8_t* p = data + i * item;
+    for (int b = 0; b < item; ++b) {
+      if (p[b] != 0) return true;
+    }
+    return false;
+  }
 };
 
-bool one_byte_integral(const py::array& a) {
-  char kind = a.dtype().kind();
-  return a.itemsize() == 1 && (kind == 'b' || kind == 'i' || kind == 'u');
+/// A bool or integer dtype of 1, 2, 4 or 8 bytes: read in place, whatever its byte order (a
+/// value is 0 iff all its bytes are).
+bool integral_in_place(const py::array& a) {
+  const char kind = a.dtype().kind();
+  const auto s = a.itemsize();
+  return (kind == 'b' || kind == 'i' || kind == 'u') && (s == 1 || s == 2 || s == 4 || s == 8);
 }
 
 MaskView mask_view(const py::object& obj, bool allow_fortran, const char* what) {
@@ -71,7 +84,7 @@ MaskView mask_view(const py::object& obj, bool allow_fortran, const char* what) 
   if (a.ndim() == 0) throw InvalidArgument(std::string(what) + ": a 0-dimensional array");
   if (a.size() == 0) throw InvalidArgument(std::string(what) + ": an empty array");
   bool c = (a.flags() & py::array::c_style) != 0, f = (a.flags() & py::array::f_style) != 0;
-  if (!one_byte_integral(a) || !(c || (allow_fortran && f))) {
+  if (!integral_in_place(a) || !(c || (allow_fortran && f))) {
     py::module_ np = py::module_::import("numpy");
     py::array nz = np.attr("not_equal")(a, 0);
     a = np.attr("ascontiguousarray")(nz);
@@ -80,6 +93,7 @@ MaskView mask_view(const py::object& obj, bool allow_fortran, const char* what) 
   MaskView v;
   v.keep = a;
   v.data = static_cast<const std::uint8_t*>(a.data());
+  v.item = static_cast<int>(a.itemsize());
   v.fortran = !c;
   for (py::ssize_t k = 0; k < a.ndim(); ++k) v.shape.push_back(a.shape(k));
   if (v.fortran) std::reverse(v.shape.begin(), v.shape.end());
@@ -91,10 +105,9 @@ Image<std::uint8_t> image_of(const py::object& obj, const char* what) {
   MaskView v = mask_view(obj, false, what);
   Image<std::uint8_t> img{Domain(v.shape)};
   std::uint8_t* out = img.values().data();
-  const std::uint8_t* in = v.data;
   const std::int64_t n = img.size();
   py::gil_scoped_release release;
-  for (std::int64_t i = 0; i < n; ++i) out[i] = in[i] != 0 ? 1 : 0;
+  for (std::int64_t i = 0; i < n; ++i) out[i] = v.object(i) ? 1 : 0;
   return img;
 }
 
@@ -137,7 +150,7 @@ py::array engine_array(const MaskView& in, const Domain& dom, const TransformOpt
   {
     py::gil_scoped_release release;
     V inf = detail::envelope_infinity<V>(bounds);
-    detail::separable_envelope<V>(dom, opt, in.data, f, inf, nullptr);
+    detail::separable_envelope<V>(dom, opt, in.data, f, inf, nullptr, in.item);
   }
   return out;
 }
@@ -150,13 +163,7 @@ py::array distance_transform_py(const py::object& obj, const std::string& metric
   if (in.fortran) std::reverse(opt.torus.begin(), opt.torus.end());
   Domain dom(in.shape);
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
-  if (std::memchr(in.data, 0, static_cast<std::size_t>(in.size())) == nullptr) {
-    bool periodic = std::any_of(opt.torus.begin(), opt.torus.end(), [](bool b) { return b; });
-    throw InvalidArgument(std::string("distance transform: the image has no background point "
-                                      "(value 0)") +
-                          (periodic ? ", also on the torus" : "") +
-                          ": every distance would be infinite");
-  }
+  require_background(dom, in.data, opt, in.item);
   switch (bounds.width) {
   case detail::ValueWidth::I32:
     return engine_array<std::int32_t>(in, dom, opt, bounds);
@@ -167,7 +174,7 @@ py::array distance_transform_py(const py::object& obj, const std::string& metric
   }
   // Values beyond 64 bits (large p): exact Python ints in an object array.
   Image<std::uint8_t> img{dom};
-  std::memcpy(img.values().data(), in.data, static_cast<std::size_t>(in.size()));
+  for (std::int64_t i = 0; i < in.size(); ++i) img.values()[std::size_t(i)] = in.object(i) ? 1 : 0;
   Image<BigInt> big = [&] {
     py::gil_scoped_release release;
     return distance_transform<BigInt>(img, opt);
@@ -197,7 +204,7 @@ py::array voronoi_map_py(const py::object& obj, const std::string& metric, const
   const Domain dom(in.shape);
   VoronoiMap v = [&] {
     py::gil_scoped_release release;
-    VoronoiMap r = voronoi_map(dom, in.data, opt);
+    VoronoiMap r = voronoi_map(dom, in.data, opt, in.item);
     if (in.fortran) {
       const std::vector<std::int64_t> ext = in.shape; // reversed shape, C order
       const std::size_t d = ext.size();
@@ -246,7 +253,7 @@ py::tuple reduced_medial_axis_py(const py::object& obj, const std::string& metri
   const Domain dom(in.shape);
   std::vector<MedialBall> balls = [&] {
     py::gil_scoped_release release;
-    return reduced_medial_axis(dom, in.data, opt);
+    return reduced_medial_axis(dom, in.data, opt, in.item);
   }();
   const auto n = static_cast<std::int64_t>(balls.size());
   const std::int64_t d = static_cast<std::int64_t>(in.shape.size());

@@ -81,6 +81,37 @@ TEST(VoronoiMap, InPlaceMaskOfAnyNonzeroBytesAgrees) {
   EXPECT_THROW(voronoi_map(dom, full.data(), {}), InvalidArgument);
 }
 
+// Masks of wider items (2, 4, 8 bytes a point, as numpy's integer arrays) are read in place:
+// a point is background when all its bytes are 0, so a value whose low byte is 0 (256, 2^24,
+// 2^40) is object. Oracle: the byte mask of the same points.
+TEST(VoronoiMap, WideMaskItemsAgreeWithTheByteMask) {
+  Domain dom({19, 27});
+  std::mt19937 rng(5);
+  std::vector<std::uint8_t> binary(static_cast<std::size_t>(dom.size()));
+  for (auto& b : binary) b = rng() % 7 == 0 ? 0 : 1;
+  const Image<std::uint8_t> shape(dom, binary);
+  auto check = [&]<class T>(T big) {
+    std::vector<T> wide(binary.size());
+    for (std::size_t i = 0; i < wide.size(); ++i) wide[i] = binary[i] ? big : T(0);
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(wide.data());
+    for (int p : {1, 2, 0}) {
+      TransformOptions opt;
+      opt.metric = Metric{p};
+      opt.torus = {false, true};
+      EXPECT_EQ(voronoi_map(dom, bytes, opt, int(sizeof(T))).site, voronoi_map(shape, opt).site)
+          << sizeof(T) << " " << p;
+      EXPECT_EQ(reduced_medial_axis(dom, bytes, opt, int(sizeof(T))),
+                reduced_medial_axis(shape, opt))
+          << sizeof(T) << " " << p;
+    }
+  };
+  check(std::uint16_t{256});
+  check(std::int32_t{1} << 24);
+  check(std::int64_t{1} << 40);
+  std::vector<std::uint8_t> bytes(3 * binary.size(), 1);
+  EXPECT_THROW(voronoi_map(dom, bytes.data(), {}, 3), InvalidArgument);
+}
+
 TEST(VoronoiMap, NoBackgroundIsAnError) {
   Image<std::uint8_t> full(Domain({2, 2, 2}), std::uint8_t{7});
   EXPECT_THROW(voronoi_map(full, {}), InvalidArgument);
