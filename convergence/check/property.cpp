@@ -168,6 +168,39 @@ void shrink(const Property& p, const Params& params, const Options& opt, AnswerS
 
 } // namespace
 
+void AnswerSource::send_all(const Property&, const std::vector<Record>& requests) {
+  kept_ = requests;
+}
+
+Answers AnswerSource::receive_all(const Property& p, const std::vector<Record>& schemas) {
+  Answers a;
+  for (std::size_t j = 0; j < kept_.size(); ++j) {
+    try {
+      a.got.push_back(answer(p, kept_[j], schemas[j]));
+    } catch (const ExternalFailure& e) {
+      a.failure = e.what();
+      break;
+    }
+  }
+  kept_.clear();
+  return a;
+}
+
+Verdict judge_answer(const Property& p, const Record& c, Record expected, Record got) {
+  Verdict v;
+  // The theorem on the answer first (its message says what is wrong), then the oracle.
+  std::optional<std::string> why;
+  if (p.judge) why = p.judge(c, expected, got);
+  if (!why) why = equal_fields(expected, got);
+  if (why) {
+    v.holds = false;
+    v.why = *why;
+  }
+  v.expected = std::move(expected);
+  v.got = std::move(got);
+  return v;
+}
+
 Verdict evaluate(const Property& p, const Record& c, IntKind type, AnswerSource* external) {
   Verdict v;
   if (p.is_operation()) {
@@ -191,17 +224,7 @@ Verdict evaluate(const Property& p, const Record& c, IntKind type, AnswerSource*
         return v;
       }
     }
-    // The theorem on the answer first (its message says what is wrong), then the oracle.
-    std::optional<std::string> why;
-    if (p.judge) why = p.judge(c, expected, got);
-    if (!why) why = equal_fields(expected, got);
-    if (why) {
-      v.holds = false;
-      v.why = *why;
-    }
-    v.expected = std::move(expected);
-    v.got = std::move(got);
-    return v;
+    return judge_answer(p, c, std::move(expected), std::move(got));
   }
   std::optional<std::string> why;
   try {
@@ -284,34 +307,75 @@ Report run_check(const Property& p, const Params& params, const Options& opt) {
     std::unique_ptr<AnswerSource> ext;
     if (opt.external) ext = opt.external();
     auto last_progress = Clock::now();
-    for (;;) {
-      const std::int64_t k = next.fetch_add(1);
-      if (k >= opt.runs || k > first_fail.load()) return;
-      if (opt.time_budget_s > 0 && seconds_since(t0) > opt.time_budget_s) {
-        out_of_time = true;
-        return;
-      }
-      const std::uint64_t s = case_seed(opt.seed, static_cast<std::uint64_t>(k));
-      Rng rng(s);
-      Record c = p.generate(rng, params);
-      Outcome o = evaluate_caught(p, c, params.type, ext.get());
+    const std::int64_t block = ext && p.is_operation() ? std::max<std::int64_t>(opt.batch, 1) : 1;
+    auto record = [&](std::int64_t k, std::uint64_t s, const Record& c, Outcome o) {
       done.fetch_add(1);
       if (o.verdict.holds) {
         if (o.verdict.got) {
           int i = served_index(*o.verdict.got);
           if (i >= 0) served[static_cast<std::size_t>(i)].fetch_add(1);
         }
+        return;
+      }
+      std::lock_guard<std::mutex> lock(m);
+      if (k < first_fail.load()) {
+        first_fail = k;
+        Failure f;
+        f.index = k;
+        f.token = make_token(params, s);
+        f.original = c;
+        f.verdict = std::move(o.verdict);
+        f.external_error = o.external_error;
+        failure = std::move(f);
+      }
+    };
+    for (;;) {
+      const std::int64_t k0 = next.fetch_add(block);
+      if (k0 >= opt.runs || k0 > first_fail.load()) return;
+      if (opt.time_budget_s > 0 && seconds_since(t0) > opt.time_budget_s) {
+        out_of_time = true;
+        return;
+      }
+      const std::int64_t k1 = std::min(opt.runs, k0 + block);
+      if (block == 1) {
+        const std::uint64_t s = case_seed(opt.seed, static_cast<std::uint64_t>(k0));
+        Rng rng(s);
+        Record c = p.generate(rng, params);
+        record(k0, s, c, evaluate_caught(p, c, params.type, ext.get()));
       } else {
-        std::lock_guard<std::mutex> lock(m);
-        if (k < first_fail.load()) {
-          first_fail = k;
-          Failure f;
-          f.index = k;
-          f.token = make_token(params, s);
-          f.original = c;
-          f.verdict = o.verdict;
-          f.external_error = o.external_error;
-          failure = std::move(f);
+        // A batch of requests in flight: the command answers while the oracle works.
+        std::vector<std::uint64_t> seeds;
+        std::vector<Record> cases, expected, requests;
+        for (std::int64_t k = k0; k < k1; ++k) {
+          seeds.push_back(case_seed(opt.seed, static_cast<std::uint64_t>(k)));
+          Rng rng(seeds.back());
+          cases.push_back(p.generate(rng, params));
+          requests.push_back(p.request_of(cases.back()));
+        }
+        ext->send_all(p, requests);
+        for (const auto& c : cases) {
+          try {
+            expected.push_back(p.oracle(c));
+          } catch (const Error& e) {
+            throw InvalidArgument("check: the oracle of " + p.name + " refused the case " +
+                                  to_json(c) + ": " + e.what());
+          }
+        }
+        Answers a = ext->receive_all(p, expected);
+        for (std::size_t j = 0; j < cases.size(); ++j) {
+          const auto k = k0 + static_cast<std::int64_t>(j);
+          if (j < a.got.size()) {
+            record(k, seeds[j], cases[j],
+                   {judge_answer(p, cases[j], std::move(expected[j]), std::move(a.got[j])), false});
+          } else {
+            if (a.failure) {
+              Verdict v;
+              v.holds = false;
+              v.why = *a.failure;
+              record(k, seeds[j], cases[j], {std::move(v), true});
+            }
+            break; // the command is gone: the later cases are not run
+          }
         }
       }
       if (id == 0 && opt.progress && seconds_since(last_progress) > 0.25) {

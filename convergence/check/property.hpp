@@ -99,7 +99,20 @@ const Property& find_property(const std::string& name);
 /// such, never shrunk as a counterexample.
 class ExternalFailure : public std::runtime_error {
 public:
-  using std::runtime_error::runtime_error;
+  explicit ExternalFailure(const std::string& what, std::size_t at = 0)
+      : std::runtime_error(what), at_(at) {}
+  /// The request (of a batch) the command failed on.
+  std::size_t at() const { return at_; }
+
+private:
+  std::size_t at_;
+};
+
+/// The answers to a batch of requests: got[j] answers request j; when the command failed, it
+/// failed on request got.size() and `failure` says how.
+struct Answers {
+  std::vector<Record> got;
+  std::optional<std::string> failure;
 };
 
 /// Answers requests on behalf of an external command (one per worker thread). `schema` is the
@@ -108,11 +121,24 @@ class AnswerSource {
 public:
   virtual ~AnswerSource() = default;
   virtual Record answer(const Property& p, const Record& request, const Record& schema) = 0;
+  /// A batch, in two halves: send_all hands the requests over (an external command starts on
+  /// them while zdg computes the oracle's answers), receive_all returns the answers in order
+  /// (schemas[j] for request j). The round trip of one line is then not paid per request.
+  /// Default: send_all keeps the requests, receive_all asks them one by one.
+  virtual void send_all(const Property& p, const std::vector<Record>& requests);
+  virtual Answers receive_all(const Property& p, const std::vector<Record>& schemas);
+
+private:
+  std::vector<Record> kept_;
 };
 using AnswerSourceFactory = std::function<std::unique_ptr<AnswerSource>()>;
 
 /// Evaluates one case: zdg's own answer (external == nullptr) or the external one.
 Verdict evaluate(const Property& p, const Record& c, IntKind type, AnswerSource* external);
+
+/// The judgement of an operation's answer `got` to case c, the oracle having answered
+/// `expected` (the property's judge, then field-by-field equality).
+Verdict judge_answer(const Property& p, const Record& c, Record expected, Record got);
 
 struct Options {
   std::uint64_t seed = 1;
@@ -120,6 +146,7 @@ struct Options {
   double time_budget_s = 0; // 0: none
   unsigned threads = 1;     // 0: all cores
   std::int64_t max_shrink_attempts = 20000;
+  std::int64_t batch = 64; // requests in flight to an external command
   double max_shrink_s = 120;
   AnswerSourceFactory external; // empty: zdg's own answers
   /// Called now and then by one worker with the number of cases done (may be empty).

@@ -128,7 +128,7 @@ void ExternalCommand::stop() {
   }
 }
 
-void ExternalCommand::died(const std::string& when) {
+void ExternalCommand::died(const std::string& when, std::size_t at) {
   int status = 0;
   pid_t r = 0;
   const auto deadline = Clock::now() + std::chrono::milliseconds(500);
@@ -146,80 +146,161 @@ void ExternalCommand::died(const std::string& when) {
     pid_ = -1;
   }
   stop();
-  throw check::ExternalFailure("the external command " + what + " " + when + " (crash)");
+  throw check::ExternalFailure("the external command " + what + " " + when + " (crash)", at);
 }
 
 std::string ExternalCommand::exchange(const std::string& line) {
+  return exchange_all({line}).at(0);
+}
+
+void ExternalCommand::send(const std::vector<std::string>& lines) {
   if (pid_ < 0) throw check::ExternalFailure("the external command is not running");
-  const auto deadline =
-      Clock::now() + std::chrono::milliseconds(static_cast<long long>(timeout_s_ * 1000));
+  for (const auto& l : lines) {
+    pending_ += l;
+    pending_ += '\n';
+    in_flight_.push_back(l);
+  }
+  // What the pipe takes now; the rest goes while the answers are read.
+  while (!pending_.empty()) {
+    const ssize_t w = ::write(to_child_, pending_.data(), pending_.size());
+    if (w <= 0) break; // EAGAIN (pipe full), EPIPE (reported when reading), EINTR
+    pending_.erase(0, static_cast<std::size_t>(w));
+  }
+}
+
+std::vector<std::string> ExternalCommand::receive() {
+  std::vector<std::string> answers;
+  const std::size_t want = in_flight_.size();
+  const auto timeout = std::chrono::milliseconds(static_cast<long long>(timeout_s_ * 1000));
+  auto deadline = Clock::now() + timeout; // renewed by every answer
+  auto request = [&]() { return cut(in_flight_[answers.size()]); };
+  auto fail_at = [&]() {
+    const std::size_t at = answers.size();
+    in_flight_.clear();
+    pending_.clear();
+    return at;
+  };
   auto hang = [&]() {
+    const std::string req = request();
     ::kill(-pid_, SIGKILL);
     int status = 0;
     ::waitpid(pid_, &status, 0);
     pid_ = -1;
     stop();
+    const std::size_t at = fail_at();
     throw check::ExternalFailure("the external command did not answer within " +
-                                 std::to_string(timeout_s_) +
-                                 " s (--request-timeout): killed (hang)");
+                                     std::to_string(timeout_s_) +
+                                     " s (--request-timeout): killed (hang) at the request " + req,
+                                 at);
   };
-  const std::string data = line + "\n";
-  std::size_t sent = 0;
-  while (sent < data.size()) {
-    pollfd pfd{to_child_, POLLOUT, 0};
-    const int pr = ::poll(&pfd, 1, remaining_ms(deadline));
-    if (pr < 0 && errno == EINTR) continue;
-    if (pr == 0) hang();
-    const ssize_t w = ::write(to_child_, data.data() + sent, data.size() - sent);
-    if (w < 0) {
-      if (errno == EINTR || errno == EAGAIN) continue;
-      if (errno == EPIPE) died("while a request was written");
-      throw IoError(std::string("writing to the external command: ") + std::strerror(errno));
-    }
-    sent += static_cast<std::size_t>(w);
-  }
-  for (;;) {
-    const auto nl = buffer_.find('\n');
-    if (nl != std::string::npos) {
-      std::string answer = buffer_.substr(0, nl);
+  while (answers.size() < want) {
+    for (auto nl = buffer_.find('\n'); nl != std::string::npos && answers.size() < want;
+         nl = buffer_.find('\n')) {
+      answers.push_back(buffer_.substr(0, nl));
       buffer_.erase(0, nl + 1);
-      return answer;
+      deadline = Clock::now() + timeout;
     }
+    if (answers.size() == want) break;
     if (buffer_.size() > (std::size_t{1} << 28)) {
-      throw check::ExternalFailure("malformed answer: a line longer than 256 MiB");
+      const std::size_t at = fail_at();
+      throw check::ExternalFailure("malformed answer: a line longer than 256 MiB", at);
     }
-    pollfd pfd{from_child_, POLLIN, 0};
-    const int pr = ::poll(&pfd, 1, remaining_ms(deadline));
-    if (pr < 0 && errno == EINTR) continue;
+    // Write what the pipe takes and read what is there, never blocking on one while the
+    // command waits on the other.
+    pollfd fds[2] = {{from_child_, POLLIN, 0}, {to_child_, POLLOUT, 0}};
+    const nfds_t n = pending_.empty() ? 1 : 2;
+    const int pr = ::poll(fds, n, remaining_ms(deadline));
+    if (pr < 0) {
+      if (errno == EINTR) continue;
+      throw IoError(std::string("poll: ") + std::strerror(errno));
+    }
     if (pr == 0) hang();
-    char buf[65536];
-    const ssize_t r = ::read(from_child_, buf, sizeof buf);
-    if (r < 0) {
-      if (errno == EINTR || errno == EAGAIN) continue;
-      throw IoError(std::string("reading from the external command: ") + std::strerror(errno));
+    if (n == 2 && (fds[1].revents & (POLLOUT | POLLERR)) != 0) {
+      const ssize_t w = ::write(to_child_, pending_.data(), pending_.size());
+      if (w < 0 && errno == EPIPE) {
+        const std::string req = request();
+        const std::size_t at = fail_at();
+        died("while the request " + req + " was written", at);
+      }
+      if (w < 0 && errno != EINTR && errno != EAGAIN) {
+        throw IoError(std::string("writing to the external command: ") + std::strerror(errno));
+      }
+      if (w > 0) pending_.erase(0, static_cast<std::size_t>(w));
     }
-    if (r == 0) died("before answering the request " + cut(line));
-    buffer_.append(buf, static_cast<std::size_t>(r));
+    if ((fds[0].revents & (POLLIN | POLLHUP | POLLERR)) != 0) {
+      char buf[65536];
+      const ssize_t r = ::read(from_child_, buf, sizeof buf);
+      if (r < 0 && errno != EINTR && errno != EAGAIN) {
+        throw IoError(std::string("reading from the external command: ") + std::strerror(errno));
+      }
+      if (r == 0) {
+        const std::string req = request();
+        const std::size_t at = fail_at();
+        died("before answering the request " + req, at);
+      }
+      if (r > 0) buffer_.append(buf, static_cast<std::size_t>(r));
+    }
   }
+  in_flight_.clear();
+  return answers;
 }
 
-check::Record ExternalCommand::answer(const check::Property&, const check::Record& request,
-                                      const check::Record& schema) {
-  const std::string line = check::to_json(request);
-  const std::string ans = exchange(line);
+std::vector<std::string> ExternalCommand::exchange_all(const std::vector<std::string>& lines) {
+  send(lines);
+  return receive();
+}
+
+namespace {
+
+check::Record parse_answer(const std::string& ans, const std::string& line,
+                           const check::Record& schema, std::size_t at) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(ans);
   } catch (const nlohmann::json::exception&) {
-    throw check::ExternalFailure("malformed answer (not JSON): '" + cut(ans) + "' to the request " +
-                                 cut(line));
+    throw check::ExternalFailure(
+        "malformed answer (not JSON): '" + cut(ans) + "' to the request " + cut(line), at);
   }
   try {
     return record_from_answer(j, schema);
   } catch (const check::ExternalFailure& e) {
     throw check::ExternalFailure(std::string(e.what()) + " in the answer '" + cut(ans) +
-                                 "' to the request " + cut(line));
+                                     "' to the request " + cut(line),
+                                 at);
   }
+}
+
+} // namespace
+
+check::Record ExternalCommand::answer(const check::Property&, const check::Record& request,
+                                      const check::Record& schema) {
+  const std::string line = check::to_json(request);
+  return parse_answer(exchange(line), line, schema, 0);
+}
+
+void ExternalCommand::send_all(const check::Property&, const std::vector<check::Record>& requests) {
+  std::vector<std::string> lines;
+  for (const auto& r : requests) lines.push_back(check::to_json(r));
+  try {
+    send(lines);
+  } catch (const check::ExternalFailure&) {
+    // Reported by receive_all.
+  }
+}
+
+check::Answers ExternalCommand::receive_all(const check::Property&,
+                                            const std::vector<check::Record>& schemas) {
+  check::Answers a;
+  const std::vector<std::string> lines = in_flight_;
+  try {
+    const auto answers = receive();
+    for (std::size_t j = 0; j < answers.size(); ++j) {
+      a.got.push_back(parse_answer(answers[j], lines.at(j), schemas.at(j), j));
+    }
+  } catch (const check::ExternalFailure& e) {
+    a.failure = e.what();
+  }
+  return a;
 }
 
 std::optional<BigInt> json_integer(const nlohmann::json& v) {

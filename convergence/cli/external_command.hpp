@@ -16,6 +16,7 @@
 
 #include <string>
 #include <sys/types.h>
+#include <vector>
 
 namespace zdg::cli {
 
@@ -29,17 +30,31 @@ public:
 
   check::Record answer(const check::Property& p, const check::Record& request,
                        const check::Record& schema) override;
+  /// Pipelined: the requests go out at once (what the pipe takes), the command works while
+  /// zdg's oracle does, the rest is written while the answers are read (poll on both pipes).
+  void send_all(const check::Property& p, const std::vector<check::Record>& requests) override;
+  check::Answers receive_all(const check::Property& p,
+                             const std::vector<check::Record>& schemas) override;
 
   /// One raw exchange: writes the line, returns the answer line (without the newline).
   std::string exchange(const std::string& line);
+  /// Writes the lines and returns one answer line per line; ExternalFailure (with at() the
+  /// request it failed on) when the command dies, hangs past the timeout (renewed by every
+  /// answer) or writes more than 256 MiB without a newline.
+  std::vector<std::string> exchange_all(const std::vector<std::string>& lines);
+  /// The two halves of exchange_all.
+  void send(const std::vector<std::string>& lines);
+  std::vector<std::string> receive();
 
 private:
   std::string command_;
   double timeout_s_;
   pid_t pid_ = -1;
   int to_child_ = -1, from_child_ = -1;
-  std::string buffer_;
-  [[noreturn]] void died(const std::string& when);
+  std::string buffer_;                 // answer bytes read, not yet split into lines
+  std::string pending_;                // request bytes not yet written
+  std::vector<std::string> in_flight_; // requests sent and not yet answered
+  [[noreturn]] void died(const std::string& when, std::size_t at);
   void stop();
 };
 

@@ -22,11 +22,13 @@
 #include <zdg/kernel/lattice_hull_2d.hpp>
 #include <zdg/kernel/lattice_polygon.hpp>
 
+#include <cerrno>
 #include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace zdg::cli {
@@ -299,6 +301,19 @@ const std::map<std::string, Handler>& handlers() {
   return h;
 }
 
+// The answers go straight to file descriptor 1 (iostreams write every line on their own).
+bool write_all(const std::string& s) {
+  std::cout.flush();
+  std::size_t done = 0;
+  while (done < s.size()) {
+    const ssize_t w = ::write(1, s.data() + done, s.size() - done);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) return false;
+    done += static_cast<std::size_t>(w);
+  }
+  return true;
+}
+
 void run_serve(const std::vector<std::string>& words) {
   std::string op;
   for (const auto& w : words) op += (op.empty() ? "" : " ") + w;
@@ -311,7 +326,7 @@ void run_serve(const std::vector<std::string>& words) {
   }
   const Handler handler = it->second;
   std::ios::sync_with_stdio(false);
-  std::string line;
+  std::string line, out;
   while (std::getline(std::cin, line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     json answer;
@@ -324,10 +339,16 @@ void run_serve(const std::vector<std::string>& words) {
     } catch (const json::exception& e) {
       answer = {{"error", std::string("request: ") + e.what()}};
     }
-    std::cout << answer.dump() << '\n';
-    std::cout.flush();
-    if (!std::cout) return; // the reader is gone
+    out += answer.dump();
+    out += '\n';
+    // Written before waiting for input (never an answer held while zdg check waits for it),
+    // not after each line while requests are queued: one write for a batch of answers.
+    if (std::cin.rdbuf()->in_avail() <= 0 || out.size() > (1u << 16)) {
+      if (!write_all(out)) return; // the reader is gone
+      out.clear();
+    }
   }
+  write_all(out);
 }
 
 } // namespace
