@@ -168,8 +168,8 @@ void ExternalCommand::send(const std::vector<std::string>& lines) {
   }
 }
 
-std::vector<std::string> ExternalCommand::receive() {
-  std::vector<std::string> answers;
+void ExternalCommand::receive(std::vector<std::string>& answers) {
+  answers.clear();
   const std::size_t want = in_flight_.size();
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(timeout_s_ * 1000));
   auto deadline = Clock::now() + timeout; // renewed by every answer
@@ -242,12 +242,13 @@ std::vector<std::string> ExternalCommand::receive() {
     }
   }
   in_flight_.clear();
-  return answers;
 }
 
 std::vector<std::string> ExternalCommand::exchange_all(const std::vector<std::string>& lines) {
   send(lines);
-  return receive();
+  std::vector<std::string> answers;
+  receive(answers);
+  return answers;
 }
 
 namespace {
@@ -292,13 +293,20 @@ check::Answers ExternalCommand::receive_all(const check::Property&,
                                             const std::vector<check::Record>& schemas) {
   check::Answers a;
   const std::vector<std::string> lines = in_flight_;
+  std::vector<std::string> answers; // those read before a failure too
+  std::optional<std::string> failure;
   try {
-    const auto answers = receive();
+    receive(answers);
+  } catch (const check::ExternalFailure& e) {
+    failure = e.what();
+  }
+  try {
     for (std::size_t j = 0; j < answers.size(); ++j) {
       a.got.push_back(parse_answer(answers[j], lines.at(j), schemas.at(j), j));
     }
+    a.failure = failure;
   } catch (const check::ExternalFailure& e) {
-    a.failure = e.what();
+    a.failure = e.what(); // a malformed answer comes before the later failure
   }
   return a;
 }

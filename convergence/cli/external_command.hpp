@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
 #include <sys/types.h>
 #include <vector>
@@ -44,7 +45,8 @@ public:
   std::vector<std::string> exchange_all(const std::vector<std::string>& lines);
   /// The two halves of exchange_all.
   void send(const std::vector<std::string>& lines);
-  std::vector<std::string> receive();
+  /// The answers to the requests in flight; on a failure, `answers` holds those read before.
+  void receive(std::vector<std::string>& answers);
 
 private:
   std::string command_;
