@@ -219,4 +219,19 @@ TEST(ServeCommand, AnswersEachLineAndReportsErrorsInTheAnswer) {
   EXPECT_EQ(lines[3]["value"], "2");
 }
 
+// examples/check-python: the naive programs and the counterexamples their README shows.
+TEST(CheckCommand, ExamplesFindTheirCounterexamples) {
+  const std::string ex = std::string(ZDG_SOURCE_DIR) + "/examples/check-python/";
+  json f = failure_of("check floor_sum.oracle --type int64 --runs 2000 --seed 1 --against "
+                      "'/usr/bin/python3 " +
+                      ex + "naive_floor_sum.py'");
+  EXPECT_EQ(f["case"], json::parse(R"({"n":"1","m":"1","a":"0","b":"9007199254740993"})"));
+  json g = failure_of("check dss.recognize.minimal --type int64 --runs 2000 --seed 1 --against "
+                      "'/usr/bin/python3 " +
+                      ex + "naive_dss.py'");
+  EXPECT_EQ(g["case"]["points"].size(), 4u);
+  EXPECT_EQ(g["expected"]["omega"], "2");
+  EXPECT_EQ(g["answer"]["omega"], "3");
+}
+
 } // namespace
