@@ -122,15 +122,9 @@ void append_string(std::string& out, const std::string& s) {
 }
 
 void append_array(std::string& out, const Field& f, std::size_t axis, std::size_t& pos) {
-  if (f.shape.empty()) return;
-  const bool objects = !f.columns.empty() && f.shape.size() == 2 && axis == 1;
-  out += objects ? '{' : '[';
+  out += '[';
   for (std::size_t k = 0; k < f.shape[axis]; ++k) {
     if (k > 0) out += ',';
-    if (objects) {
-      append_string(out, f.columns[k]);
-      out += ':';
-    }
     if (axis + 1 == f.shape.size()) {
       const std::string v = f.ints[pos++].str();
       if (f.numbers) {
@@ -142,7 +136,7 @@ void append_array(std::string& out, const Field& f, std::size_t axis, std::size_
       append_array(out, f, axis + 1, pos);
     }
   }
-  out += objects ? '}' : ']';
+  out += ']';
 }
 
 void append_value(std::string& out, const Field& f) {

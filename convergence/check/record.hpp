@@ -43,12 +43,11 @@ enum class Shrink {
 struct Field {
   std::string name;
   FieldKind kind = FieldKind::integer;
-  std::vector<BigInt> ints;         // integer: one value; array: the entries, row-major
-  std::vector<std::size_t> shape;   // array: the extents
-  std::vector<std::string> texts;   // text: one; texts: several
-  bool flag = false;                // boolean
-  bool numbers = false;             // array written as JSON numbers instead of strings
-  std::vector<std::string> columns; // rank-2 array written as objects with these keys
+  std::vector<BigInt> ints;       // integer: one value; array: the entries, row-major
+  std::vector<std::size_t> shape; // array: the extents
+  std::vector<std::string> texts; // text: one; texts: several
+  bool flag = false;              // boolean
+  bool numbers = false;           // array written as JSON numbers instead of strings
   Shrink shrink = Shrink::none;
 };
 
