@@ -81,7 +81,7 @@ TEST(CheckCommand, ZdgServeAnswersPassEveryOperationProperty) {
                                                      {"dt.l2.brute_force", "transform dt"},
                                                      {"betti.euler", "topology betti"}};
   for (const auto& [prop, op] : ops) {
-    auto r = run_json(std::string("check ") + prop + " --runs 150 --seed 9 --against '" + kZdg +
+    auto r = run_json(std::string("check ") + prop + " --runs 60 --seed 9 --against '" + kZdg +
                           " serve " + op + "'",
                       0);
     EXPECT_TRUE(r["holds"].get<bool>()) << prop << ": " << r.dump();
