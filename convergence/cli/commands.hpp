@@ -37,6 +37,8 @@ void add_convert_commands(CLI::App& app, Context& ctx);
 void add_topology_commands(CLI::App& app, Context& ctx);
 void add_surface_commands(CLI::App& app, Context& ctx);
 void add_plane_commands(CLI::App& app, Context& ctx);
+void add_check_commands(CLI::App& app, Context& ctx);
+void add_serve_commands(CLI::App& app, Context& ctx);
 
 /// Prints j on stdout (two-space indent), followed by a newline.
 void print_json(const nlohmann::json& j);

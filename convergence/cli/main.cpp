@@ -105,6 +105,8 @@ int main(int argc, char** argv) {
     zdg::cli::add_topology_commands(app, ctx);
     zdg::cli::add_surface_commands(app, ctx);
     zdg::cli::add_plane_commands(app, ctx);
+    zdg::cli::add_check_commands(app, ctx);
+    zdg::cli::add_serve_commands(app, ctx);
     make_integer_options_decimal(app);
     try {
       app.parse(argc, argv);

@@ -3,6 +3,7 @@
 #include <zdg/arith/christoffel.hpp>
 #include <zdg/arith/escalate.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 
 #include <algorithm>
@@ -145,6 +146,12 @@ TEST(ChristoffelHuge, LetterAccessNearTheInt64Limit) {
   int expect = static_cast<int>(BigInt(Q * P / N - (Q - 1) * P / N));
   EXPECT_EQ(r.value, expect);
   EXPECT_THROW(lower_christoffel_word(Int64(p), Int64(q)), InvalidArgument);
+}
+
+// The registered property christoffel.factorization (zdg check): letters by the floor formula,
+// factors by the Stern-Brocot parents found by search.
+TYPED_TEST(Christoffel, RegisteredFactorizationHolds) {
+  test::expect_registered_property("christoffel.factorization", int_kind<TypeParam>(), 300);
 }
 
 } // namespace

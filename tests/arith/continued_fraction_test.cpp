@@ -1,6 +1,7 @@
 // Continued fractions: round trip, canonical form, convergent determinants, worked examples.
 #include <zdg/arith/continued_fraction.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 
 namespace {
@@ -94,6 +95,12 @@ TEST(ContinuedFractionBig, FibonacciRatiosNeedManySteps) {
   EXPECT_EQ(from_continued_fraction(std::span<const BigInt>(t)), Rational<BigInt>(b, a));
 }
 
+// The registered property cf.roundtrip (zdg check): Euclid's expansion, canonical form and
+// evaluation back to p/q, on values of up to 64, 128, 256 bits by type.
+TYPED_TEST(ContinuedFraction, RegisteredRoundTripHolds) {
+  test::expect_registered_property("cf.roundtrip", int_kind<TypeParam>(), 300);
+}
+
 } // namespace
 
 namespace {
@@ -104,4 +111,5 @@ TEST(ContinuedFractionRegression, RemainderWithoutOverflowingProduct) {
   auto back = zdg::from_continued_fraction(std::span<const zdg::Int64>(t));
   EXPECT_EQ(back, zdg::Rational<zdg::Int64>(zdg::Int64(-4611686018427387903), zdg::Int64(7)));
 }
+
 } // namespace

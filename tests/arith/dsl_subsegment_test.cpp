@@ -4,6 +4,7 @@
 // near 2^62; the answer does not depend on how the line is written (non-reduced a, b).
 #include <zdg/arith/dsl_subsegment.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 #include <zdg/arith/dss_recognizer.hpp>
 
@@ -267,6 +268,12 @@ TEST(DslSubsegment, HugeValues) {
             r2);
   EXPECT_GT(r.value.b, 0);
   EXPECT_LE(r.value.b, b);
+}
+
+// The registered property dss.subsegment (zdg check): windows of up to 16 points of lines with
+// parameters of up to 64, 128, 256 bits, against the brute-force minimal line of the points.
+TYPED_TEST(DslSubsegmentTest, RegisteredSubsegmentHolds) {
+  test::expect_registered_property("dss.subsegment", int_kind<TypeParam>(), 300);
 }
 
 } // namespace

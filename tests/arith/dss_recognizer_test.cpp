@@ -5,6 +5,7 @@
 
 #include <zdg/arith/christoffel.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/dss_oracle.hpp"
 #include "tests/support/tower.hpp"
 
@@ -343,6 +344,13 @@ TYPED_TEST(DssRecognizerTest, RecognizeOnEveryTypeAgreesWithExact) {
   EXPECT_EQ(e.served, IntKind::int64);
   EXPECT_TRUE(r.is_dss);
   EXPECT_EQ(r.characteristics, e.value.characteristics);
+}
+
+// The registered property dss.recognize.minimal (zdg check): 4- and 8-connected paths in every
+// octant, far from the origin (up to 64, 128, 256-bit coordinates), against the brute-force
+// minimal line.
+TYPED_TEST(DssRecognizerTest, RegisteredMinimalCharacteristicsHold) {
+  test::expect_registered_property("dss.recognize.minimal", int_kind<TypeParam>(), 300);
 }
 
 } // namespace

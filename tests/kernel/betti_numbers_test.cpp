@@ -1,6 +1,7 @@
 #include <zdg/kernel/betti_numbers.hpp>
 
 #include "tests/support/binary_images.hpp"
+#include "tests/support/check_registry.hpp"
 #include "tests/support/cubical_homology.hpp"
 #include "tests/support/tower.hpp"
 #include <zdg/arith/error.hpp>
@@ -134,4 +135,10 @@ TEST(BettiNumbers, RefusesAPairOfAnotherDimension) {
 }
 
 } // namespace
+// The registered property betti.euler (zdg check): components and bounded background components
+// by breadth-first search, chi by counting the cells of the complex on the doubled grid.
+TEST(BettiNumbers, RegisteredEulerPropertyHolds) {
+  test::expect_registered_property("betti.euler", IntKind::int64, 300);
+}
+
 } // namespace zdg

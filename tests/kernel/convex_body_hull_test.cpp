@@ -3,6 +3,7 @@
 // then take their monotone-chain hull. Vertex lists must agree exactly (same order).
 #include <zdg/kernel/convex_body_hull.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 #include <zdg/kernel/lattice_hull_2d.hpp>
 #include <zdg/kernel/lattice_polygon.hpp>
@@ -354,6 +355,15 @@ TEST(ConvexBodyHullStream, VertexBoundAboveTheObservedCounts) {
     }
   }
   EXPECT_EQ(disc_hull_max_vertices(Rational<BigInt>(BigInt(1) << 200)), UINT64_MAX);
+}
+
+// The registered property hull.disc.pick (zdg check): discs of radius <= 6 with rational centre
+// (denominators <= 12) anywhere up to 2^64, 2^128, 2^256, against the enumerated lattice points
+// and Pick's theorem.
+TEST(DiscHull, RegisteredPickPropertyHolds) {
+  test::expect_registered_property("hull.disc.pick", IntKind::int64, 200);
+  test::expect_registered_property("hull.disc.pick", IntKind::int128, 100);
+  test::expect_registered_property("hull.disc.pick", IntKind::bigint, 100);
 }
 
 } // namespace

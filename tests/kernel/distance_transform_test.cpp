@@ -1,5 +1,6 @@
 #include <zdg/kernel/distance_transform.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"
 
@@ -129,4 +130,10 @@ TEST(DistanceTransform, Errors) {
 }
 
 } // namespace
+// The registered property dt.l2.brute_force (zdg check): 2D images of side <= 12 and 3D ones of
+// side <= 6, against every pair of points.
+TEST(DistanceTransform, RegisteredBruteForcePropertyHolds) {
+  test::expect_registered_property("dt.l2.brute_force", IntKind::int64, 300);
+}
+
 } // namespace zdg

@@ -2,6 +2,7 @@
 // here on BigInt), degenerate sets, and coordinates near 2^62 (exact by escalation).
 #include <zdg/kernel/lattice_hull_2d.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 
 #include <algorithm>
@@ -116,6 +117,15 @@ TEST(LatticeHull2dEscalation, CoordinatesNear2To62) {
   auto w = jarvis(qb);
   ASSERT_EQ(h.size(), w.size());
   for (std::size_t i = 0; i < h.size(); ++i) EXPECT_EQ(to_bigint(h[i].x), w[i].x);
+}
+
+// The registered property hull.points.brute_force (zdg check): up to 16 points, clustered (with
+// duplicates and collinear points) or spread over 64, 128, 256-bit coordinates, against the
+// O(n^3) edge test; the measures against the shoelace formula, gcds and Pick.
+TEST(LatticeHull2d, RegisteredBruteForcePropertyHolds) {
+  test::expect_registered_property("hull.points.brute_force", IntKind::int64, 300);
+  test::expect_registered_property("hull.points.brute_force", IntKind::int128, 100);
+  test::expect_registered_property("hull.points.brute_force", IntKind::bigint, 100);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include <zdg/kernel/simple_points.hpp>
 
 #include "tests/support/binary_images.hpp"
+#include "tests/support/check_registry.hpp"
 #include "tests/support/cubical_homology.hpp"
 #include "tests/support/simple_point_oracles.hpp"
 #include "tests/support/tower.hpp"
@@ -135,4 +136,10 @@ TEST(SimplePoints, WorkedExamples) {
 }
 
 } // namespace
+// The registered property simple_point.lut (zdg check): the 2D table and the definition against
+// Yokoi's connectivity number.
+TEST(SimplePoints, RegisteredLookUpTablePropertyHolds) {
+  test::expect_registered_property("simple_point.lut", IntKind::int64, 600);
+}
+
 } // namespace zdg

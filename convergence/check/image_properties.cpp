@@ -1,0 +1,432 @@
+// The image family of zdg check: distance transforms, simple points, Betti numbers of small
+// binary images, against brute force and definitions written here from the literature.
+#include <zdg/convergence/check/property.hpp>
+#include <zdg/kernel/adjacency.hpp>
+#include <zdg/kernel/betti_numbers.hpp>
+#include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/simple_points.hpp>
+
+#include <array>
+#include <cstdlib>
+#include <functional>
+#include <vector>
+
+namespace zdg::check {
+
+namespace {
+
+// --- small binary images as records ----------------------------------------------------------
+
+Image<std::uint8_t> image_of(const Field& f) {
+  std::vector<std::int64_t> ext;
+  for (auto e : f.shape) ext.push_back(static_cast<std::int64_t>(e));
+  std::vector<std::uint8_t> v;
+  for (const auto& x : f.ints) v.push_back(x != 0 ? 1 : 0);
+  return Image<std::uint8_t>(Domain(ext), std::move(v));
+}
+
+std::vector<std::size_t> shape_of(const Domain& d) {
+  std::vector<std::size_t> s;
+  for (int k = 0; k < d.dim(); ++k) s.push_back(static_cast<std::size_t>(d.extent(k)));
+  return s;
+}
+
+// A random 2D (or 3D) 0/1 image with sides in [1, max side], of a random density.
+Field random_image(Rng& rng, int dim, std::int64_t max_side) {
+  Field f;
+  f.name = "image";
+  f.kind = FieldKind::array;
+  f.numbers = true;
+  f.shrink = Shrink::image;
+  for (int k = 0; k < dim; ++k) f.shape.push_back(static_cast<std::size_t>(rng.range(1, max_side)));
+  const std::uint64_t density = rng.range(1, 9);
+  for (std::size_t i = 0; i < shape_size(f.shape); ++i) {
+    f.ints.push_back(BigInt(rng.chance(density, 10) ? 1 : 0));
+  }
+  return f;
+}
+
+bool image_shape_ok(const Field& f, std::size_t max_side) {
+  if (f.kind != FieldKind::array || (f.shape.size() != 2 && f.shape.size() != 3)) return false;
+  for (auto e : f.shape) {
+    if (e < 1 || e > max_side) return false;
+  }
+  for (const auto& x : f.ints) {
+    if (x != 0 && x != 1) return false;
+  }
+  return true;
+}
+
+std::vector<std::int64_t> coords(const Domain& d, std::int64_t i) {
+  std::vector<std::int64_t> c(static_cast<std::size_t>(d.dim()));
+  for (int k = d.dim(); k-- > 0;) {
+    c[static_cast<std::size_t>(k)] = i % d.extent(k);
+    i /= d.extent(k);
+  }
+  return c;
+}
+
+// --- dt.l2.brute_force ------------------------------------------------------------------------
+
+Record dt_generate(Rng& rng, const Params& params) {
+  const int dim = rng.chance(3, 4) ? 2 : 3;
+  const auto side = static_cast<std::int64_t>(dim == 2 ? params.max_size
+                                                       : std::min<std::size_t>(params.max_size, 6));
+  Field f = random_image(rng, dim, side);
+  f.ints[rng.below(f.ints.size())] = 0; // at least one background point
+  Record r;
+  r.fields.push_back(std::move(f));
+  return r;
+}
+
+bool dt_valid(const Record& c, const Params& params) {
+  const Field& f = c.at("image");
+  if (!image_shape_ok(f, params.max_size)) return false;
+  for (const auto& x : f.ints) {
+    if (x == 0) return true;
+  }
+  return false;
+}
+
+Record dt_request(const Record& c) {
+  Record r = c;
+  return r.text("metric", "l2");
+}
+
+// Squared distance to the nearest background point, over every pair: O(N^2).
+Record dt_oracle(const Record& c) {
+  const Field& f = c.at("image");
+  const Image<std::uint8_t> img = image_of(f);
+  const Domain& d = img.domain();
+  std::vector<std::vector<std::int64_t>> bg;
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    if (img[i] == 0) bg.push_back(coords(d, i));
+  }
+  std::vector<BigInt> out;
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    const auto p = coords(d, i);
+    std::int64_t best = -1;
+    for (const auto& q : bg) {
+      std::int64_t s = 0;
+      for (std::size_t k = 0; k < p.size(); ++k) s += (p[k] - q[k]) * (p[k] - q[k]);
+      if (best < 0 || s < best) best = s;
+    }
+    out.push_back(BigInt(best));
+  }
+  Record r;
+  r.array("distances", shape_of(d), std::move(out), Shrink::none, true);
+  return r;
+}
+
+Record dt_compute(const Record& c, IntKind) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  TransformOptions opt;
+  opt.metric = Metric::l2();
+  opt.threads = 1;
+  const auto dt = distance_transform<std::int64_t>(img, opt);
+  std::vector<BigInt> out;
+  for (auto v : dt.values()) out.push_back(BigInt(v));
+  Record r;
+  r.array("distances", shape_of(img.domain()), std::move(out), Shrink::none, true);
+  return r;
+}
+
+// --- betti.euler --------------------------------------------------------------------------------
+
+const char* const kPairs[4] = {"8,4", "4,8", "26,6", "6,26"};
+
+Record betti_generate(Rng& rng, const Params& params) {
+  const int dim = rng.chance(1, 2) ? 2 : 3;
+  const auto side = static_cast<std::int64_t>(dim == 2 ? params.max_size
+                                                       : std::min<std::size_t>(params.max_size, 5));
+  Record r;
+  r.fields.push_back(random_image(rng, dim, side));
+  r.text("adjacency", kPairs[(dim == 2 ? 0 : 2) + rng.below(2)]);
+  return r;
+}
+
+bool betti_valid(const Record& c, const Params& params) {
+  return image_shape_ok(c.at("image"), params.max_size);
+}
+
+// Components of {p in the box : member(p)} under k-adjacency (k = 4, 8 in 2D; 6, 26 in 3D),
+// by breadth-first search; with `frame`, the box is first grown by one point on every side
+// (outside the image: member) and the component holding the frame is not counted (bounded
+// components of the background).
+std::int64_t count_components_bfs(const Image<std::uint8_t>& img, int k, bool object, bool frame) {
+  const Domain& d = img.domain();
+  const int dim = d.dim();
+  const std::int64_t pad = frame ? 1 : 0;
+  std::vector<std::int64_t> ext;
+  for (int a = 0; a < dim; ++a) ext.push_back(d.extent(a) + 2 * pad);
+  const Domain big(ext);
+  auto member = [&](const std::vector<std::int64_t>& p) {
+    bool inside = true;
+    std::int64_t i = 0;
+    for (int a = 0; a < dim; ++a) {
+      const std::int64_t x = p[static_cast<std::size_t>(a)] - pad;
+      if (x < 0 || x >= d.extent(a)) inside = false;
+      i = i * d.extent(a) + x;
+    }
+    if (!inside) return !object; // the frame is background
+    return (img[i] != 0) == object;
+  };
+  std::vector<std::vector<std::int64_t>> offsets;
+  const int max_l1 = k == 4 || k == 6 ? 1 : dim;
+  for (std::int64_t m = 0; m < (dim == 2 ? 9 : 27); ++m) {
+    std::vector<std::int64_t> o;
+    std::int64_t t = m, l1 = 0;
+    for (int a = 0; a < dim; ++a) {
+      o.push_back(t % 3 - 1);
+      l1 += std::llabs(o.back());
+      t /= 3;
+    }
+    if (l1 >= 1 && l1 <= max_l1) offsets.push_back(o);
+  }
+  std::vector<std::int64_t> label(static_cast<std::size_t>(big.size()), -1);
+  std::int64_t count = 0;
+  for (std::int64_t s = 0; s < big.size(); ++s) {
+    if (label[static_cast<std::size_t>(s)] >= 0 || !member(coords(big, s))) continue;
+    const bool is_frame_component = frame && s == 0;
+    std::vector<std::int64_t> stack = {s};
+    label[static_cast<std::size_t>(s)] = s;
+    while (!stack.empty()) {
+      const auto p = coords(big, stack.back());
+      stack.pop_back();
+      for (const auto& o : offsets) {
+        std::vector<std::int64_t> q = p;
+        bool in = true;
+        std::int64_t j = 0;
+        for (int a = 0; a < dim; ++a) {
+          q[static_cast<std::size_t>(a)] += o[static_cast<std::size_t>(a)];
+          if (q[static_cast<std::size_t>(a)] < 0 ||
+              q[static_cast<std::size_t>(a)] >= ext[static_cast<std::size_t>(a)])
+            in = false;
+          j = j * ext[static_cast<std::size_t>(a)] + q[static_cast<std::size_t>(a)];
+        }
+        if (!in || label[static_cast<std::size_t>(j)] >= 0 || !member(q)) continue;
+        label[static_cast<std::size_t>(j)] = s;
+        stack.push_back(j);
+      }
+    }
+    if (!is_frame_component) ++count;
+  }
+  return count;
+}
+
+// chi of the cell complex of the pair (kernel/betti_numbers.hpp), by counting its cells on the
+// doubled grid: a cell has doubled coordinates c; for the union of closed unit cubes centred
+// at the points (8,4 / 26,6) the cell is in the complex iff some point p with |2 p - c| <= 1
+// on every axis is in X, and its dimension is the number of even coordinates; for the complex
+// on the points (4,8 / 6,26) the cell is in iff all its corners are in X, and its dimension is
+// the number of odd coordinates. chi = sum of (-1)^dim.
+std::int64_t euler_by_cells(const Image<std::uint8_t>& img, bool cubes) {
+  const Domain& d = img.domain();
+  const int dim = d.dim();
+  std::vector<std::int64_t> lo(static_cast<std::size_t>(dim)), ext(static_cast<std::size_t>(dim));
+  for (int a = 0; a < dim; ++a) {
+    lo[static_cast<std::size_t>(a)] = -1;
+    ext[static_cast<std::size_t>(a)] = 2 * d.extent(a) + 1;
+  }
+  const Domain cells(ext);
+  auto in_x = [&](const std::vector<std::int64_t>& p) {
+    std::int64_t i = 0;
+    for (int a = 0; a < dim; ++a) {
+      const std::int64_t x = p[static_cast<std::size_t>(a)];
+      if (x < 0 || x >= d.extent(a)) return false;
+      i = i * d.extent(a) + x;
+    }
+    return img[i] != 0;
+  };
+  std::int64_t chi = 0;
+  for (std::int64_t s = 0; s < cells.size(); ++s) {
+    auto c = coords(cells, s);
+    int odd = 0;
+    for (int a = 0; a < dim; ++a) {
+      c[static_cast<std::size_t>(a)] += lo[static_cast<std::size_t>(a)];
+      odd += (c[static_cast<std::size_t>(a)] & 1) != 0;
+    }
+    // The points p with |2 p - c| <= 1 on every axis: one per even axis, two per odd axis.
+    bool any = false, all = true;
+    for (int m = 0; m < (1 << odd); ++m) {
+      std::vector<std::int64_t> p(static_cast<std::size_t>(dim));
+      int bit = 0;
+      for (int a = 0; a < dim; ++a) {
+        const std::int64_t x = c[static_cast<std::size_t>(a)];
+        if ((x & 1) == 0) {
+          p[static_cast<std::size_t>(a)] = x / 2;
+        } else {
+          p[static_cast<std::size_t>(a)] = ((m >> bit++) & 1) != 0 ? (x + 1) / 2 : (x - 1) / 2;
+        }
+      }
+      const bool in = in_x(p);
+      any = any || in;
+      all = all && in;
+    }
+    const int cell_dim = cubes ? dim - odd : odd;
+    if (cubes ? any : all) chi += cell_dim % 2 == 0 ? 1 : -1;
+  }
+  return chi;
+}
+
+Record betti_oracle(const Record& c) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  const std::string& name = c.at("adjacency").texts.at(0);
+  const AdjacencyPair pair = parse_adjacency_pair(name, img.dim());
+  const bool cubes = pair.object == 8 || pair.object == 26;
+  const std::int64_t chi = euler_by_cells(img, cubes);
+  const std::int64_t b0 = count_components_bfs(img, pair.object, true, false);
+  // Bounded background components: holes in 2D, cavities (b2) in 3D (Alexander duality).
+  const std::int64_t bounded = count_components_bfs(img, pair.background, false, true);
+  std::vector<BigInt> b;
+  if (img.dim() == 2) {
+    b = {BigInt(b0), BigInt(bounded)};
+  } else {
+    b = {BigInt(b0), BigInt(b0 + bounded - chi), BigInt(bounded)};
+  }
+  const std::size_t nb = b.size();
+  return Record()
+      .text("adjacency", name)
+      .integer("euler", BigInt(chi))
+      .array("betti", {nb}, std::move(b));
+}
+
+Record betti_compute(const Record& c, IntKind) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  const std::string& name = c.at("adjacency").texts.at(0);
+  const AdjacencyPair pair = parse_adjacency_pair(name, img.dim());
+  const BettiNumbers bn = betti_numbers(img, pair, 1);
+  std::vector<BigInt> b;
+  for (int k = 0; k < img.dim(); ++k) b.push_back(BigInt(bn.b[static_cast<std::size_t>(k)]));
+  const std::size_t nb = b.size();
+  return Record()
+      .text("adjacency", pair.name())
+      .integer("euler", BigInt(bn.euler))
+      .array("betti", {nb}, std::move(b));
+}
+
+// In 2D, chi = b0 - b1 on any answer (Euler-Poincare); in 3D chi = b0 - b1 + b2.
+std::optional<std::string> betti_judge(const Record&, const Record&, const Record& got) {
+  if (!got.has("euler") || !got.has("betti")) return std::nullopt;
+  const auto& b = got.at("betti").ints;
+  if (b.size() < 2) return "betti has fewer than two numbers";
+  BigInt alt = b[0] - b[1] + (b.size() > 2 ? b[2] : BigInt(0));
+  if (alt != got.int_of("euler")) {
+    return "Euler-Poincare fails on the answer: b0 - b1 + b2 = " + alt.str() +
+           " but euler = " + got.int_of("euler").str();
+  }
+  return std::nullopt;
+}
+
+// --- simple_point.lut ---------------------------------------------------------------------------
+
+// Yokoi, Toriwaki and Fukumura (CGIP 4, 1975): with x_1 .. x_8 the 8 neighbours in cyclic order
+// starting at an axis neighbour, N^4 = sum_{k odd} (x_k - x_k x_{k+1} x_{k+2}) and N^8 the same
+// on complemented values; the centre (in the object) is simple iff N = 1 for the object's
+// adjacency.
+bool simple_by_yokoi(int object_adjacency, std::uint32_t config) {
+  static const int ring[8][2] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
+                                 {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+  int x[9];
+  for (int k = 0; k < 8; ++k) {
+    int v = (config >> neighbour_bit(2, ring[k][0], ring[k][1])) & 1u;
+    x[k] = object_adjacency == 8 ? 1 - v : v;
+  }
+  x[8] = x[0];
+  int n = 0;
+  for (int k = 0; k < 8; k += 2) n += x[k] - x[k] * x[k + 1] * x[(k + 2) % 8];
+  return n == 1;
+}
+
+Record simple_generate(Rng& rng, const Params&) {
+  return Record()
+      .integer("configuration", BigInt(rng.below(256)), Shrink::toward_zero)
+      .text("adjacency", rng.chance(1, 2) ? "8,4" : "4,8");
+}
+
+bool simple_valid(const Record& c, const Params&) {
+  const BigInt& v = c.int_of("configuration");
+  return v >= 0 && v < 256;
+}
+
+std::optional<std::string> simple_holds(const Record& c, IntKind) {
+  const AdjacencyPair pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), 2);
+  const auto config = static_cast<std::uint32_t>(c.i64_of("configuration"));
+  const bool lut = SimplePointTable::of(pair).simple(config);
+  const bool yokoi = simple_by_yokoi(pair.object, config);
+  const bool definition = is_simple_by_definition(pair, config);
+  if (lut != yokoi || definition != yokoi) {
+    return "configuration " + std::to_string(config) + " under (" + pair.name() + "): table says " +
+           (lut ? "simple" : "not simple") + ", definition " +
+           (definition ? "simple" : "not simple") + ", Yokoi's number " +
+           (yokoi ? "simple" : "not simple");
+  }
+  return std::nullopt;
+}
+
+} // namespace
+
+void add_image_properties(std::vector<Property>& out) {
+  {
+    Property p;
+    p.name = "dt.l2.brute_force";
+    p.theorem = "the squared Euclidean distance transform of a binary image (separable exact "
+                "transform) equals min over the background points of the squared distance";
+    p.source = "oracle: every pair of points (brute force); algorithm: Saito and Toriwaki 1994, "
+               "Meijster, Roerdink and Hesselink 2000";
+    p.operation = "transform dt";
+    p.sizes = "image side <= max-size (3D images: <= 6); bits unused";
+    p.cost = Cost::moderate;
+    p.types = {IntKind::int64};
+    p.uses_bits = false;
+    p.default_max_size = 12;
+    p.max_max_size = 64;
+    p.generate = dt_generate;
+    p.valid = dt_valid;
+    p.request = dt_request;
+    p.oracle = dt_oracle;
+    p.compute = dt_compute;
+    out.push_back(std::move(p));
+  }
+  {
+    Property p;
+    p.name = "betti.euler";
+    p.theorem = "b0 is the number of k-components, b2 (3D) or b1 (2D) the bounded kbar-"
+                "components of the background (Alexander duality), and chi = b0 - b1 + b2 is "
+                "the alternating cell count of the complex of the pair (8,4 4,8 26,6 6,26)";
+    p.source = "oracle: breadth-first search and cell counting on the doubled grid; Kong and "
+               "Rosenfeld, CVGIP 48 (1989); Lee, Poston and Rosenfeld, CVGIP: GMIP 53 (1991)";
+    p.operation = "topology betti";
+    p.sizes = "image side <= max-size (3D images: <= 5); bits unused";
+    p.cost = Cost::moderate;
+    p.types = {IntKind::int64};
+    p.uses_bits = false;
+    p.default_max_size = 8;
+    p.max_max_size = 32;
+    p.generate = betti_generate;
+    p.valid = betti_valid;
+    p.oracle = betti_oracle;
+    p.compute = betti_compute;
+    p.judge = betti_judge;
+    out.push_back(std::move(p));
+  }
+  {
+    Property p;
+    p.name = "simple_point.lut";
+    p.theorem = "the 2D simple-point table and the definition by topological numbers agree with "
+                "Yokoi's connectivity number (simple iff N = 1) on every 3x3 configuration";
+    p.source = "oracle: Yokoi, Toriwaki and Fukumura, CGIP 4 (1975); Bertrand, PRL 15 (1994)";
+    p.sizes = "one 3x3 configuration (0..255); max-size and bits unused";
+    p.cost = Cost::cheap;
+    p.types = {IntKind::int64};
+    p.uses_bits = false;
+    p.default_max_size = 1;
+    p.generate = simple_generate;
+    p.valid = simple_valid;
+    p.holds = simple_holds;
+    out.push_back(std::move(p));
+  }
+}
+
+} // namespace zdg::check

@@ -1,0 +1,30 @@
+#!/usr/bin/python3
+"""An external command that fails as a program (argv[1]): `crash` answers two requests right
+(through `zdg serve floor-sum`, argv[2] is zdg) and then dies of SIGSEGV, `exit` exits with
+status 3, `hang` stops answering, `garbage` answers a line that is not JSON."""
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+mode, zdg = sys.argv[1], sys.argv[2]
+serve = subprocess.Popen([zdg, "serve", "floor-sum"], stdin=subprocess.PIPE,
+                         stdout=subprocess.PIPE, text=True)
+count = 0
+for line in sys.stdin:
+    count += 1
+    if count == 3:
+        if mode == "crash":
+            os.kill(os.getpid(), signal.SIGSEGV)
+        if mode == "exit":
+            sys.exit(3)
+        if mode == "hang":
+            time.sleep(3600)
+        if mode == "garbage":
+            print("value = 42", flush=True)
+            continue
+    serve.stdin.write(line)
+    serve.stdin.flush()
+    print(serve.stdout.readline(), end="", flush=True)
