@@ -192,19 +192,39 @@ ScalarVolume read_nifti(const std::string& path) {
                   std::to_string(file_size) + " compressed bytes can hold at most " +
                   std::to_string(1032 * file_size + 1024));
   }
-  {
-    StderrCapture cap;
-    if (nifti_image_load(nim.get()) < 0 || nim->data == nullptr) {
-      throw IoError(path + ": " +
-                    with_library_message("truncated or corrupt NIfTI data", cap.text()));
-    }
-  }
+  // The payload is read here through libnifti's znz layer rather than nifti_image_load:
+  // nifti_image_load replaces every NaN and infinity of a float volume by 0, and a value
+  // that reads back different from what was written is a wrong answer. The byte order is
+  // the header's (libnifti detected it), swapped to the machine's.
   ScalarVolume v;
   v.array.dtype = dtype;
   v.array.shape = shape;
   v.array.bytes.resize(static_cast<std::size_t>(bytes));
-  std::memcpy(v.array.bytes.data(), nim->data, static_cast<std::size_t>(bytes));
-  nifti_image_unload(nim.get());
+  {
+    znzFile f = znzopen(path.c_str(), "rb", gz ? 1 : 0);
+    if (znz_isnull(f)) throw IoError(path + ": cannot open the file");
+    // znzseek returns fseek's 0 or gzseek's new offset on success, -1 on failure.
+    const bool at = znzseek(f, static_cast<znz_off_t>(nim->iname_offset), SEEK_SET) >= 0;
+    std::size_t got = 0;
+    if (at) {
+      // znzread reads at most 2^31 - 1 bytes a call through gzread: read in chunks.
+      while (got < v.array.bytes.size()) {
+        const std::size_t want = std::min<std::size_t>(v.array.bytes.size() - got, 1u << 30);
+        const std::size_t n = znzread(v.array.bytes.data() + got, 1, want, f);
+        if (n == 0) break;
+        got += n;
+      }
+    }
+    znzclose(f);
+    if (!at || got != v.array.bytes.size()) {
+      throw IoError(path + ": truncated or corrupt NIfTI data (" + std::to_string(got) + " of " +
+                    std::to_string(bytes) + " bytes)");
+    }
+  }
+  if (nim->byteorder != nifti_short_order() && dtype_size(dtype) > 1) {
+    nifti_swap_Nbytes(static_cast<std::int64_t>(bytes / dtype_size(dtype)),
+                      static_cast<int>(dtype_size(dtype)), v.array.bytes.data());
+  }
   v.lower.assign(static_cast<std::size_t>(d), 0);
   const double qoff[3] = {nim->qoffset_x, nim->qoffset_y, nim->qoffset_z};
   for (int k = d; k >= 1; --k) {
