@@ -3,6 +3,7 @@
 #include <zdg/arith/dsl_subsegment.hpp>
 #include <zdg/arith/dss_recognizer.hpp>
 #include <zdg/convergence/check/property.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
 
 #include <array>
 #include <cstdlib>
@@ -224,6 +225,88 @@ Record subsegment_compute(const Record& c, IntKind type) {
       .text("integer_type", std::string(to_string(r.served)));
 }
 
+// --- dss.cover.maximal ----------------------------------------------------------------------
+
+const std::vector<std::string> kSegmentColumns = {"begin", "end", "a", "b", "mu"};
+
+// Open paths of the recognizer's generator, the coordinates kept within 60 bits (the cover
+// reads int64 points and the path must not leave them).
+Record cover_generate(Rng& rng, const Params& params) {
+  Params p = params;
+  p.bits = std::min(params.bits, 60);
+  return dss_generate(rng, p).boolean("closed", false);
+}
+
+bool cover_valid(const Record& c, const Params& params) {
+  if (!dss_valid(c, params)) return false;
+  const BigInt bound = BigInt(1) << 61;
+  for (const auto& x : c.at("points").ints) {
+    if (abs(x) > bound) return false;
+  }
+  return true;
+}
+
+// The maximal segments by definition: e(i), the last index of the longest DSS starting at
+// point i (brute force, being a DSS is inherited by sub-paths), and [i, e(i)] is maximal iff
+// i = 0 or e(i) > e(i - 1) (else [i - 1, e(i - 1)] contains it). O(n^2) brute-force searches.
+Record cover_oracle(const Record& c) {
+  const auto pts = path_of(c);
+  const int conn = static_cast<int>(c.i64_of("connectivity"));
+  const std::size_t n = pts.size();
+  std::vector<BigInt> rows;
+  std::size_t rows_n = 0, last_end = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t e = i;
+    std::optional<BruteDss> best =
+        brute_dss(local_of(std::vector<Point2<BigInt>>{pts[i]}), conn); // one point
+    while (e + 1 < n) {
+      const std::vector<Point2<BigInt>> sub(pts.begin() + static_cast<std::ptrdiff_t>(i),
+                                            pts.begin() + static_cast<std::ptrdiff_t>(e + 2));
+      auto d = brute_dss(local_of(sub), conn);
+      if (!d) break;
+      best = d;
+      ++e;
+    }
+    if (i > 0 && e <= last_end) continue;
+    last_end = e;
+    const Record ch = dss_characteristics(*best, pts[i]);
+    for (const auto& v :
+         {BigInt(static_cast<std::int64_t>(i)), BigInt(static_cast<std::int64_t>(e)),
+          ch.int_of("a"), ch.int_of("b"), ch.int_of("mu")}) {
+      rows.push_back(v);
+    }
+    ++rows_n;
+  }
+  Record r;
+  r.array("segments", {rows_n, kSegmentColumns.size()}, std::move(rows));
+  r.at("segments").columns = kSegmentColumns;
+  return r;
+}
+
+Record cover_compute(const Record& c, IntKind type) {
+  const auto pts = path_of(c);
+  std::vector<Point2<std::int64_t>> q;
+  for (const auto& p : pts)
+    q.push_back({int_cast<Int64>(p.x).value(), int_cast<Int64>(p.y).value()});
+  const Connectivity conn =
+      c.i64_of("connectivity") == 4 ? Connectivity::four : Connectivity::eight;
+  auto r = escalate_from(type, [&]<class I>(std::type_identity<I>) {
+    return maximal_segments<I>(std::span<const Point2<std::int64_t>>(q), false, conn);
+  });
+  std::vector<BigInt> rows;
+  for (const auto& s : r.value) {
+    for (const auto& v :
+         {BigInt(static_cast<std::int64_t>(s.begin)), BigInt(static_cast<std::int64_t>(s.end)),
+          BigInt(s.a), BigInt(s.b), to_bigint(Int128(s.mu))}) {
+      rows.push_back(v);
+    }
+  }
+  Record out;
+  out.array("segments", {r.value.size(), kSegmentColumns.size()}, std::move(rows));
+  out.at("segments").columns = kSegmentColumns;
+  return out.text("integer_type", std::string(to_string(r.served)));
+}
+
 } // namespace
 
 void add_dss_properties(std::vector<Property>& out) {
@@ -264,6 +347,27 @@ void add_dss_properties(std::vector<Property>& out) {
     p.valid = subsegment_valid;
     p.oracle = subsegment_oracle;
     p.compute = subsegment_compute;
+    out.push_back(std::move(p));
+  }
+  {
+    Property p;
+    p.name = "dss.cover.maximal";
+    p.theorem = "the tangential cover of an open path is the list of its maximal segments (runs "
+                "of consecutive points that are a DSS and extend neither backwards nor forwards), "
+                "by increasing first point, each with its minimal characteristics (a, b, mu)";
+    p.source = "oracle: the longest DSS from every point by brute-force line search; algorithm: "
+               "Feschet and Tougne, DGCI 1999; Lachaud, Vialard and de Vieilleville, IVC 25 "
+               "(2007)";
+    p.operation = "dss cover";
+    p.sizes = "points <= max-size (open paths); the first point's coordinates of up to "
+              "min(--bits, 60) bits (the cover reads int64 points)";
+    p.cost = Cost::moderate;
+    p.default_max_size = 12;
+    p.max_max_size = 30;
+    p.generate = cover_generate;
+    p.valid = cover_valid;
+    p.oracle = cover_oracle;
+    p.compute = cover_compute;
     out.push_back(std::move(p));
   }
 }

@@ -4,8 +4,10 @@
 #include <zdg/kernel/adjacency.hpp>
 #include <zdg/kernel/betti_numbers.hpp>
 #include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/homotopic_thinning.hpp>
 #include <zdg/kernel/image.hpp>
 #include <zdg/kernel/simple_points.hpp>
+#include <zdg/kernel/voronoi_map.hpp>
 
 #include <array>
 #include <cstdlib>
@@ -319,6 +321,241 @@ std::optional<std::string> betti_judge(const Record&, const Record&, const Recor
   return std::nullopt;
 }
 
+bool simple_by_yokoi(int object_adjacency, std::uint32_t config);
+
+// --- voronoi.l2.nearest ---------------------------------------------------------------------
+
+// Squared distances to the nearest background point, and the first such point (by index).
+struct Nearest {
+  std::vector<std::int64_t> d2, site;
+};
+
+Nearest nearest_background(const Image<std::uint8_t>& img) {
+  const Domain& d = img.domain();
+  std::vector<std::int64_t> bg;
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    if (img[i] == 0) bg.push_back(i);
+  }
+  Nearest n;
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    const auto p = coords(d, i);
+    std::int64_t best = -1, at = -1;
+    for (auto j : bg) {
+      const auto q = coords(d, j);
+      std::int64_t s = 0;
+      for (std::size_t k = 0; k < p.size(); ++k) s += (p[k] - q[k]) * (p[k] - q[k]);
+      if (best < 0 || s < best) {
+        best = s;
+        at = j;
+      }
+    }
+    n.d2.push_back(best);
+    n.site.push_back(at);
+  }
+  return n;
+}
+
+std::vector<std::size_t> sites_shape(const Domain& d) {
+  auto s = shape_of(d);
+  s.push_back(static_cast<std::size_t>(d.dim()));
+  return s;
+}
+
+Record voronoi_oracle(const Record& c) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  const Nearest n = nearest_background(img);
+  std::vector<BigInt> out;
+  for (auto j : n.site) {
+    for (auto x : coords(img.domain(), j)) out.push_back(BigInt(x));
+  }
+  Record r;
+  r.array("sites", sites_shape(img.domain()), std::move(out), Shrink::none, true);
+  r.at("sites").judged = true; // any nearest background point is right
+  return r;
+}
+
+Record voronoi_compute(const Record& c, IntKind) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  TransformOptions opt;
+  opt.metric = Metric::l2();
+  opt.threads = 1;
+  const VoronoiMap v = voronoi_map(img, opt);
+  std::vector<BigInt> out;
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    for (auto x : v.site_point(i)) out.push_back(BigInt(x));
+  }
+  Record r;
+  r.array("sites", sites_shape(img.domain()), std::move(out), Shrink::none, true);
+  return r;
+}
+
+// Every point's site is a background point of the image at the smallest squared distance.
+std::optional<std::string> voronoi_judge(const Record& c, const Record&, const Record& got) {
+  if (!got.has("sites")) return std::nullopt; // reported as a missing field
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  const Domain& d = img.domain();
+  const Field& f = got.at("sites");
+  if (f.shape != sites_shape(d)) return "sites has not the shape (image shape, dimension)";
+  const Nearest n = nearest_background(img);
+  const auto dim = static_cast<std::size_t>(d.dim());
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    const auto p = coords(d, i);
+    std::int64_t j = 0, s = 0;
+    std::string at = "(";
+    for (std::size_t k = 0; k < dim; ++k) {
+      const BigInt& x = f.ints[static_cast<std::size_t>(i) * dim + k];
+      at += (k > 0 ? ", " : "") + x.str();
+      if (x < 0 || x >= d.extent(static_cast<int>(k))) {
+        return "the site of point " + std::to_string(i) + " is outside the image";
+      }
+      const std::int64_t xi = x.convert_to<std::int64_t>();
+      j = j * d.extent(static_cast<int>(k)) + xi;
+      s += (xi - p[k]) * (xi - p[k]);
+    }
+    at += ")";
+    if (img[j] != 0) {
+      return "the site " + at + " of point " + std::to_string(i) + " is an object point";
+    }
+    if (s != n.d2[static_cast<std::size_t>(i)]) {
+      return "the site " + at + " of point " + std::to_string(i) + " is at squared distance " +
+             std::to_string(s) + ", the nearest background point at " +
+             std::to_string(n.d2[static_cast<std::size_t>(i)]);
+    }
+  }
+  return std::nullopt;
+}
+
+// --- skeleton.homotopic -----------------------------------------------------------------------
+
+// Betti numbers of the object by the oracles of betti.euler (b0, b1 in 2D; b0, b1, b2 in 3D).
+std::vector<BigInt> betti_by_oracle(const Image<std::uint8_t>& img, const AdjacencyPair& pair) {
+  const bool cubes = pair.object == 8 || pair.object == 26;
+  const std::int64_t chi = euler_by_cells(img, cubes);
+  const std::int64_t b0 = count_components_bfs(img, pair.object, true, false);
+  const std::int64_t bounded = count_components_bfs(img, pair.background, false, true);
+  if (img.dim() == 2) return {BigInt(b0), BigInt(bounded)};
+  return {BigInt(b0), BigInt(b0 + bounded - chi), BigInt(bounded)};
+}
+
+Record skeleton_generate(Rng& rng, const Params& params) {
+  const int dim = rng.chance(2, 3) ? 2 : 3;
+  const auto side = static_cast<std::int64_t>(dim == 2 ? params.max_size
+                                                       : std::min<std::size_t>(params.max_size, 5));
+  Record r;
+  r.fields.push_back(random_image(rng, dim, side));
+  r.text("adjacency", kPairs[(dim == 2 ? 0 : 2) + rng.below(2)]);
+  r.text("skeleton", rng.chance(1, 2) ? "ultimate" : "curve");
+  return r;
+}
+
+bool skeleton_valid(const Record& c, const Params& params) {
+  if (!image_shape_ok(c.at("image"), params.max_size)) return false;
+  const auto& s = c.at("skeleton").texts.at(0);
+  return s == "ultimate" || s == "curve";
+}
+
+std::vector<BigInt> values_of(const Image<std::uint8_t>& img) {
+  std::vector<BigInt> v;
+  for (auto x : img.values()) v.push_back(BigInt(x != 0 ? 1 : 0));
+  return v;
+}
+
+// The answer's skeleton is judged against the object (its reference value); its Betti numbers
+// as the command reports them must be the object's.
+Record skeleton_oracle(const Record& c) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  const AdjacencyPair pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), img.dim());
+  auto b = betti_by_oracle(img, pair);
+  const std::size_t nb = b.size();
+  Record r;
+  r.array("skeleton", shape_of(img.domain()), values_of(img), Shrink::none, true);
+  r.at("skeleton").judged = true;
+  return r.array("betti", {nb}, std::move(b));
+}
+
+Record skeleton_compute(const Record& c, IntKind) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  ThinningOptions opt;
+  opt.pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), img.dim());
+  opt.skeleton = parse_skeleton_kind(c.at("skeleton").texts.at(0));
+  opt.threads = 1;
+  const ThinningResult t = homotopic_thinning(img, opt);
+  const BettiNumbers bn = betti_numbers(t.skeleton, opt.pair, 1);
+  std::vector<BigInt> b;
+  for (int k = 0; k < img.dim(); ++k) b.push_back(BigInt(bn.b[static_cast<std::size_t>(k)]));
+  const std::size_t nb = b.size();
+  Record r;
+  r.array("skeleton", shape_of(img.domain()), values_of(t.skeleton), Shrink::none, true);
+  return r.array("betti", {nb}, std::move(b));
+}
+
+// The configuration of point i of a 2D or 3D image (bits of kernel/simple_points.hpp; outside:
+// background), read here point by point.
+std::uint32_t configuration_at(const Image<std::uint8_t>& img, std::int64_t i) {
+  const Domain& d = img.domain();
+  const int dim = d.dim();
+  const auto p = coords(d, i);
+  std::uint32_t config = 0;
+  for (int m = 0; m < (dim == 2 ? 9 : 27); ++m) {
+    int o[3] = {0, 0, 0};
+    int t = m;
+    for (int a = 0; a < dim; ++a) {
+      o[a] = t % 3 - 1;
+      t /= 3;
+    }
+    if (o[0] == 0 && o[1] == 0 && o[2] == 0) continue;
+    std::int64_t j = 0;
+    bool inside = true;
+    for (int a = 0; a < dim; ++a) {
+      const std::int64_t x = p[static_cast<std::size_t>(a)] + o[a];
+      if (x < 0 || x >= d.extent(a)) inside = false;
+      j = j * d.extent(a) + x;
+    }
+    if (inside && img[j] != 0) config |= std::uint32_t{1} << neighbour_bit(dim, o[0], o[1], o[2]);
+  }
+  return config;
+}
+
+// Homotopic thinning keeps the topology (the Betti numbers of the skeleton, by the oracles, are
+// the object's), stays in the object, and leaves no deletable point: every point is not simple
+// (2D: Yokoi's number; 3D: the topological numbers), or, for a curve skeleton, an end point
+// (exactly one object point among its 3^d - 1 neighbours).
+std::optional<std::string> skeleton_judge(const Record& c, const Record& expected,
+                                          const Record& got) {
+  if (!got.has("skeleton")) return std::nullopt;
+  const Field& object = c.at("image");
+  const Field& f = got.at("skeleton");
+  if (f.shape != object.shape) return "the skeleton has not the image's shape";
+  for (std::size_t i = 0; i < f.ints.size(); ++i) {
+    if (f.ints[i] != 0 && f.ints[i] != 1) return "the skeleton is not a 0/1 image";
+    if (f.ints[i] == 1 && object.ints[i] == 0) {
+      return "point " + std::to_string(i) + " of the skeleton is not in the object";
+    }
+  }
+  Field g = f;
+  g.name = "image";
+  const Image<std::uint8_t> skel = image_of(g);
+  const AdjacencyPair pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), skel.dim());
+  const auto b = betti_by_oracle(skel, pair);
+  if (b != expected.at("betti").ints) {
+    std::string t;
+    for (const auto& x : b) t += (t.empty() ? "" : " ") + x.str();
+    return "the skeleton's Betti numbers (by the oracle) are " + t + ", not the object's";
+  }
+  const bool curve = c.at("skeleton").texts.at(0) == "curve";
+  for (std::int64_t i = 0; i < skel.size(); ++i) {
+    if (skel[i] == 0) continue;
+    const std::uint32_t config = configuration_at(skel, i);
+    if (curve && __builtin_popcount(config) == 1) continue; // an end point
+    const bool simple = skel.dim() == 2 ? simple_by_yokoi(pair.object, config)
+                                        : is_simple_by_definition(pair, config);
+    if (simple) {
+      return "point " + std::to_string(i) + " of the skeleton is simple: thinning could go on";
+    }
+  }
+  return std::nullopt;
+}
+
 // --- simple_point.lut ---------------------------------------------------------------------------
 
 // Yokoi, Toriwaki and Fukumura (CGIP 4, 1975): with x_1 .. x_8 the 8 neighbours in cyclic order
@@ -409,6 +646,52 @@ void add_image_properties(std::vector<Property>& out) {
     p.oracle = betti_oracle;
     p.compute = betti_compute;
     p.judge = betti_judge;
+    out.push_back(std::move(p));
+  }
+  {
+    Property p;
+    p.name = "voronoi.l2.nearest";
+    p.theorem = "the discrete Voronoi map of the background (separable exact transform) gives "
+                "every point a background point at the smallest squared Euclidean distance "
+                "(any of them among ties)";
+    p.source = "oracle: every pair of points (brute force); algorithm: Maurer, Qi and Raghavan, "
+               "PAMI 25 (2003); Breu, Gil, Kirkpatrick and Werman, PAMI 17 (1995)";
+    p.operation = "transform voronoi";
+    p.sizes = "image side <= max-size (3D images: <= 6); bits unused";
+    p.cost = Cost::moderate;
+    p.types = {IntKind::int64};
+    p.uses_bits = false;
+    p.default_max_size = 12;
+    p.max_max_size = 64;
+    p.generate = dt_generate;
+    p.valid = dt_valid;
+    p.request = dt_request;
+    p.oracle = voronoi_oracle;
+    p.compute = voronoi_compute;
+    p.judge = voronoi_judge;
+    out.push_back(std::move(p));
+  }
+  {
+    Property p;
+    p.name = "skeleton.homotopic";
+    p.theorem = "homotopic thinning (ultimate or curve skeleton) returns a subset of the object "
+                "with the object's Betti numbers in which no point is simple, except the end "
+                "points of a curve skeleton";
+    p.source = "oracle: Betti numbers by breadth-first search and cell counting, simplicity by "
+               "Yokoi's number (2D) and topological numbers (3D); algorithm: Pudney, CVIU 72 "
+               "(1998); Bertrand, PRL 15 (1994)";
+    p.operation = "topology skeleton";
+    p.sizes = "image side <= max-size (3D images: <= 5); bits unused";
+    p.cost = Cost::moderate;
+    p.types = {IntKind::int64};
+    p.uses_bits = false;
+    p.default_max_size = 10;
+    p.max_max_size = 32;
+    p.generate = skeleton_generate;
+    p.valid = skeleton_valid;
+    p.oracle = skeleton_oracle;
+    p.compute = skeleton_compute;
+    p.judge = skeleton_judge;
     out.push_back(std::move(p));
   }
   {

@@ -42,6 +42,7 @@ const std::vector<Property>& registry() {
     add_dss_properties(v);
     add_hull_properties(v);
     add_image_properties(v);
+    add_plane_properties(v);
     std::sort(v.begin(), v.end(),
               [](const Property& a, const Property& b) { return a.name < b.name; });
     return v;
@@ -85,6 +86,7 @@ std::optional<std::string> equal_fields(const Record& expected, const Record& go
   }
   for (const auto& f : expected.fields) {
     if (!got.has(f.name)) return "the answer has no field '" + f.name + "'";
+    if (f.judged) continue; // the property's judge has checked it
     const Field& g = got.at(f.name);
     if (!(g == f)) {
       return "field '" + f.name + "' is " + to_json(g) + ", the oracle says " + to_json(f);
@@ -169,12 +171,13 @@ void shrink(const Property& p, const Params& params, const Options& opt, AnswerS
 } // namespace
 
 void AnswerSource::send_all(const Property&, const std::vector<Record>& requests) {
-  kept_ = requests;
+  kept_.insert(kept_.end(), requests.begin(), requests.end());
 }
 
 Answers AnswerSource::receive_all(const Property& p, const std::vector<Record>& schemas) {
   Answers a;
-  for (std::size_t j = 0; j < kept_.size(); ++j) {
+  const std::size_t n = std::min(schemas.size(), kept_.size());
+  for (std::size_t j = 0; j < n; ++j) {
     try {
       a.got.push_back(answer(p, kept_[j], schemas[j]));
     } catch (const ExternalFailure& e) {
@@ -182,7 +185,7 @@ Answers AnswerSource::receive_all(const Property& p, const std::vector<Record>& 
       break;
     }
   }
-  kept_.clear();
+  kept_.erase(kept_.begin(), kept_.begin() + static_cast<std::ptrdiff_t>(n));
   return a;
 }
 
@@ -329,12 +332,44 @@ Report run_check(const Property& p, const Params& params, const Options& opt) {
         failure = std::move(f);
       }
     };
+    // Batches sent to the external command whose answers are not read yet (at most one).
+    struct Batch {
+      std::int64_t k0 = 0;
+      std::vector<std::uint64_t> seeds;
+      std::vector<Record> cases, expected;
+    };
+    std::optional<Batch> prev;
+    // Reads and judges the answers to a batch; false when the command failed.
+    auto finish_batch = [&](Batch& b) {
+      Answers a = ext->receive_all(p, b.expected);
+      for (std::size_t j = 0; j < b.cases.size(); ++j) {
+        const auto k = b.k0 + static_cast<std::int64_t>(j);
+        if (j < a.got.size()) {
+          record(
+              k, b.seeds[j], b.cases[j],
+              {judge_answer(p, b.cases[j], std::move(b.expected[j]), std::move(a.got[j])), false});
+        } else {
+          if (a.failure) {
+            Verdict v;
+            v.holds = false;
+            v.why = *a.failure;
+            record(k, b.seeds[j], b.cases[j], {std::move(v), true});
+          }
+          return false;
+        }
+      }
+      return true;
+    };
+    auto flush = [&]() {
+      if (prev) finish_batch(*prev);
+      prev.reset();
+    };
     for (;;) {
       const std::int64_t k0 = next.fetch_add(block);
-      if (k0 >= opt.runs || k0 > first_fail.load()) return;
+      if (k0 >= opt.runs || k0 > first_fail.load()) return flush();
       if (opt.time_budget_s > 0 && seconds_since(t0) > opt.time_budget_s) {
         out_of_time = true;
-        return;
+        return flush();
       }
       const std::int64_t k1 = std::min(opt.runs, k0 + block);
       if (block == 1) {
@@ -343,40 +378,32 @@ Report run_check(const Property& p, const Params& params, const Options& opt) {
         Record c = p.generate(rng, params);
         record(k0, s, c, evaluate_caught(p, c, params.type, ext.get()));
       } else {
-        // A batch of requests in flight: the command answers while the oracle works.
-        std::vector<std::uint64_t> seeds;
-        std::vector<Record> cases, expected, requests;
+        // Two batches in flight: batch k + 1 is sent before the answers to batch k are read
+        // and judged, so that the command is never idle while zdg generates, parses and judges
+        // (the oracle of a batch runs while the command answers it).
+        Batch b;
+        b.k0 = k0;
+        std::vector<Record> requests;
         for (std::int64_t k = k0; k < k1; ++k) {
-          seeds.push_back(case_seed(opt.seed, static_cast<std::uint64_t>(k)));
-          Rng rng(seeds.back());
-          cases.push_back(p.generate(rng, params));
-          requests.push_back(p.request_of(cases.back()));
+          b.seeds.push_back(case_seed(opt.seed, static_cast<std::uint64_t>(k)));
+          Rng rng(b.seeds.back());
+          b.cases.push_back(p.generate(rng, params));
+          requests.push_back(p.request_of(b.cases.back()));
         }
         ext->send_all(p, requests);
-        for (const auto& c : cases) {
+        if (prev && !finish_batch(*prev)) {
+          prev.reset();
+          return; // the command is gone: the later cases are not run
+        }
+        for (const auto& c : b.cases) {
           try {
-            expected.push_back(p.oracle(c));
+            b.expected.push_back(p.oracle(c));
           } catch (const Error& e) {
             throw InvalidArgument("check: the oracle of " + p.name + " refused the case " +
                                   to_json(c) + ": " + e.what());
           }
         }
-        Answers a = ext->receive_all(p, expected);
-        for (std::size_t j = 0; j < cases.size(); ++j) {
-          const auto k = k0 + static_cast<std::int64_t>(j);
-          if (j < a.got.size()) {
-            record(k, seeds[j], cases[j],
-                   {judge_answer(p, cases[j], std::move(expected[j]), std::move(a.got[j])), false});
-          } else {
-            if (a.failure) {
-              Verdict v;
-              v.holds = false;
-              v.why = *a.failure;
-              record(k, seeds[j], cases[j], {std::move(v), true});
-            }
-            break; // the command is gone: the later cases are not run
-          }
-        }
+        prev = std::move(b);
       }
       if (id == 0 && opt.progress && seconds_since(last_progress) > 0.25) {
         last_progress = Clock::now();

@@ -194,5 +194,6 @@ void add_arith_properties(std::vector<Property>& out);
 void add_dss_properties(std::vector<Property>& out);
 void add_hull_properties(std::vector<Property>& out);
 void add_image_properties(std::vector<Property>& out);
+void add_plane_properties(std::vector<Property>& out);
 
 } // namespace zdg::check

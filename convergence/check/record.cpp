@@ -122,6 +122,27 @@ void append_string(std::string& out, const std::string& s) {
 }
 
 void append_array(std::string& out, const Field& f, std::size_t axis, std::size_t& pos) {
+  if (axis == 0 && f.shape.size() == 2 && !f.columns.empty() && f.columns.size() == f.shape[1]) {
+    out += '[';
+    for (std::size_t k = 0; k < f.shape[0]; ++k) {
+      if (k > 0) out += ',';
+      out += '{';
+      for (std::size_t c = 0; c < f.shape[1]; ++c) {
+        if (c > 0) out += ',';
+        append_string(out, f.columns[c]);
+        out += ':';
+        const std::string v = f.ints[pos++].str();
+        if (f.numbers) {
+          out += v;
+        } else {
+          append_string(out, v);
+        }
+      }
+      out += '}';
+    }
+    out += ']';
+    return;
+  }
   out += '[';
   for (std::size_t k = 0; k < f.shape[axis]; ++k) {
     if (k > 0) out += ',';

@@ -7,6 +7,7 @@
 //   {"n":"5","m":"7","a":"-3","b":"12"}               four integers (as decimal strings)
 //   {"points":[["0","0"],["1","1"]],"connectivity":"8"} a path and an integer
 //   {"image":[[0,1],[1,1]]}                            an image (small values as numbers)
+//   {"segments":[{"begin":0,"end":3,"a":"1","b":"2","mu":"0"}]}  rows as objects (columns)
 //
 // Shrinking (Hughes and Claessen's QuickCheck, ICFP 2000; Hypothesis' greedy reduction): each
 // field says how it may be simplified, shrink_candidates() lists the simpler records in the
@@ -49,6 +50,13 @@ struct Field {
   bool flag = false;              // boolean
   bool numbers = false;           // array written as JSON numbers instead of strings
   Shrink shrink = Shrink::none;
+  /// A rank-2 array {n, k} written as a list of n objects with these k keys (e.g. the segments
+  /// {"begin","end","a","b","mu"} of a tangential cover); empty: nested lists.
+  std::vector<std::string> columns;
+  /// In an oracle's answer: a field the property's judge checks (any of several right answers
+  /// is accepted: a nearest site among ties, a skeleton), not compared by equality; its value is
+  /// a reference for the judge and the report.
+  bool judged = false;
 };
 
 class Record {

@@ -168,9 +168,9 @@ void ExternalCommand::send(const std::vector<std::string>& lines) {
   }
 }
 
-void ExternalCommand::receive(std::vector<std::string>& answers) {
+void ExternalCommand::receive(std::vector<std::string>& answers, std::size_t count) {
   answers.clear();
-  const std::size_t want = in_flight_.size();
+  const std::size_t want = std::min(count, in_flight_.size());
   const auto timeout = std::chrono::milliseconds(static_cast<long long>(timeout_s_ * 1000));
   auto deadline = Clock::now() + timeout; // renewed by every answer
   auto request = [&]() { return cut(in_flight_[answers.size()]); };
@@ -241,7 +241,7 @@ void ExternalCommand::receive(std::vector<std::string>& answers) {
       if (r > 0) buffer_.append(buf, static_cast<std::size_t>(r));
     }
   }
-  in_flight_.clear();
+  in_flight_.erase(in_flight_.begin(), in_flight_.begin() + static_cast<std::ptrdiff_t>(want));
 }
 
 std::vector<std::string> ExternalCommand::exchange_all(const std::vector<std::string>& lines) {
@@ -292,11 +292,16 @@ void ExternalCommand::send_all(const check::Property&, const std::vector<check::
 check::Answers ExternalCommand::receive_all(const check::Property&,
                                             const std::vector<check::Record>& schemas) {
   check::Answers a;
-  const std::vector<std::string> lines = in_flight_;
+  // The first schemas.size() requests in flight are this batch (a later one may follow).
+  const std::vector<std::string> lines(
+      in_flight_.begin(), in_flight_.begin() + static_cast<std::ptrdiff_t>(
+                                                   std::min(schemas.size(), in_flight_.size())));
   std::vector<std::string> answers; // those read before a failure too
   std::optional<std::string> failure;
   try {
-    receive(answers);
+    if (pid_ < 0 && !schemas.empty())
+      throw check::ExternalFailure("the external command is not running");
+    receive(answers, schemas.size());
   } catch (const check::ExternalFailure& e) {
     failure = e.what();
   }
@@ -351,6 +356,22 @@ void read_array(const nlohmann::json& v, std::size_t axis, std::size_t rank, che
   }
 }
 
+// A list of objects, each with the keys f.columns (integer values): rows of an {n, k} array.
+void read_rows(const nlohmann::json& v, check::Field& f) {
+  const std::string what = "a list of objects with integer fields";
+  if (!v.is_array()) malformed(f.name, what);
+  for (const auto& row : v) {
+    if (!row.is_object()) malformed(f.name, what);
+    for (const auto& key : f.columns) {
+      if (!row.contains(key)) malformed(f.name, what + " (a row has no '" + key + "')");
+      auto x = json_integer(row.at(key));
+      if (!x) malformed(f.name, what + " ('" + key + "' is not an integer)");
+      f.ints.push_back(*x);
+    }
+  }
+  f.shape = {v.size(), f.columns.size()};
+}
+
 } // namespace
 
 check::Record record_from_answer(const nlohmann::json& j, const check::Record& schema) {
@@ -390,7 +411,12 @@ check::Record record_from_answer(const nlohmann::json& j, const check::Record& s
       g.name = f.name;
       g.kind = FieldKind::array;
       g.numbers = f.numbers;
-      read_array(v, 0, f.shape.size(), g);
+      g.columns = f.columns;
+      if (!f.columns.empty()) {
+        read_rows(v, g);
+      } else {
+        read_array(v, 0, f.shape.size(), g);
+      }
       r.fields.push_back(std::move(g));
       break;
     }

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <sys/types.h>
@@ -33,6 +34,7 @@ public:
                        const check::Record& schema) override;
   /// Pipelined: the requests go out at once (what the pipe takes), the command works while
   /// zdg's oracle does, the rest is written while the answers are read (poll on both pipes).
+  /// Batches queue: receive_all reads the answers to the oldest schemas.size() requests.
   void send_all(const check::Property& p, const std::vector<check::Record>& requests) override;
   check::Answers receive_all(const check::Property& p,
                              const std::vector<check::Record>& schemas) override;
@@ -45,8 +47,9 @@ public:
   std::vector<std::string> exchange_all(const std::vector<std::string>& lines);
   /// The two halves of exchange_all.
   void send(const std::vector<std::string>& lines);
-  /// The answers to the requests in flight; on a failure, `answers` holds those read before.
-  void receive(std::vector<std::string>& answers);
+  /// The answers to the first `count` requests in flight (all by default); on a failure,
+  /// `answers` holds those read before.
+  void receive(std::vector<std::string>& answers, std::size_t count = SIZE_MAX);
 
 private:
   std::string command_;

@@ -19,8 +19,12 @@
 #include <zdg/kernel/betti_numbers.hpp>
 #include <zdg/kernel/convex_body_hull.hpp>
 #include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/homotopic_thinning.hpp>
 #include <zdg/kernel/lattice_hull_2d.hpp>
 #include <zdg/kernel/lattice_polygon.hpp>
+#include <zdg/kernel/maximal_segments.hpp>
+#include <zdg/kernel/plane_probing.hpp>
+#include <zdg/kernel/voronoi_map.hpp>
 
 #include <cerrno>
 #include <functional>
@@ -197,23 +201,32 @@ json serve_christoffel(const json& j) {
   return r.value;
 }
 
-json serve_dss_recognize(const json& j) {
-  auto pts = points_field(j);
+// Connectivity of a path: the request's "connectivity" (4 or 8) or, absent, 4 when every step
+// is an axis step, else 8 (as zdg dss recognize and zdg dss cover choose).
+Connectivity path_connectivity(const json& j, const std::vector<Point2<BigInt>>& pts,
+                               const char* op) {
   int forced = 0;
   if (j.contains("connectivity")) {
     auto c = json_integer(j.at("connectivity"));
-    if (!c || (*c != 4 && *c != 8)) throw InvalidArgument("dss recognize: connectivity is 4 or 8");
+    if (!c || (*c != 4 && *c != 8))
+      throw InvalidArgument(std::string(op) + ": connectivity is 4 or 8");
     forced = static_cast<int>(c->convert_to<long>());
   }
   Connectivity c = Connectivity::four;
   for (std::size_t k = 1; k < pts.size(); ++k) {
     if (abs(BigInt(pts[k].x - pts[k - 1].x)) == 1 && abs(BigInt(pts[k].y - pts[k - 1].y)) == 1) {
       if (forced == 4)
-        throw InvalidArgument("dss recognize: a diagonal step in a 4-connected path");
+        throw InvalidArgument(std::string(op) + ": a diagonal step in a 4-connected path");
       c = Connectivity::eight;
     }
   }
   if (forced == 8) c = Connectivity::eight;
+  return c;
+}
+
+json serve_dss_recognize(const json& j) {
+  auto pts = points_field(j);
+  const Connectivity c = path_connectivity(j, pts, "dss recognize");
   auto r = recognize_dss_exact(std::span<const Point2<BigInt>>(pts), c);
   json o{{"is_dss", r.value.is_dss}, {"connectivity", c == Connectivity::four ? 4 : 8}};
   if (r.value.is_dss) {
@@ -289,15 +302,107 @@ json serve_topology_betti(const json& j) {
           {"betti", betti}};
 }
 
+json serve_dss_cover(const json& j) {
+  const auto big = points_field(j);
+  const Connectivity c = path_connectivity(j, big, "dss cover");
+  const bool closed =
+      j.contains("closed") && j.at("closed").is_boolean() && j.at("closed").get<bool>();
+  const bool greedy =
+      j.contains("greedy") && j.at("greedy").is_boolean() && j.at("greedy").get<bool>();
+  std::vector<Point2<std::int64_t>> pts;
+  for (const auto& p : big) {
+    try {
+      pts.push_back({int_cast<Int64>(p.x).value(), int_cast<Int64>(p.y).value()});
+    } catch (const OverflowError&) {
+      throw InvalidArgument("dss cover: a coordinate beyond 64 bits (cover works on int64 points)");
+    }
+  }
+  auto segs = greedy ? greedy_segmentation_exact(pts, closed, c).value
+                     : maximal_segments_exact(pts, closed, c).value;
+  json arr = json::array();
+  for (const auto& s : segs) {
+    arr.push_back({{"begin", s.begin},
+                   {"end", s.end},
+                   {"a", std::to_string(s.a)},
+                   {"b", std::to_string(s.b)},
+                   {"mu", to_string(Int128(s.mu))}});
+  }
+  return {{"closed", closed},
+          {"connectivity", c == Connectivity::four ? 4 : 8},
+          {"greedy", greedy},
+          {"segments", arr}};
+}
+
+json serve_transform_voronoi(const json& j) {
+  const auto img = image_field(j);
+  TransformOptions opt;
+  opt.metric = j.contains("metric") ? parse_metric(text_field(j, "metric")) : Metric::l2();
+  opt.threads = 1;
+  require_background(img, opt);
+  const VoronoiMap v = voronoi_map(img, opt);
+  std::vector<json> flat;
+  for (std::int64_t i = 0; i < img.size(); ++i) flat.push_back(v.site_point(i));
+  return {{"sites", nested(flat, img.domain())}, {"metric", opt.metric.name()}};
+}
+
+json serve_topology_skeleton(const json& j) {
+  const auto img = image_field(j);
+  ThinningOptions opt;
+  opt.pair = j.contains("adjacency") ? parse_adjacency_pair(text_field(j, "adjacency"), img.dim())
+                                     : default_adjacency_pair(img.dim());
+  opt.skeleton = parse_skeleton_kind(j.contains("skeleton") ? text_field(j, "skeleton") : "curve");
+  opt.threads = 1;
+  const ThinningResult t = homotopic_thinning(img, opt);
+  const BettiNumbers b = betti_numbers(t.skeleton, opt.pair, 1);
+  json betti = json::array();
+  for (int k = 0; k < opt.pair.dim; ++k)
+    betti.push_back(std::to_string(b.b[static_cast<std::size_t>(k)]));
+  std::vector<json> flat(t.skeleton.values().begin(), t.skeleton.values().end());
+  std::int64_t voxels = 0;
+  for (auto x : t.skeleton.values()) voxels += x != 0 ? 1 : 0;
+  return {{"skeleton", nested(flat, img.domain())},
+          {"adjacency", opt.pair.name()},
+          {"voxels", std::to_string(voxels)},
+          {"betti", betti},
+          {"deleted", std::to_string(t.deleted)}};
+}
+
+json serve_plane_probe(const json& j) {
+  const Point3<BigInt> n{integer_field(j, "a"), integer_field(j, "b"), integer_field(j, "c")};
+  const std::string alg = j.contains("algorithm") ? text_field(j, "algorithm") : "r";
+  if (alg != "h" && alg != "r") throw InvalidArgument("plane probe: algorithm is h or r");
+  auto r = probe_standard_plane_exact(n, alg == "h" ? ProbingAlgorithm::h : ProbingAlgorithm::r);
+  const auto& p = r.value;
+  auto point = [](const Point3<BigInt>& q) {
+    return json::array({q.x.str(), q.y.str(), q.z.str()});
+  };
+  json frame = json::array();
+  for (const auto& m : p.frame) frame.push_back(point(m));
+  return {{"normal", point(p.normal)},
+          {"algorithm", alg},
+          {"steps", p.steps},
+          {"predicate_calls", p.predicate_calls},
+          {"frame", frame},
+          {"apex", point(p.apex)},
+          {"integer_type", std::string(to_string(r.served))}};
+}
+
 using Handler = json (*)(const json&);
 
 const std::map<std::string, Handler>& handlers() {
-  static const std::map<std::string, Handler> h = {
-      {"floor-sum", serve_floor_sum},           {"cf", serve_cf},
-      {"christoffel", serve_christoffel},       {"dss recognize", serve_dss_recognize},
-      {"dss subsegment", serve_dss_subsegment}, {"hull points", serve_hull_points},
-      {"hull disc", serve_hull_disc},           {"transform dt", serve_transform_dt},
-      {"topology betti", serve_topology_betti}};
+  static const std::map<std::string, Handler> h = {{"floor-sum", serve_floor_sum},
+                                                   {"cf", serve_cf},
+                                                   {"christoffel", serve_christoffel},
+                                                   {"dss recognize", serve_dss_recognize},
+                                                   {"dss subsegment", serve_dss_subsegment},
+                                                   {"hull points", serve_hull_points},
+                                                   {"hull disc", serve_hull_disc},
+                                                   {"transform dt", serve_transform_dt},
+                                                   {"topology betti", serve_topology_betti},
+                                                   {"dss cover", serve_dss_cover},
+                                                   {"transform voronoi", serve_transform_voronoi},
+                                                   {"topology skeleton", serve_topology_skeleton},
+                                                   {"plane probe", serve_plane_probe}};
   return h;
 }
 
@@ -358,9 +463,11 @@ void add_serve_commands(CLI::App& app, Context& /*ctx*/) {
   auto* cmd = app.add_subcommand(
       "serve", "Answer one JSON request per line of stdin (the --against protocol of zdg check) "
                "with zdg's own implementation of OPERATION");
-  cmd->footer("Operations: floor-sum, cf, christoffel, dss recognize, dss subsegment, hull "
-              "points, hull disc, transform dt, topology betti. Example:\n"
-              "  echo '{\"n\":\"5\",\"m\":\"7\",\"a\":\"-3\",\"b\":\"12\"}' | zdg serve floor-sum");
+  cmd->footer(
+      "Operations: floor-sum, cf, christoffel, dss recognize, dss subsegment, hull "
+      "points, hull disc, transform dt, topology betti, dss cover, transform voronoi, topology "
+      "skeleton, plane probe. Example:\n"
+      "  echo '{\"n\":\"5\",\"m\":\"7\",\"a\":\"-3\",\"b\":\"12\"}' | zdg serve floor-sum");
   cmd->add_option("OPERATION", *words, "the operation, e.g. floor-sum or dss recognize")
       ->required()
       ->expected(1, 2);

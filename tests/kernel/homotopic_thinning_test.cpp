@@ -1,6 +1,7 @@
 #include <zdg/kernel/homotopic_thinning.hpp>
 
 #include "tests/support/binary_images.hpp"
+#include "tests/support/check_registry.hpp"
 #include "tests/support/thinning_checks.hpp"
 #include "tests/support/tower.hpp"
 #include <zdg/arith/error.hpp>
@@ -224,4 +225,10 @@ TEST(HomotopicThinning, RefusesBadInput) {
 }
 
 } // namespace
+// The registered property skeleton.homotopic (zdg check): Betti numbers kept (by the
+// breadth-first and cell-counting oracles), no simple point left but curve end points.
+TEST(HomotopicThinning, RegisteredHomotopyPropertyHolds) {
+  test::expect_registered_property("skeleton.homotopic", IntKind::int64, 300);
+}
+
 } // namespace zdg

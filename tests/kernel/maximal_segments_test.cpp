@@ -4,6 +4,7 @@
 // the structure of the cover on convex curves; huge translations.
 #include <zdg/kernel/maximal_segments.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/contours.hpp"
 #include "tests/support/dss_oracle.hpp"
 #include "tests/support/tower.hpp"
@@ -236,6 +237,16 @@ TEST(MaximalSegments, RejectsCurvesThatAreNotPaths) {
   EXPECT_THROW(maximal_segments<Int64>(Curve{{0, 0}, {1, 1}}, false, Connectivity::four),
                InvalidArgument);
   EXPECT_THROW(greedy_segmentation<Int64>(Curve{{0, 0}, {0, 0}}, false), InvalidArgument);
+}
+
+// The registered property dss.cover.maximal (zdg check): open paths of <= 12 points against the
+// longest DSS from every point by brute force, on every integer type of the tower.
+template <class I>
+class MaximalSegmentsTyped : public ::testing::Test {};
+TYPED_TEST_SUITE(MaximalSegmentsTyped, zdg::test::TowerTypes, zdg::test::TowerNames);
+
+TYPED_TEST(MaximalSegmentsTyped, RegisteredCoverPropertyHolds) {
+  zdg::test::expect_registered_property("dss.cover.maximal", zdg::int_kind<TypeParam>(), 200);
 }
 
 } // namespace

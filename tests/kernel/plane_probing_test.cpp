@@ -11,6 +11,7 @@
 // - bad input: a zero component, a non-primitive normal, too many steps.
 #include <zdg/kernel/plane_probing.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 
 #include <numeric>
@@ -127,6 +128,12 @@ TYPED_TEST(PlaneProbingTest, BadInputIsRefused) {
   EXPECT_THROW(probe_standard_plane<I>({I(2), I(4), I(6)}, ProbingAlgorithm::h), InvalidArgument);
   EXPECT_THROW(probe_standard_plane<I>({I(1), I(50), I(101)}, ProbingAlgorithm::h, 3),
                InvalidArgument);
+}
+
+// The registered property plane.probe.normal (zdg check): the exact normal within ||N||_1 - 3
+// steps, both algorithms, every octant, starting on each integer type.
+TYPED_TEST(PlaneProbingTest, RegisteredNormalPropertyHolds) {
+  zdg::test::expect_registered_property("plane.probe.normal", zdg::int_kind<TypeParam>(), 200);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include <zdg/kernel/voronoi_map.hpp>
 
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/transform_oracle.hpp"
 #include <zdg/kernel/distance_transform.hpp>
@@ -118,4 +119,10 @@ TEST(VoronoiMap, NoBackgroundIsAnError) {
 }
 
 } // namespace
+// The registered property voronoi.l2.nearest (zdg check): every site is a nearest background
+// point, against every pair of points.
+TEST(VoronoiMap, RegisteredNearestSitePropertyHolds) {
+  test::expect_registered_property("voronoi.l2.nearest", IntKind::int64, 300);
+}
+
 } // namespace zdg

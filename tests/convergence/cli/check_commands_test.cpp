@@ -42,9 +42,11 @@ TEST(CheckCommand, ListNamesEveryPropertyWithItsTheoremAndCost) {
     EXPECT_FALSE(p["source"].get<std::string>().empty());
     EXPECT_TRUE(p["cost"] == "cheap" || p["cost"] == "moderate" || p["cost"] == "heavy");
   }
-  for (const char* n : {"floor_sum.oracle", "cf.roundtrip", "christoffel.factorization",
-                        "dss.recognize.minimal", "dss.subsegment", "hull.points.brute_force",
-                        "hull.disc.pick", "dt.l2.brute_force", "betti.euler", "simple_point.lut"}) {
+  for (const char* n :
+       {"floor_sum.oracle", "cf.roundtrip", "christoffel.factorization", "dss.recognize.minimal",
+        "dss.subsegment", "hull.points.brute_force", "hull.disc.pick", "dt.l2.brute_force",
+        "betti.euler", "simple_point.lut", "dss.cover.maximal", "voronoi.l2.nearest",
+        "skeleton.homotopic", "plane.probe.normal"}) {
     EXPECT_TRUE(names.count(n)) << n;
   }
   auto text = zdg::test::run_zdg("check --list");
@@ -79,7 +81,11 @@ TEST(CheckCommand, ZdgServeAnswersPassEveryOperationProperty) {
                                                      {"hull.points.brute_force", "hull points"},
                                                      {"hull.disc.pick", "hull disc"},
                                                      {"dt.l2.brute_force", "transform dt"},
-                                                     {"betti.euler", "topology betti"}};
+                                                     {"betti.euler", "topology betti"},
+                                                     {"dss.cover.maximal", "dss cover"},
+                                                     {"voronoi.l2.nearest", "transform voronoi"},
+                                                     {"skeleton.homotopic", "topology skeleton"},
+                                                     {"plane.probe.normal", "plane probe"}};
   for (const auto& [prop, op] : ops) {
     auto r = run_json(std::string("check ") + prop + " --runs 60 --seed 9 --against '" + kZdg +
                           " serve " + op + "'",
@@ -156,6 +162,44 @@ TEST(CheckCommand, PlantedBugOnOneOctantIsCaughtAndShrunk) {
   auto r = zdg::test::run_zdg(f["replay"].get<std::string>().substr(4) + " --json --quiet");
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(json::parse(r.out)["results"][0]["failure"]["case"], f["case"]);
+}
+
+// Planted bugs in the image, cover and plane operations (check_planted/op_proxy.py).
+json planted(const std::string& property, const std::string& bug) {
+  return failure_of("check " + property + " --type int64 --runs 2000 --seed 1 --against " +
+                    python("op_proxy.py", kZdg + " " + bug));
+}
+
+TEST(CheckCommand, PlantedCoverBugOnFourConnectedPathsIsCaughtAndShrunk) {
+  json f = planted("dss.cover.maximal", "cover-naive");
+  EXPECT_EQ(f["case"]["connectivity"], "4");
+  EXPECT_LE(f["case"]["points"].size(), 3u) << f.dump();
+  EXPECT_EQ(f["case"]["points"][0], json::array({"0", "0"}));
+  EXPECT_NE(f["expected"]["segments"], f["answer"]["segments"]);
+}
+
+TEST(CheckCommand, PlantedVoronoiBugInTheMetricIsCaughtAndShrunk) {
+  json f = planted("voronoi.l2.nearest", "voronoi-l1");
+  // l1 and l2 nearest sites differ first on an image of at most 3 x 3 points.
+  std::size_t points = 1;
+  for (const json* v = &f["case"]["image"]; v->is_array(); v = &(*v)[0]) points *= v->size();
+  EXPECT_LE(points, 9u) << f.dump();
+  EXPECT_NE(f["why"].get<std::string>().find("squared distance"), std::string::npos) << f.dump();
+}
+
+TEST(CheckCommand, PlantedSkeletonBugIn3DIsCaughtAndShrunk) {
+  json f = planted("skeleton.homotopic", "skeleton-3d");
+  const json& img = f["case"]["image"];
+  ASSERT_TRUE(img[0][0].is_array()) << f.dump(); // a 3D image: the bug is right in 2D
+  EXPECT_LE(img.size() * img[0].size() * img[0][0].size(), 8u) << f.dump();
+}
+
+TEST(CheckCommand, PlantedProbingBugOnOneOctantIsCaughtAndShrunk) {
+  json f = planted("plane.probe.normal", "probe-octant");
+  const json& c = f["case"];
+  EXPECT_EQ(c["a"], "-1") << f.dump(); // shrunk to the smallest normal of that octant
+  EXPECT_EQ(c["b"], "1") << f.dump();
+  EXPECT_EQ(c["c"], "1") << f.dump();
 }
 
 TEST(CheckCommand, InProcessReplayAndSeedsAreDeterministic) {
