@@ -6,12 +6,15 @@
 #include <zdg/kernel/distance_transform.hpp>
 #include <zdg/kernel/homotopic_thinning.hpp>
 #include <zdg/kernel/image.hpp>
+#include <zdg/kernel/image_surfaces.hpp>
+#include <zdg/kernel/image_surfels.hpp>
 #include <zdg/kernel/simple_points.hpp>
 #include <zdg/kernel/voronoi_map.hpp>
 
 #include <array>
 #include <cstdlib>
 #include <functional>
+#include <set>
 #include <vector>
 
 namespace zdg::check {
@@ -556,6 +559,224 @@ std::optional<std::string> skeleton_judge(const Record& c, const Record& expecte
   return std::nullopt;
 }
 
+// --- surface.counts ----------------------------------------------------------------------------
+
+// A 3D image: random voxels, or a union of one to three boxes (whose boundaries are mostly free
+// of pinches, where the border theorem applies), with at least one object voxel.
+Record surface_generate(Rng& rng, const Params& params) {
+  const auto side = static_cast<std::int64_t>(params.max_size);
+  Field f;
+  if (rng.chance(1, 2)) {
+    f = random_image(rng, 3, side);
+  } else {
+    f.name = "image";
+    f.kind = FieldKind::array;
+    f.numbers = true;
+    f.shrink = Shrink::image;
+    for (int k = 0; k < 3; ++k) f.shape.push_back(static_cast<std::size_t>(rng.range(1, side)));
+    f.ints.assign(shape_size(f.shape), BigInt(0));
+    const auto boxes = rng.range(1, 3);
+    for (std::int64_t b = 0; b < boxes; ++b) {
+      std::int64_t lo[3], hi[3];
+      for (int k = 0; k < 3; ++k) {
+        const auto e = static_cast<std::int64_t>(f.shape[static_cast<std::size_t>(k)]);
+        lo[k] = rng.range(0, e - 1);
+        hi[k] = rng.range(lo[k], e - 1);
+      }
+      for (std::int64_t z = lo[0]; z <= hi[0]; ++z)
+        for (std::int64_t y = lo[1]; y <= hi[1]; ++y)
+          for (std::int64_t x = lo[2]; x <= hi[2]; ++x)
+            f.ints[static_cast<std::size_t>((z * static_cast<std::int64_t>(f.shape[1]) + y) *
+                                                static_cast<std::int64_t>(f.shape[2]) +
+                                            x)] = 1;
+    }
+  }
+  f.ints[rng.below(f.ints.size())] = 1;
+  Record r;
+  r.fields.push_back(std::move(f));
+  r.text("adjacency", kPairs[2 + rng.below(2)]);
+  return r;
+}
+
+bool surface_valid(const Record& c, const Params& params) {
+  const Field& f = c.at("image");
+  if (!image_shape_ok(f, params.max_size) || f.shape.size() != 3) return false;
+  for (const auto& x : f.ints) {
+    if (x != 0) return true;
+  }
+  return false;
+}
+
+const std::vector<std::string> kComponentColumns = {"euler", "surfaces", "surfels", "voxels"};
+
+struct SurfaceTruth {
+  std::int64_t surfels = 0, voxels = 0, pinched = 0, borders = 0;
+  std::vector<BigInt> betti;
+};
+
+// Everything by brute force on the padded image (outside: background): surfels are the
+// (object, background) face-adjacent pairs; a pinched pointel is a 2x2x2 block whose object
+// (pair 26,6) or background (6,26) is exactly two opposite voxels; the borders are the
+// face-adjacent pairs (k-component of X, kbar-component of the complement).
+SurfaceTruth surface_truth(const Image<std::uint8_t>& img, const AdjacencyPair& pair) {
+  const Domain& d = img.domain();
+  const std::int64_t n0 = d.extent(0) + 2, n1 = d.extent(1) + 2, n2 = d.extent(2) + 2;
+  const Domain big({n0, n1, n2});
+  std::vector<std::uint8_t> in(static_cast<std::size_t>(big.size()), 0);
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    const auto p = coords(d, i);
+    if (img[i] != 0) in[static_cast<std::size_t>(((p[0] + 1) * n1 + p[1] + 1) * n2 + p[2] + 1)] = 1;
+  }
+  // Components of X (k) and of the complement (kbar) on the padded box.
+  auto label = [&](bool object, int k) {
+    std::vector<std::int64_t> lab(in.size(), -1);
+    std::int64_t count = 0;
+    for (std::int64_t s = 0; s < big.size(); ++s) {
+      if (lab[static_cast<std::size_t>(s)] >= 0 || (in[static_cast<std::size_t>(s)] != 0) != object)
+        continue;
+      std::vector<std::int64_t> stack = {s};
+      lab[static_cast<std::size_t>(s)] = count;
+      while (!stack.empty()) {
+        const auto p = coords(big, stack.back());
+        stack.pop_back();
+        for (int m = 0; m < 27; ++m) {
+          const std::int64_t o[3] = {m / 9 - 1, m / 3 % 3 - 1, m % 3 - 1};
+          const auto l1 = std::llabs(o[0]) + std::llabs(o[1]) + std::llabs(o[2]);
+          if (l1 == 0 || (k == 6 && l1 > 1)) continue;
+          const std::int64_t q0 = p[0] + o[0], q1 = p[1] + o[1], q2 = p[2] + o[2];
+          if (q0 < 0 || q1 < 0 || q2 < 0 || q0 >= n0 || q1 >= n1 || q2 >= n2) continue;
+          const auto j = static_cast<std::size_t>((q0 * n1 + q1) * n2 + q2);
+          if (lab[j] >= 0 || (in[j] != 0) != object) continue;
+          lab[j] = count;
+          stack.push_back(static_cast<std::int64_t>(j));
+        }
+      }
+      ++count;
+    }
+    return lab;
+  };
+  const auto lx = label(true, pair.object), lb = label(false, pair.background);
+  SurfaceTruth t;
+  std::set<std::pair<std::int64_t, std::int64_t>> borders;
+  for (std::int64_t s = 0; s < big.size(); ++s) {
+    if (in[static_cast<std::size_t>(s)] == 0) continue;
+    ++t.voxels;
+    const auto p = coords(big, s);
+    for (int a = 0; a < 3; ++a) {
+      for (int sg : {-1, 1}) {
+        auto q = p;
+        q[static_cast<std::size_t>(a)] += sg;
+        const auto j = static_cast<std::size_t>((q[0] * n1 + q[1]) * n2 + q[2]);
+        if (in[j] != 0) continue;
+        ++t.surfels;
+        borders.insert({lx[static_cast<std::size_t>(s)], lb[j]});
+      }
+    }
+  }
+  t.borders = static_cast<std::int64_t>(borders.size());
+  const bool object_pinches = pair.object == 26;
+  for (std::int64_t z = 0; z + 1 < n0; ++z) {
+    for (std::int64_t y = 0; y + 1 < n1; ++y) {
+      for (std::int64_t x = 0; x + 1 < n2; ++x) {
+        std::vector<int> members;
+        for (int m = 0; m < 8; ++m) {
+          const auto j = static_cast<std::size_t>(((z + (m >> 2)) * n1 + y + ((m >> 1) & 1)) * n2 +
+                                                  x + (m & 1));
+          if ((in[j] != 0) == object_pinches) members.push_back(m);
+        }
+        if (members.size() == 2 && (members[0] ^ members[1]) == 7) ++t.pinched;
+      }
+    }
+  }
+  t.betti = betti_by_oracle(img, pair);
+  return t;
+}
+
+Record surface_oracle(const Record& c) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  const AdjacencyPair pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), 3);
+  const SurfaceTruth t = surface_truth(img, pair);
+  const BigInt chi = t.betti[0] - t.betti[1] + t.betti[2];
+  Record r;
+  r.text("adjacency", pair.name());
+  r.integer("surfels", BigInt(t.surfels));
+  r.integer("euler", chi);
+  r.array("betti", {3}, t.betti);
+  r.integer("pinched_pointels", BigInt(t.pinched));
+  // Judged: without pinched pointels, one surface per border (Herman's theorem); with them,
+  // at least one surface per border (a pinch may split a border's surface or not).
+  r.integer("surfaces", BigInt(t.borders));
+  r.at("surfaces").judged = true;
+  // Judged: the sums of the per-component rows (one reference row of totals).
+  r.array("components", {1, 4},
+          {BigInt(2) * chi + BigInt(2 * t.pinched), BigInt(t.borders), BigInt(t.surfels),
+           BigInt(t.voxels)});
+  r.at("components").columns = kComponentColumns;
+  r.at("components").judged = true;
+  return r;
+}
+
+Record surface_compute(const Record& c, IntKind) {
+  const Image<std::uint8_t> img = image_of(c.at("image"));
+  const AdjacencyPair pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), 3);
+  const ImageSurfels sf = image_surfels(img, 1);
+  const ImageSurfaces ss = image_surfaces(img, sf, SurfaceConvention::of(pair), 1);
+  const BettiNumbers bn = betti_numbers(img, pair, 1);
+  std::int64_t euler_sum = 0, voxels = 0;
+  for (auto v : img.values()) voxels += v != 0 ? 1 : 0;
+  for (const auto& s : ss.surfaces) euler_sum += s.euler;
+  const auto nsurf = static_cast<std::int64_t>(ss.surfaces.size());
+  Record r;
+  r.text("adjacency", pair.name());
+  r.integer("surfels", BigInt(static_cast<std::int64_t>(sf.codes.size())));
+  r.integer("euler", BigInt(bn.euler));
+  r.array("betti", {3}, {BigInt(bn.b[0]), BigInt(bn.b[1]), BigInt(bn.b[2])});
+  r.integer("pinched_pointels", BigInt(ss.pinched_pointels));
+  r.integer("surfaces", BigInt(nsurf));
+  // One row for the whole object: the per-component split is the command's business.
+  r.array("components", {1, 4},
+          {BigInt(euler_sum), BigInt(nsurf), BigInt(static_cast<std::int64_t>(sf.codes.size())),
+           BigInt(voxels)});
+  r.at("components").columns = kComponentColumns;
+  return r;
+}
+
+std::optional<std::string> surface_judge(const Record&, const Record& expected, const Record& got) {
+  if (got.has("components")) {
+    const Field& rows = got.at("components");
+    const Field& ref = expected.at("components");
+    BigInt sums[4] = {0, 0, 0, 0};
+    for (std::size_t i = 0; i < rows.shape[0]; ++i) {
+      for (std::size_t k = 0; k < 4; ++k) sums[k] += rows.ints[i * 4 + k];
+    }
+    const char* what[4] = {"Euler characteristics (2 chi(X) + 2 pinched pointels)", "surfaces",
+                           "surfels", "voxels"};
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (k == 1) continue; // judged with the surfaces below
+      if (sums[k] != ref.ints[k]) {
+        return std::string("the components' ") + what[k] + " sum to " + sums[k].str() +
+               ", the oracle says " + ref.ints[k].str();
+      }
+    }
+    if (got.has("surfaces") && sums[1] != got.int_of("surfaces")) {
+      return "the components' surfaces sum to " + sums[1].str() +
+             ", not to surfaces = " + got.int_of("surfaces").str();
+    }
+  }
+  if (got.has("surfaces")) {
+    const BigInt& n = got.int_of("surfaces");
+    const BigInt& borders = expected.int_of("surfaces");
+    const bool pinched = expected.int_of("pinched_pointels") != 0;
+    if (pinched ? n < borders : n != borders) {
+      return "surfaces = " + n.str() +
+             " but the (object, background) component pairs that touch "
+             "are " +
+             borders.str() + (pinched ? " (at least that many surfaces)" : "");
+    }
+  }
+  return std::nullopt;
+}
+
 // --- simple_point.lut ---------------------------------------------------------------------------
 
 // Yokoi, Toriwaki and Fukumura (CGIP 4, 1975): with x_1 .. x_8 the 8 neighbours in cyclic order
@@ -692,6 +913,30 @@ void add_image_properties(std::vector<Property>& out) {
     p.oracle = skeleton_oracle;
     p.compute = skeleton_compute;
     p.judge = skeleton_judge;
+    out.push_back(std::move(p));
+  }
+  {
+    Property p;
+    p.name = "surface.counts";
+    p.theorem = "the boundary of a 3D object has as many surfels as (object, background) face "
+                "pairs; its closed surfaces, one per touching pair (k-component, kbar-component) "
+                "when no pointel is pinched (Herman), have Euler characteristics summing to "
+                "2 chi(X) + 2 (pinched pointels); b0, b1, b2 and chi are the object's";
+    p.source = "oracle: face pairs, components and 2x2x2 blocks by brute force, Betti numbers as "
+               "betti.euler; Herman, CVGIP: Graphical Models 54 (1992); Kong and Rosenfeld, "
+               "CVGIP 48 (1989); Lachaud and Montanvert, Graphical Models 62 (2000)";
+    p.operation = "surface";
+    p.sizes = "3D image side <= max-size; pairs 6,26 and 26,6; bits unused";
+    p.cost = Cost::moderate;
+    p.types = {IntKind::int64};
+    p.uses_bits = false;
+    p.default_max_size = 4;
+    p.max_max_size = 12;
+    p.generate = surface_generate;
+    p.valid = surface_valid;
+    p.oracle = surface_oracle;
+    p.compute = surface_compute;
+    p.judge = surface_judge;
     out.push_back(std::move(p));
   }
   {

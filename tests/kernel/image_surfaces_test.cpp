@@ -4,6 +4,7 @@
 #include <zdg/kernel/digital_surface.hpp>
 
 #include "tests/support/binary_images.hpp"
+#include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
 #include "tests/support/volumes.hpp"
 
@@ -165,6 +166,12 @@ TEST(ImageSurfaces, RefusesOtherPairs) {
   EXPECT_THROW(SurfaceConvention::of(26, 26), zdg::InvalidArgument);
   EXPECT_THROW(SurfaceConvention::of(18, 26), zdg::InvalidArgument);
   EXPECT_THROW(SurfaceConvention::of(4, 8), zdg::InvalidArgument);
+}
+
+// The registered property surface.counts (zdg check): surfels, Herman's one surface per
+// touching (component, background component) pair without pinches, the Euler sum formula.
+TEST(ImageSurfaces, RegisteredCountsPropertyHolds) {
+  zdg::test::expect_registered_property("surface.counts", zdg::IntKind::int64, 300);
 }
 
 } // namespace

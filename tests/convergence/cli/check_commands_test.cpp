@@ -46,7 +46,7 @@ TEST(CheckCommand, ListNamesEveryPropertyWithItsTheoremAndCost) {
        {"floor_sum.oracle", "cf.roundtrip", "christoffel.factorization", "dss.recognize.minimal",
         "dss.subsegment", "hull.points.brute_force", "hull.disc.pick", "dt.l2.brute_force",
         "betti.euler", "simple_point.lut", "dss.cover.maximal", "voronoi.l2.nearest",
-        "skeleton.homotopic", "plane.probe.normal"}) {
+        "skeleton.homotopic", "plane.probe.normal", "surface.counts"}) {
     EXPECT_TRUE(names.count(n)) << n;
   }
   auto text = zdg::test::run_zdg("check --list");
@@ -85,7 +85,8 @@ TEST(CheckCommand, ZdgServeAnswersPassEveryOperationProperty) {
                                                      {"dss.cover.maximal", "dss cover"},
                                                      {"voronoi.l2.nearest", "transform voronoi"},
                                                      {"skeleton.homotopic", "topology skeleton"},
-                                                     {"plane.probe.normal", "plane probe"}};
+                                                     {"plane.probe.normal", "plane probe"},
+                                                     {"surface.counts", "surface"}};
   for (const auto& [prop, op] : ops) {
     auto r = run_json(std::string("check ") + prop + " --runs 60 --seed 9 --against '" + kZdg +
                           " serve " + op + "'",
@@ -200,6 +201,15 @@ TEST(CheckCommand, PlantedProbingBugOnOneOctantIsCaughtAndShrunk) {
   EXPECT_EQ(c["a"], "-1") << f.dump(); // shrunk to the smallest normal of that octant
   EXPECT_EQ(c["b"], "1") << f.dump();
   EXPECT_EQ(c["c"], "1") << f.dump();
+}
+
+TEST(CheckCommand, PlantedSurfaceBugForgettingCavitiesIsCaughtAndShrunk) {
+  json f = planted("surface.counts", "surface-cavities");
+  const json& img = f["case"]["image"];
+  // The smallest object with a cavity: a 3 x 3 x 3 image at most.
+  EXPECT_LE(img.size() * img[0].size() * img[0][0].size(), 27u) << f.dump();
+  EXPECT_NE(f["why"].get<std::string>().find("component pairs that touch"), std::string::npos)
+      << f.dump();
 }
 
 TEST(CheckCommand, InProcessReplayAndSeedsAreDeterministic) {
