@@ -8,7 +8,7 @@ packages=(
   libgmp-dev libboost-dev libeigen3-dev libcgal-dev
   librapidcheck-dev libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev pybind11-dev
-  zlib1g-dev libnifti2-dev libpng-dev
+  zlib1g-dev libnifti2-dev libpng-dev libsuitesparse-dev
   python3 python3-dev python3-numpy python3-scipy python3-matplotlib python3-nibabel
   python3-pytest python3-hypothesis
 )

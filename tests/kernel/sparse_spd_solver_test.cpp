@@ -1,0 +1,81 @@
+#include <zdg/kernel/sparse_spd_solver.hpp>
+
+#include "tests/support/tower.hpp"
+
+#include <zdg/arith/error.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace {
+
+// A = B^T B + I for a random sparse B is SPD: the solver's x satisfies A x = b to rounding
+// (the residual is the oracle), with every backend zdg was built with, and both backends
+// agree.
+TEST(SparseSpdSolver, SolvesRandomSpdSystemsOnEveryBackend) {
+  zdg::test::check_property([] {
+    const auto n = *rc::gen::inRange<std::int64_t>(1, 30);
+    std::vector<zdg::SparseTriplet> tb;
+    const int nb = *rc::gen::inRange(0, 60);
+    for (int k = 0; k < nb; ++k)
+      tb.push_back({*rc::gen::inRange<std::int64_t>(0, n), *rc::gen::inRange<std::int64_t>(0, n),
+                    double(*rc::gen::inRange(-4, 5))});
+    const auto b = zdg::SparseMatrix::from_triplets(n, n, tb);
+    // B^T B as the sum over rows r of B of the outer products of the row.
+    std::vector<zdg::SparseTriplet> ta;
+    for (std::int64_t r = 0; r < n; ++r)
+      for (auto k = b.row_start[std::size_t(r)]; k < b.row_start[std::size_t(r) + 1]; ++k)
+        for (auto l = b.row_start[std::size_t(r)]; l < b.row_start[std::size_t(r) + 1]; ++l)
+          ta.push_back({b.column[std::size_t(k)], b.column[std::size_t(l)],
+                        b.value[std::size_t(k)] * b.value[std::size_t(l)]});
+    for (std::int64_t i = 0; i < n; ++i) ta.push_back({i, i, 1.0});
+    const auto a = zdg::SparseMatrix::from_triplets(n, n, ta);
+    std::vector<double> rhs(static_cast<std::size_t>(n));
+    for (auto& v : rhs) v = *rc::gen::inRange(-10, 11);
+    std::vector<zdg::SpdBackend> backends{zdg::SpdBackend::eigen_ldlt};
+    if (zdg::SparseSpdSolver::cholmod_available()) backends.push_back(zdg::SpdBackend::cholmod);
+    std::vector<std::vector<double>> xs;
+    for (auto be : backends) {
+      const zdg::SparseSpdSolver s(a, be);
+      RC_ASSERT(s.backend() == be);
+      const auto x = s.solve(rhs);
+      const auto ax = a.multiply(x);
+      double scale = 1;
+      for (auto v : a.value) scale = std::max(scale, std::abs(v));
+      for (std::size_t i = 0; i < rhs.size(); ++i)
+        RC_ASSERT(std::abs(ax[i] - rhs[i]) <= 1e-9 * scale * (1 + std::abs(rhs[i])));
+      xs.push_back(x);
+    }
+    for (std::size_t k = 1; k < xs.size(); ++k)
+      for (std::size_t i = 0; i < xs[0].size(); ++i)
+        RC_ASSERT(std::abs(xs[k][i] - xs[0][i]) <= 1e-8 * (1 + std::abs(xs[0][i])));
+  });
+}
+
+TEST(SparseSpdSolver, AutomaticTakesCholmodWhenBuiltWithIt) {
+  const auto a = zdg::SparseMatrix::diagonal(std::vector<double>{2, 3});
+  const zdg::SparseSpdSolver s(a);
+  EXPECT_EQ(s.backend(), zdg::SparseSpdSolver::cholmod_available() ? zdg::SpdBackend::cholmod
+                                                                   : zdg::SpdBackend::eigen_ldlt);
+  const auto x = s.solve(std::vector<double>{4, 9});
+  EXPECT_DOUBLE_EQ(x[0], 2.0);
+  EXPECT_DOUBLE_EQ(x[1], 3.0);
+  EXPECT_EQ(zdg::spd_backend_name(s.backend()),
+            zdg::SparseSpdSolver::cholmod_available() ? "cholmod" : "eigen-simplicial-ldlt");
+}
+
+TEST(SparseSpdSolver, RefusesIndefiniteNonSquareAndWrongSizes) {
+  const auto indefinite = zdg::SparseMatrix::diagonal(std::vector<double>{1, -1});
+  EXPECT_THROW(zdg::SparseSpdSolver(indefinite, zdg::SpdBackend::eigen_ldlt), zdg::Error);
+  if (zdg::SparseSpdSolver::cholmod_available())
+    EXPECT_THROW(zdg::SparseSpdSolver(indefinite, zdg::SpdBackend::cholmod), zdg::Error);
+  else
+    EXPECT_THROW(zdg::SparseSpdSolver(indefinite, zdg::SpdBackend::cholmod), zdg::InvalidArgument);
+  EXPECT_THROW(zdg::SparseSpdSolver(zdg::SparseMatrix::from_triplets(2, 3, {})),
+               zdg::InvalidArgument);
+  const zdg::SparseSpdSolver s(zdg::SparseMatrix::diagonal(std::vector<double>{1, 1}));
+  EXPECT_THROW(s.solve(std::vector<double>{1}), zdg::InvalidArgument);
+}
+
+} // namespace
