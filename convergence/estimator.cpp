@@ -39,6 +39,7 @@ const std::vector<Estimator>& estimators() {
     detail::register_3d_estimators(v);
     detail::register_hausdorff_estimators(v);
     detail::register_jet_estimators(v);
+    detail::register_calculus_estimators(v);
     return v;
   }();
   return all;

@@ -49,9 +49,10 @@ P3 newton(const Polynomial& f, P3 q) {
 class PolyShape3 final : public Shape3 {
 public:
   PolyShape3(std::string spec, Polynomial f, double lo, double hi, std::optional<double> volume,
-             ShapeClass regularity)
+             ShapeClass regularity, std::optional<double> area = std::nullopt)
       : spec_(std::move(spec)), sign_(std::make_shared<const PolynomialSign>(std::move(f))),
-        f_(&sign_->polynomial()), lo_(lo), hi_(hi), volume_(volume), regularity_(regularity) {}
+        f_(&sign_->polynomial()), lo_(lo), hi_(hi), volume_(volume), area_(area),
+        regularity_(regularity) {}
   ShapeClass shape_class() const override { return regularity_; }
   std::string spec() const override { return spec_; }
   std::optional<std::vector<std::pair<double, double>>> bounding_box() const override {
@@ -75,6 +76,7 @@ public:
     return at_point_ ? implicit_surface_geometry(*f_, p) : project_implicit_surface(*f_, p);
   }
   std::optional<double> volume() const override { return volume_; }
+  std::optional<double> area() const override { return area_; }
   /// The same solid whose ground truth is the geometry of F's level set at the query point
   /// itself (the `unprojected:` kind).
   std::unique_ptr<Shape> unprojected() const {
@@ -89,7 +91,7 @@ private:
   std::shared_ptr<const PolynomialSign> sign_;
   const Polynomial* f_; // sign_->polynomial()
   double lo_, hi_;
-  std::optional<double> volume_;
+  std::optional<double> volume_, area_;
   ShapeClass regularity_;
   bool at_point_ = false;
 };
@@ -148,6 +150,24 @@ std::optional<double> named_volume(const std::string& name) {
   if (name == "rcube") {
     // |x|^4 + |y|^4 + |z|^4 <= a^4: 8 a^3 Gamma(5/4)^3 / Gamma(7/4).
     return 8.0 * 729.0 * std::pow(std::tgamma(1.25), 3) / std::tgamma(1.75);
+  }
+  return std::nullopt;
+}
+
+// Surface areas: 4 pi r^2; the torus 4 pi^2 R r; the ellipsoid with half-axes a >= b >= c by
+// Legendre's formula 2 pi c^2 + 2 pi a b (E(phi, k) sin^2 phi + F(phi, k) cos^2 phi) / sin phi,
+// cos phi = c / a, k^2 = a^2 (b^2 - c^2) / (b^2 (a^2 - c^2)) (incomplete elliptic integrals).
+std::optional<double> named_area(const std::string& name) {
+  constexpr double pi = std::numbers::pi;
+  if (name == "sphere1") return 4.0 * pi;
+  if (name == "sphere9") return 4.0 * pi * 81.0;
+  if (name == "torus") return 4.0 * pi * pi * 6.0 * 2.0;
+  if (name == "ellipsoid") {
+    const double a = std::sqrt(90.0), b = std::sqrt(45.0), c = std::sqrt(30.0);
+    const double phi = std::acos(c / a), s = std::sin(phi);
+    const double k = std::sqrt(a * a * (b * b - c * c) / (b * b * (a * a - c * c)));
+    return 2 * pi * c * c +
+           2 * pi * a * b / s * (std::ellint_2(k, phi) * s * s + std::ellint_1(k, phi) * (1 - s * s));
   }
   return std::nullopt;
 }
@@ -347,7 +367,7 @@ void register_3d_shapes(std::vector<ShapeKind>& kinds) {
            }
            return std::make_unique<PolyShape3>(named.name, Polynomial::parse(named.polynomial, 3),
                                                named.lo, named.hi, named_volume(named.name),
-                                               named.regularity);
+                                               named.regularity, named_area(named.name));
          }});
   }
 }

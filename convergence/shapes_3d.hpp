@@ -61,6 +61,8 @@ public:
   /// The nearest surface point of p (untranslated frame) with its curvatures.
   virtual SurfacePoint3 project(Point3<double> p) const = 0;
   virtual std::optional<double> volume() const { return std::nullopt; }
+  /// The area of the surface when known in closed form (spheres, torus, ellipsoid).
+  virtual std::optional<double> area() const { return std::nullopt; }
 };
 
 /// The differential geometry of the surface F = 0 at q (q need not lie exactly on it: the
