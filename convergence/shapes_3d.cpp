@@ -167,7 +167,8 @@ std::optional<double> named_area(const std::string& name) {
     const double phi = std::acos(c / a), s = std::sin(phi);
     const double k = std::sqrt(a * a * (b * b - c * c) / (b * b * (a * a - c * c)));
     return 2 * pi * c * c +
-           2 * pi * a * b / s * (std::ellint_2(k, phi) * s * s + std::ellint_1(k, phi) * (1 - s * s));
+           2 * pi * a * b / s *
+               (std::ellint_2(k, phi) * s * s + std::ellint_1(k, phi) * (1 - s * s));
   }
   return std::nullopt;
 }

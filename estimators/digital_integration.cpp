@@ -25,8 +25,7 @@ std::vector<double> surfel_measure(std::span<const Point3<double>> estimated_nor
   return mu;
 }
 
-std::vector<double> surfel_weights(std::span<const double> measure,
-                                   std::span<const double> areas) {
+std::vector<double> surfel_weights(std::span<const double> measure, std::span<const double> areas) {
   same_size(measure.size(), areas.size(), "measures and areas differ in number");
   std::vector<double> w(measure.size());
   for (std::size_t i = 0; i < w.size(); ++i) w[i] = measure[i] * areas[i];

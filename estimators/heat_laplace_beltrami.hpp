@@ -67,10 +67,10 @@ public:
 private:
   double t_ = 0, rho_ = 0;
   unsigned threads_ = 0;
-  std::vector<std::int64_t> order_;       // sorted position -> input index
-  std::vector<double> x_, y_, z_, w_;     // by sorted position
-  std::vector<std::int64_t> cell_start_;  // cells in sorted order: [cell_start_[c], [c + 1])
-  std::vector<std::int64_t> neighbours_;  // per cell: up to 27 neighbour cells, -1 padded
+  std::vector<std::int64_t> order_;      // sorted position -> input index
+  std::vector<double> x_, y_, z_, w_;    // by sorted position
+  std::vector<std::int64_t> cell_start_; // cells in sorted order: [cell_start_[c], [c + 1])
+  std::vector<std::int64_t> neighbours_; // per cell: up to 27 neighbour cells, -1 padded
 
   template <class Fn>
   void for_each_pair_of_cell(std::int64_t cell, Fn&& fn) const;

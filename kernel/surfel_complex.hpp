@@ -36,7 +36,7 @@
 namespace zdg {
 
 struct SurfelLinel {
-  std::int64_t a = 0, b = 0;    ///< its pointels
+  std::int64_t a = 0, b = 0;          ///< its pointels
   std::array<std::int64_t, 2> face{}; ///< face[0] runs a -> b, face[1] runs b -> a
 };
 
@@ -54,8 +54,8 @@ struct SurfelComplex {
   std::int64_t pointel_count() const { return static_cast<std::int64_t>(pointels.size()); }
   /// The surfel across side i of surfel s.
   std::int64_t neighbour(std::int64_t s, int i) const {
-    const auto& e = linels[static_cast<std::size_t>(surfel_linels[static_cast<std::size_t>(s)]
-                                                                 [static_cast<std::size_t>(i)])];
+    const auto& e = linels[static_cast<std::size_t>(
+        surfel_linels[static_cast<std::size_t>(s)][static_cast<std::size_t>(i)])];
     return e.face[0] == s ? e.face[1] : e.face[0];
   }
 };

@@ -14,12 +14,10 @@
 #include <string>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const char* const ops[] = {"floor-sum",      "cf",
-                                    "dss recognize",  "dss subsegment",
-                                    "dss cover",      "hull points",
-                                    "transform dt",   "transform voronoi",
-                                    "topology betti", "topology skeleton",
-                                    "surface"};
+  static const char* const ops[] = {
+      "floor-sum",   "cf",           "dss recognize",     "dss subsegment", "dss cover",
+      "hull points", "transform dt", "transform voronoi", "topology betti", "topology skeleton",
+      "surface"};
   if (size == 0) return 0;
   const char* op = ops[data[0] % (sizeof ops / sizeof ops[0])];
   const std::string line(reinterpret_cast<const char*>(data + 1), size - 1);
