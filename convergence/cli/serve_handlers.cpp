@@ -157,7 +157,9 @@ json serve_floor_sum(const json& j) {
 }
 
 json serve_cf(const json& j) {
-  auto [p, q] = fraction_field(j, "fraction");
+  // Named copies, not structured bindings: clang 14 (the fuzz build) cannot capture those.
+  const auto pq = fraction_field(j, "fraction");
+  const BigInt p = pq.first, q = pq.second;
   struct Out {
     std::vector<BigInt> terms;
     json conv = json::array();
