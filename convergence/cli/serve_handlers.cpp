@@ -485,7 +485,9 @@ std::string serve_answer(const std::string& operation, const std::string& line) 
   } catch (const json::exception& e) {
     answer = {{"error", std::string("request: ") + e.what()}};
   }
-  return answer.dump();
+  // An error message may quote the request's bytes, which need not be UTF-8: replaced by
+  // U+FFFD rather than thrown at (dump's default), so that every answer is one line of JSON.
+  return answer.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
 } // namespace zdg::cli

@@ -273,6 +273,23 @@ TEST(ServeCommand, AnswersEachLineAndReportsErrorsInTheAnswer) {
   EXPECT_EQ(lines[3]["value"], "2");
 }
 
+// Regression (fuzz target serve_request, tests/fuzz/regressions/serve_request/): a request
+// that is not UTF-8 got an error message quoting its bytes, and writing that answer threw
+// (zdg serve ended in std::terminate). The answer is one line of JSON and the loop goes on.
+TEST(ServeCommand, RequestBytesThatAreNotUtf8GetAnErrorLine) {
+  auto r = zdg::test::run_zdg(
+      "serve topology skeleton",
+      "{\"image\":[[1,1,1],[1,1,1],[1,1,1]],\"adjacency\":\"8,4\",\xa2skeleton\":"
+      "\"curve\"}\n{\"image\":[[1,1],[1,1]]}\n");
+  EXPECT_EQ(r.status, 0) << r.err;
+  const auto nl = r.out.find('\n');
+  ASSERT_NE(nl, std::string::npos) << r.out;
+  const json first = json::parse(r.out.substr(0, nl));
+  EXPECT_TRUE(first.contains("error")) << r.out;
+  const json second = json::parse(r.out.substr(nl + 1));
+  EXPECT_TRUE(second.contains("skeleton")) << r.out; // the next request is answered
+}
+
 // examples/check-python: the naive programs and the counterexamples their README shows.
 TEST(CheckCommand, ExamplesFindTheirCounterexamples) {
   const std::string ex = std::string(ZDG_SOURCE_DIR) + "/examples/check-python/";
