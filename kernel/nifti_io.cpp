@@ -210,15 +210,27 @@ ScalarVolume read_nifti(const std::string& path) {
       // znzread reads at most 2^31 - 1 bytes a call through gzread: read in chunks.
       while (got < v.array.bytes.size()) {
         const std::size_t want = std::min<std::size_t>(v.array.bytes.size() - got, 1u << 30);
+        // znzread returns (size_t)-1 when gzread fails (corrupt deflate data, a bad CRC).
         const std::size_t n = znzread(v.array.bytes.data() + got, 1, want, f);
-        if (n == 0) break;
+        if (n == 0 || n > want) break;
         got += n;
       }
     }
+    // A .nii.gz is checked to its end: zlib verifies the stream's CRC only when it reads the
+    // trailer, so stopping at the last voxel would accept a corrupted payload.
+    bool crc_ok = true;
+    if (gz && at && got == v.array.bytes.size()) {
+      char rest[4096];
+      for (;;) {
+        const std::size_t n = znzread(rest, 1, sizeof rest, f);
+        if (n > sizeof rest) crc_ok = false; // (size_t)-1: a bad CRC or corrupt data
+        if (n == 0 || n > sizeof rest) break;
+      }
+    }
     znzclose(f);
-    if (!at || got != v.array.bytes.size()) {
+    if (!at || got != v.array.bytes.size() || !crc_ok) {
       throw IoError(path + ": truncated or corrupt NIfTI data (" + std::to_string(got) + " of " +
-                    std::to_string(bytes) + " bytes)");
+                    std::to_string(bytes) + " bytes" + (crc_ok ? "" : ", bad gzip CRC") + ")");
     }
   }
   if (nim->byteorder != nifti_short_order() && dtype_size(dtype) > 1) {

@@ -229,6 +229,15 @@ Record subsegment_compute(const Record& c, IntKind type) {
 
 const std::vector<std::string> kSegmentColumns = {"begin", "end", "a", "b", "mu"};
 
+// The answer's "segments": rows (begin, end, a, b, mu), written as objects.
+Record segments_record(std::vector<BigInt> rows) {
+  const std::size_t n = rows.size() / kSegmentColumns.size();
+  Record r;
+  r.array("segments", {n, kSegmentColumns.size()}, std::move(rows));
+  r.at("segments").columns = kSegmentColumns;
+  return r;
+}
+
 // Open paths of the recognizer's generator, the coordinates kept within 60 bits (the cover
 // reads int64 points and the path must not leave them).
 Record cover_generate(Rng& rng, const Params& params) {
@@ -254,7 +263,7 @@ Record cover_oracle(const Record& c) {
   const int conn = static_cast<int>(c.i64_of("connectivity"));
   const std::size_t n = pts.size();
   std::vector<BigInt> rows;
-  std::size_t rows_n = 0, last_end = 0;
+  std::size_t last_end = 0;
   for (std::size_t i = 0; i < n; ++i) {
     std::size_t e = i;
     std::optional<BruteDss> best =
@@ -275,12 +284,8 @@ Record cover_oracle(const Record& c) {
           ch.int_of("a"), ch.int_of("b"), ch.int_of("mu")}) {
       rows.push_back(v);
     }
-    ++rows_n;
   }
-  Record r;
-  r.array("segments", {rows_n, kSegmentColumns.size()}, std::move(rows));
-  r.at("segments").columns = kSegmentColumns;
-  return r;
+  return segments_record(std::move(rows));
 }
 
 Record cover_compute(const Record& c, IntKind type) {
@@ -301,10 +306,7 @@ Record cover_compute(const Record& c, IntKind type) {
       rows.push_back(v);
     }
   }
-  Record out;
-  out.array("segments", {r.value.size(), kSegmentColumns.size()}, std::move(rows));
-  out.at("segments").columns = kSegmentColumns;
-  return out.text("integer_type", std::string(to_string(r.served)));
+  return segments_record(std::move(rows)).text("integer_type", std::string(to_string(r.served)));
 }
 
 } // namespace

@@ -275,26 +275,38 @@ std::int64_t euler_by_cells(const Image<std::uint8_t>& img, bool cubes) {
   return chi;
 }
 
+// The topology of the object by the oracles above: chi by cell counting, b0 by breadth-first
+// search, the bounded background components (holes in 2D, cavities b2 in 3D: Alexander
+// duality), and b1 = b0 + b2 - chi in 3D. Shared by betti.euler, skeleton.homotopic and
+// surface.counts.
+struct OracleTopology {
+  std::int64_t euler = 0;
+  std::vector<BigInt> betti; // b0, b1 (2D); b0, b1, b2 (3D)
+};
+
+OracleTopology topology_by_oracle(const Image<std::uint8_t>& img, const AdjacencyPair& pair) {
+  const bool cubes = pair.object == 8 || pair.object == 26;
+  OracleTopology t;
+  t.euler = euler_by_cells(img, cubes);
+  const std::int64_t b0 = count_components_bfs(img, pair.object, true, false);
+  const std::int64_t bounded = count_components_bfs(img, pair.background, false, true);
+  if (img.dim() == 2) {
+    t.betti = {BigInt(b0), BigInt(bounded)};
+  } else {
+    t.betti = {BigInt(b0), BigInt(b0 + bounded - t.euler), BigInt(bounded)};
+  }
+  return t;
+}
+
 Record betti_oracle(const Record& c) {
   const Image<std::uint8_t> img = image_of(c.at("image"));
   const std::string& name = c.at("adjacency").texts.at(0);
-  const AdjacencyPair pair = parse_adjacency_pair(name, img.dim());
-  const bool cubes = pair.object == 8 || pair.object == 26;
-  const std::int64_t chi = euler_by_cells(img, cubes);
-  const std::int64_t b0 = count_components_bfs(img, pair.object, true, false);
-  // Bounded background components: holes in 2D, cavities (b2) in 3D (Alexander duality).
-  const std::int64_t bounded = count_components_bfs(img, pair.background, false, true);
-  std::vector<BigInt> b;
-  if (img.dim() == 2) {
-    b = {BigInt(b0), BigInt(bounded)};
-  } else {
-    b = {BigInt(b0), BigInt(b0 + bounded - chi), BigInt(bounded)};
-  }
-  const std::size_t nb = b.size();
+  OracleTopology t = topology_by_oracle(img, parse_adjacency_pair(name, img.dim()));
+  const std::size_t nb = t.betti.size();
   return Record()
       .text("adjacency", name)
-      .integer("euler", BigInt(chi))
-      .array("betti", {nb}, std::move(b));
+      .integer("euler", BigInt(t.euler))
+      .array("betti", {nb}, std::move(t.betti));
 }
 
 Record betti_compute(const Record& c, IntKind) {
@@ -430,16 +442,6 @@ std::optional<std::string> voronoi_judge(const Record& c, const Record&, const R
 
 // --- skeleton.homotopic -----------------------------------------------------------------------
 
-// Betti numbers of the object by the oracles of betti.euler (b0, b1 in 2D; b0, b1, b2 in 3D).
-std::vector<BigInt> betti_by_oracle(const Image<std::uint8_t>& img, const AdjacencyPair& pair) {
-  const bool cubes = pair.object == 8 || pair.object == 26;
-  const std::int64_t chi = euler_by_cells(img, cubes);
-  const std::int64_t b0 = count_components_bfs(img, pair.object, true, false);
-  const std::int64_t bounded = count_components_bfs(img, pair.background, false, true);
-  if (img.dim() == 2) return {BigInt(b0), BigInt(bounded)};
-  return {BigInt(b0), BigInt(b0 + bounded - chi), BigInt(bounded)};
-}
-
 Record skeleton_generate(Rng& rng, const Params& params) {
   const int dim = rng.chance(2, 3) ? 2 : 3;
   const auto side = static_cast<std::int64_t>(dim == 2 ? params.max_size
@@ -468,7 +470,7 @@ std::vector<BigInt> values_of(const Image<std::uint8_t>& img) {
 Record skeleton_oracle(const Record& c) {
   const Image<std::uint8_t> img = image_of(c.at("image"));
   const AdjacencyPair pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), img.dim());
-  auto b = betti_by_oracle(img, pair);
+  auto b = topology_by_oracle(img, pair).betti;
   const std::size_t nb = b.size();
   Record r;
   r.array("skeleton", shape_of(img.domain()), values_of(img), Shrink::none, true);
@@ -539,7 +541,7 @@ std::optional<std::string> skeleton_judge(const Record& c, const Record& expecte
   g.name = "image";
   const Image<std::uint8_t> skel = image_of(g);
   const AdjacencyPair pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), skel.dim());
-  const auto b = betti_by_oracle(skel, pair);
+  const auto b = topology_by_oracle(skel, pair).betti;
   if (b != expected.at("betti").ints) {
     std::string t;
     for (const auto& x : b) t += (t.empty() ? "" : " ") + x.str();
@@ -610,7 +612,7 @@ bool surface_valid(const Record& c, const Params& params) {
 const std::vector<std::string> kComponentColumns = {"euler", "surfaces", "surfels", "voxels"};
 
 struct SurfaceTruth {
-  std::int64_t surfels = 0, voxels = 0, pinched = 0, borders = 0;
+  std::int64_t surfels = 0, voxels = 0, pinched = 0, borders = 0, euler = 0;
   std::vector<BigInt> betti;
 };
 
@@ -688,7 +690,9 @@ SurfaceTruth surface_truth(const Image<std::uint8_t>& img, const AdjacencyPair& 
       }
     }
   }
-  t.betti = betti_by_oracle(img, pair);
+  const OracleTopology topo = topology_by_oracle(img, pair);
+  t.betti = topo.betti;
+  t.euler = topo.euler;
   return t;
 }
 
@@ -696,7 +700,7 @@ Record surface_oracle(const Record& c) {
   const Image<std::uint8_t> img = image_of(c.at("image"));
   const AdjacencyPair pair = parse_adjacency_pair(c.at("adjacency").texts.at(0), 3);
   const SurfaceTruth t = surface_truth(img, pair);
-  const BigInt chi = t.betti[0] - t.betti[1] + t.betti[2];
+  const BigInt chi(t.euler);
   Record r;
   r.text("adjacency", pair.name());
   r.integer("surfels", BigInt(t.surfels));

@@ -6,6 +6,7 @@
 #include <zdg/arith/dss_recognizer.hpp>
 #include <zdg/arith/escalate.hpp>
 #include <zdg/convergence/cli/commands.hpp>
+#include <zdg/convergence/cli/serve.hpp>
 #include <zdg/kernel/freeman_chain.hpp>
 #include <zdg/kernel/maximal_segments.hpp>
 #include <zdg/kernel/point_file.hpp>
@@ -122,18 +123,7 @@ void run_cover(const std::string& path, bool closed, bool greedy, int forced, bo
   auto segs = greedy ? greedy_segmentation_exact(pts, closed, c).value
                      : maximal_segments_exact(pts, closed, c).value;
   if (json) {
-    nlohmann::json arr = nlohmann::json::array();
-    for (const auto& s : segs) {
-      arr.push_back({{"begin", s.begin},
-                     {"end", s.end},
-                     {"a", std::to_string(s.a)},
-                     {"b", std::to_string(s.b)},
-                     {"mu", to_string(Int128(s.mu))}});
-    }
-    print_json({{"closed", closed},
-                {"connectivity", connectivity_number(c)},
-                {"greedy", greedy},
-                {"segments", arr}});
+    print_json(cover_json(segs, closed, c, greedy));
     return;
   }
   std::cout << (greedy ? "greedy segmentation" : "maximal segments") << " of "

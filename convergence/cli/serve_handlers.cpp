@@ -115,6 +115,22 @@ Image<std::uint8_t> image_field(const json& j) {
   return Image<std::uint8_t>(d, std::move(vals));
 }
 
+// The request's "adjacency" pair for an image of that dimension, or the default pair.
+AdjacencyPair adjacency_field(const json& j, int dim) {
+  return j.contains("adjacency") ? parse_adjacency_pair(text_field(j, "adjacency"), dim)
+                                 : default_adjacency_pair(dim);
+}
+
+// The transform options of a request ("metric", default l2; one thread), checked against the
+// image (a background point is needed).
+TransformOptions transform_field(const json& j, const Image<std::uint8_t>& img) {
+  TransformOptions opt;
+  opt.metric = j.contains("metric") ? parse_metric(text_field(j, "metric")) : Metric::l2();
+  opt.threads = 1;
+  require_background(img, opt);
+  return opt;
+}
+
 json nested(const std::vector<json>& flat, const Domain& d) {
   std::function<json(int, std::size_t&)> build = [&](int axis, std::size_t& pos) {
     json a = json::array();
@@ -274,10 +290,7 @@ json serve_hull_disc(const json& j) {
 
 json serve_transform_dt(const json& j) {
   const auto img = image_field(j);
-  TransformOptions opt;
-  opt.metric = j.contains("metric") ? parse_metric(text_field(j, "metric")) : Metric::l2();
-  opt.threads = 1;
-  require_background(img, opt);
+  const TransformOptions opt = transform_field(j, img);
   const auto dt = distance_transform<BigInt>(img, opt);
   std::vector<json> flat;
   for (const auto& v : dt.values()) {
@@ -292,9 +305,7 @@ json serve_transform_dt(const json& j) {
 
 json serve_topology_betti(const json& j) {
   const auto img = image_field(j);
-  const AdjacencyPair pair = j.contains("adjacency")
-                                 ? parse_adjacency_pair(text_field(j, "adjacency"), img.dim())
-                                 : default_adjacency_pair(img.dim());
+  const AdjacencyPair pair = adjacency_field(j, img.dim());
   const BettiNumbers b = betti_numbers(img, pair, 1);
   json betti = json::array();
   for (int k = 0; k < pair.dim; ++k)
@@ -322,26 +333,12 @@ json serve_dss_cover(const json& j) {
   }
   auto segs = greedy ? greedy_segmentation_exact(pts, closed, c).value
                      : maximal_segments_exact(pts, closed, c).value;
-  json arr = json::array();
-  for (const auto& s : segs) {
-    arr.push_back({{"begin", s.begin},
-                   {"end", s.end},
-                   {"a", std::to_string(s.a)},
-                   {"b", std::to_string(s.b)},
-                   {"mu", to_string(Int128(s.mu))}});
-  }
-  return {{"closed", closed},
-          {"connectivity", c == Connectivity::four ? 4 : 8},
-          {"greedy", greedy},
-          {"segments", arr}};
+  return cover_json(segs, closed, c, greedy);
 }
 
 json serve_transform_voronoi(const json& j) {
   const auto img = image_field(j);
-  TransformOptions opt;
-  opt.metric = j.contains("metric") ? parse_metric(text_field(j, "metric")) : Metric::l2();
-  opt.threads = 1;
-  require_background(img, opt);
+  const TransformOptions opt = transform_field(j, img);
   const VoronoiMap v = voronoi_map(img, opt);
   std::vector<json> flat;
   for (std::int64_t i = 0; i < img.size(); ++i) flat.push_back(v.site_point(i));
@@ -351,8 +348,7 @@ json serve_transform_voronoi(const json& j) {
 json serve_topology_skeleton(const json& j) {
   const auto img = image_field(j);
   ThinningOptions opt;
-  opt.pair = j.contains("adjacency") ? parse_adjacency_pair(text_field(j, "adjacency"), img.dim())
-                                     : default_adjacency_pair(img.dim());
+  opt.pair = adjacency_field(j, img.dim());
   opt.skeleton = parse_skeleton_kind(j.contains("skeleton") ? text_field(j, "skeleton") : "curve");
   opt.threads = 1;
   const ThinningResult t = homotopic_thinning(img, opt);
@@ -375,9 +371,7 @@ json serve_topology_skeleton(const json& j) {
 json serve_surface(const json& j) {
   const auto img = image_field(j);
   if (img.dim() != 3) throw InvalidArgument("surface: the image is not 3D");
-  const AdjacencyPair pair = j.contains("adjacency")
-                                 ? parse_adjacency_pair(text_field(j, "adjacency"), 3)
-                                 : default_adjacency_pair(3);
+  const AdjacencyPair pair = adjacency_field(j, 3);
   ComponentOptions copt;
   copt.threads = 1;
   const Components comps = connected_components(img, pair.object, copt);
@@ -460,6 +454,22 @@ const std::map<std::string, Handler>& handlers() {
 }
 
 } // namespace
+
+nlohmann::json cover_json(const std::vector<MaximalSegment>& segments, bool closed,
+                          Connectivity connectivity, bool greedy) {
+  json arr = json::array();
+  for (const auto& s : segments) {
+    arr.push_back({{"begin", s.begin},
+                   {"end", s.end},
+                   {"a", std::to_string(s.a)},
+                   {"b", std::to_string(s.b)},
+                   {"mu", to_string(Int128(s.mu))}});
+  }
+  return {{"closed", closed},
+          {"connectivity", connectivity == Connectivity::four ? 4 : 8},
+          {"greedy", greedy},
+          {"segments", arr}};
+}
 
 std::vector<std::string> serve_operations() {
   std::vector<std::string> ops;

@@ -280,6 +280,14 @@ TEST(NiftiIo, BadFilesAreOneLineErrors) {
     garbled[i] = static_cast<char>(~garbled[i]);
   spit(dir / "garbled.nii.gz", garbled);
   expect_io_error((dir / "garbled.nii.gz").string(), "garbled.nii.gz");
+  // Every byte decompresses but the gzip CRC is wrong: refused (the reader reads to the
+  // trailer), on a volume large enough that the header read does not reach it.
+  const ScalarVolume big = sample_volume(DType::U8, {64, 64, 64}, 7);
+  write_nifti((dir / "big.nii.gz").string(), big);
+  std::string crc = test::read_file(dir / "big.nii.gz");
+  crc[crc.size() - 8] = static_cast<char>(crc[crc.size() - 8] ^ 0x55);
+  spit(dir / "crc.nii.gz", crc);
+  expect_io_error((dir / "crc.nii.gz").string(), "truncated or corrupt NIfTI data");
   spit(dir / "text.nii", std::string(400, 'x'));
   expect_io_error((dir / "text.nii").string(), "not a NIfTI-1/2 file");
   spit(dir / "empty.nii", "");

@@ -4,6 +4,11 @@
 // only on one octant, are each caught within 2,000 runs and shrunk to a small input; zdg serve
 // passes 10,000 runs; a command that crashes, exits, hangs or answers garbage ends with exit 1
 // and one clear line.
+// What runs here: convergence/cli/serve_commands.cpp (the request loop) and serve_handlers.cpp
+// (the answers), convergence/cli/external_command.cpp and external_command.hpp (the pipes of
+// --against, two batches in flight), and the properties of convergence/check/
+// (arith_properties.cpp, dss_properties.cpp, hull_properties.cpp, image_properties.cpp,
+// plane_properties.cpp) through zdg check.
 #include "tests/support/cli.hpp"
 
 #include <nlohmann/json.hpp>

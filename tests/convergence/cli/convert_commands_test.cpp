@@ -136,6 +136,9 @@ void check_bad_inputs(bool files_half) {
   write_nifti(f.path("n.nii.gz"), make_scalar_volume(sample()));
   const std::string gz = f.bytes("n.nii.gz");
   std::ofstream(f.path("cut.nii.gz"), std::ios::binary) << gz.substr(0, gz.size() - 40);
+  std::string flipped = gz; // the gzip CRC: every byte decompresses, the check must refuse it
+  flipped[gz.size() - 8] = static_cast<char>(flipped[gz.size() - 8] ^ 0x55);
+  std::ofstream(f.path("corrupt.nii.gz"), std::ios::binary) << flipped;
   std::ofstream(f.path("big.vol"), std::ios::binary)
       << "X: 2147483647\nY: 2147483647\nZ: 2147483647\nVersion: 3\n.\nxxxx";
   std::ofstream(f.path("center.vol"), std::ios::binary)
@@ -155,6 +158,7 @@ void check_bad_inputs(bool files_half) {
       {"convert " + f("corrupt.vol") + " " + out, "zlib data", "corrupt.vol"},
       {"convert " + f("short.nii") + " " + out, "but the file has", "short.nii"},
       {"convert " + f("cut.nii.gz") + " " + out, "truncated or corrupt NIfTI data", "cut.nii.gz"},
+      {"convert " + f("corrupt.nii.gz") + " " + out, "NIfTI", "corrupt.nii.gz"},
       {"convert " + f("big.vol") + " " + out, "more voxels than 2^63 - 1", "big.vol"},
       {"convert " + f("center.vol") + " " + out, "outside the 64-bit lattice", "center.vol"},
       {"convert " + f("four.raw") + " " + out +
@@ -182,7 +186,7 @@ void check_bad_inputs(bool files_half) {
       {"convert " + f("a.vol") + " " + f("out.nii") + " --spacing 1,0,1", "is not positive", ""},
       {"convert " + f("a.vol") + " " + f("out.nii") + " --spacing 1,1", "has 2 entries", ""},
   };
-  const std::size_t n = std::size(cases), half = 11;
+  const std::size_t n = std::size(cases), half = 12;
   for (std::size_t k = files_half ? 0 : half; k < (files_half ? half : n); ++k) {
     const Case& c = cases[k];
     SCOPED_TRACE(c.args);
