@@ -70,7 +70,7 @@ namespace zdg {
 
 struct ATParameters {
   double alpha = 0.1;          ///< data fidelity (> 0): the larger, the closer u stays to g
-  double lambda = 0.025;       ///< cost of a discontinuity per unit length (> 0)
+  double lambda = 0.015;       ///< cost of a discontinuity per cell of length (> 0)
   double epsilon1 = 2.0;       ///< first eps (>= epsilon2), in cells
   double epsilon2 = 0.25;      ///< last eps (> 0)
   double epsilon_factor = 2.0; ///< eps /= factor between levels (> 1)
