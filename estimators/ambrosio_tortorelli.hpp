@@ -34,10 +34,22 @@
 //   alpha' int |u - g|^2 + int v^2 |grad u|^2 + lambda' (eps' int |grad v|^2
 //                                                         + int (1 - v)^2 / (4 eps'))
 // with alpha' = alpha / h^2, lambda' = sqrt(2) lambda / h, eps' = eps h / sqrt(2): the
-// parameters are per cell, as in the papers (DGtal's ShortcutsGeometry defaults: alpha 0.1,
-// lambda 0.025, eps 2 -> 0.25 by halving). eps 2 -> 0.25 is a discontinuity band of about 2
-// down to 1/4 cell, alpha = 0.1 a smoothing length of about 1/sqrt(alpha) ~ 3 cells; a
-// discontinuity is worth its length in cells times about lambda.
+// parameters are per cell, as in the papers' calculus on unit cells (DGtal's
+// ShortcutsGeometry: alpha 0.1, lambda 0.025, eps 2 -> 0.25 by halving). eps 2 -> 0.25 is a
+// discontinuity band of about 2 down to 1/4 cell, alpha = 0.1 a smoothing length of about
+// 1/sqrt(alpha) ~ 3 cells; a discontinuity costs about lambda per cell of its length.
+//
+// Defaults (measured, tests/estimators/ambrosio_tortorelli_test.cpp; g = II normals of radius
+// 3h): alpha 0.1, lambda 0.015, eps 2 -> 0.25 by halving, 10 steps per eps, tolerance 1e-4.
+// lambda = 0.015 rather than 0.025: on a cube turned by a generic rotation (h = 0.1) lambda
+// 0.025 cuts the edges too softly and smooths across them (mean error 2 to 5 cells from an
+// edge 3.45 -> 3.99 deg), 0.01 cuts a coarse unit sphere (h = 0.1, 0.1 rad per cell) into
+// facets (3.37 -> 5.05 deg); 0.015 gives 19.1 -> 14.9 deg within 2 cells of an edge, 3.45 ->
+// 3.70 deg at 2 to 5 cells, 3.36 -> 2.81 deg beyond, and 3.37 -> 3.48 deg on the sphere (3.29
+// -> 2.63 deg at h = 0.05, 3.04 -> 2.34 deg at h = 0.025). With an accurate input (II at the
+// convergent radius 2 h^{1/3}: 0.17 deg on the sphere at h = 0.1, 0.11 deg at h = 0.05) AT
+// adds the bias of its smoothing over the staircase (0.88 and 0.51 deg; 0.43 deg at h = 0.1
+// with alpha = 0.5): AT is meant for inputs blurred or noisy at the scale of a few cells.
 //
 // Minimisation (the papers' alternating scheme): u = g, v = 1; for eps = epsilon1,
 // epsilon1 / factor, ... while eps >= epsilon2: repeat at most max_iterations times
@@ -54,7 +66,10 @@
 // n = #surfels) or of an m x m matrix with about 9 entries per row (v, m = 2 #surfels linels):
 // about n^{3/2} flops each (nested dissection on a surface), O(n log n) memory; at most
 // levels x max_iterations x 2 factorizations, levels = 1 + floor(log(epsilon1 / epsilon2) /
-// log(factor)). Widths: indices int64 (the solver needs n < 2^31), values double.
+// log(factor)). Measured (CHOLMOD, 2 shared cores, defaults): unit sphere h = 0.05 (7470
+// surfels) 39 steps in 10 s, h = 0.025 (30078 surfels) 23 steps in 44 s; the v-step (twice as
+// many unknowns, 9 or more entries per row) dominates. Widths: indices int64 (the solver needs n <
+// 2^31), values double.
 #pragma once
 
 #include <zdg/arith/point.hpp>
