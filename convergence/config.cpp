@@ -2,6 +2,7 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/number_text.hpp>
+#include <zdg/convergence/scalar_field.hpp>
 
 #include <toml++/toml.h>
 
@@ -14,6 +15,7 @@ namespace zdg {
 void ExperimentSettings::fill_from(const ExperimentSettings& file) {
   if (shapes.empty()) shapes = file.shapes;
   if (estimators.empty()) estimators = file.estimators;
+  if (functions.empty()) functions = file.functions;
   for (auto member :
        {&ExperimentSettings::h, &ExperimentSettings::k, &ExperimentSettings::alpha,
         &ExperimentSettings::box, &ExperimentSettings::title, &ExperimentSettings::translations,
@@ -47,6 +49,9 @@ public:
       } else if (key == "estimator" || key == "estimators") {
         once(key, "estimator", !s.estimators.empty(), node);
         s.estimators = list(node, key, true);
+      } else if (key == "function" || key == "functions") {
+        once(key, "function", !s.functions.empty(), node);
+        s.functions = list(node, key, false);
       } else if (key == "h") {
         s.h = node.is_array() ? joined(node, key, ",") : value(node, key);
       } else if (key == "k" && node.is_array()) { // one k per shape
@@ -68,8 +73,8 @@ public:
                                                                : nullptr;
         if (slot == nullptr) {
           fail(node, "unknown key '" + shown(key) +
-                         "' (known: shape, estimator, h, k, alpha, box, translations, seed, "
-                         "fit_levels, threads, tolerance, title)");
+                         "' (known: shape, estimator, function, h, k, alpha, box, translations, "
+                         "seed, fit_levels, threads, tolerance, title)");
         }
         *slot = value(node, key);
       }
@@ -229,6 +234,15 @@ ExperimentConfig validate_experiment_settings(const ExperimentSettings& s) {
   }
   // Each shape and entry alone (naming its origin), then together (repeats, dimensions).
   for (const auto& x : s.shapes) checked(x, [](const std::string& t) { parse_shape(t); });
+  for (const auto& x : s.functions) {
+    checked(x, [&](const std::string& t) {
+      if (t.find(',') != std::string::npos) {
+        throw InvalidArgument("function '" + t + "': no commas (give one function per --function)");
+      }
+      ScalarField{t};
+    });
+    c.functions.push_back(x.text);
+  }
   for (const auto& x : s.estimators) {
     checked(x, [&](const std::string& t) {
       const auto spec = parse_estimator_spec(t);

@@ -40,7 +40,7 @@ struct Setting {
 };
 
 struct ExperimentSettings {
-  std::vector<Setting> shapes, estimators;
+  std::vector<Setting> shapes, estimators, functions;
   std::optional<Setting> h, k, alpha, box, title, translations, seed, fit_levels, threads,
       tolerance;
 

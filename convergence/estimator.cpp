@@ -92,7 +92,21 @@ namespace {
 
 double checked_value(const Estimator& e, const EstimatorParameter& p, const std::string& text,
                      const std::string& origin) {
-  return parse_real_in(text, origin.empty() ? e.name + " parameter " + p.name : origin, p.lo, p.hi);
+  const std::string what = origin.empty() ? e.name + " parameter " + p.name : origin;
+  if (p.check_text) {
+    try {
+      p.check_text(text);
+    } catch (const InvalidArgument& error) {
+      throw InvalidArgument(what + ": " + error.what());
+    }
+    return 0;
+  }
+  const double v = p.open_above ? parse_real(text, what) : parse_real_in(text, what, p.lo, p.hi);
+  if (p.open_above && !(v > p.lo && v < p.hi)) {
+    throw InvalidArgument(what + " = '" + text + "' must be in (" + real_text(p.lo) + ", " +
+                          real_text(p.hi) + ")");
+  }
+  return v;
 }
 
 std::string parameter_names(const Estimator& e) {
@@ -166,6 +180,10 @@ EstimatorParameters resolve_parameters(const EstimatorSpec& spec,
       origin = "--alpha (default alpha of " + e.name + ")";
     }
     const double value = checked_value(e, p, text, origin);
+    if (p.check_text) {
+      out.function = text;
+      continue;
+    }
     if (p.name == "k") out.k = value;
     if (p.name == "alpha") out.alpha = value;
     if (p.name == "degree") out.degree = value;

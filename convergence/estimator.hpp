@@ -60,6 +60,8 @@ struct EstimatorParameters {
   double k = 0;      // radius or mask factor
   double alpha = 0;  // exponent of the law R = k h^alpha (or n = k h^{-alpha})
   double degree = 0; // polynomial degree (jet fitting); 0 where unused
+  std::string function =
+      {}; // test function u (text, convergence/scalar_field.hpp); "" where unused
 };
 
 /// Everything one run needs.
@@ -71,15 +73,21 @@ struct RunInput {
   double k;                                   // estimator parameter (radius/mask factor)
   double alpha;                               // exponent of the radius law
   double degree = 0;                          // polynomial degree (jet fitting)
+  std::string function = {};                  // test function u (Laplace-Beltrami estimators)
 };
 
-/// One parameter of an estimator: its name (`k` or `alpha`), default (a rational, as text),
-/// the admissible values lo < value <= hi, and what it means for this estimator.
+/// One parameter of an estimator: its name (`k`, `alpha`, `degree`, `u`), default (a rational,
+/// as text), the admissible values lo < value <= hi (lo < value < hi when open_above), and what
+/// it means for this estimator. A text parameter (`u`, the test function of the
+/// Laplace-Beltrami estimators) has check_text, which throws InvalidArgument for a value it
+/// refuses; lo, hi do not apply to it.
 struct EstimatorParameter {
   std::string name;
   std::string default_text;
   double lo = 0, hi = 0;
   std::string meaning;
+  bool open_above = false;
+  std::function<void(const std::string&)> check_text = {};
 };
 
 /// A rate that theory proves: error = O(h^slope) under the hypotheses, from the source.

@@ -1,13 +1,24 @@
 // Estimators of the registry from the calculus on digital surfaces (#14): di-area, the digital
 // integral of 1 with the surfel measure of the integral-invariant normal (estimators/
-// digital_integration.hpp), compared with the shape's area in closed form.
+// digital_integration.hpp), compared with the shape's area in closed form; and the
+// Laplace-Beltrami operators lb-heat (estimators/heat_laplace_beltrami.hpp), lb-cotan and
+// lb-combinatorial (kernel/cotan_laplacian.hpp) applied to a test function u (the parameter
+// `u`, convergence/scalar_field.hpp), compared at every element with Delta_S u at the nearest
+// point of the true surface (its normal and principal curvatures from the shape's closed
+// forms: exact for spheres, from the fundamental forms for the ellipsoid, torus and
+// polynomial shapes).
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/scalar_field.hpp>
 #include <zdg/estimators/digital_integration.hpp>
+#include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
+#include <zdg/kernel/cotan_laplacian.hpp>
+#include <zdg/kernel/surfel_complex.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace zdg {
 
@@ -15,19 +26,22 @@ namespace {
 
 // DI_h(1) = sum over the boundary surfels of h^2 n_II(s) . n_elem(s), minus the area. The
 // whole surface must be digitized: a box that clips the shape cuts the integral.
-ErrorStats run_di_area(const RunInput& in) {
-  const auto& shape = detail::as_3d(in.shape);
-  const auto area = shape.area();
-  if (!area) throw InvalidArgument("the area of '" + in.shape.spec() + "' is not known");
-  const detail::Digitized3 d = detail::digitize_3d(in);
+// The whole digitized surface (the calculus needs it closed): InvalidArgument when the box
+// clips the shape.
+detail::Digitized3 whole_surface(const RunInput& in, const std::string& estimator) {
+  detail::Digitized3 d = detail::digitize_3d(in);
   for (bool c : d.clipped) {
     if (c) {
-      throw InvalidArgument("di-area: the box clips '" + in.shape.spec() +
-                            "': the digital integral needs the whole surface");
+      throw InvalidArgument(estimator + ": the box clips '" + in.shape.spec() + "': " + estimator +
+                            " needs the whole, closed surface");
     }
   }
-  const double R = in.k * std::pow(in.h, in.alpha);
-  const auto ii = ii_principal_curvatures(d.inside, d.box, d.surfels, in.h, R, 1);
+  return d;
+}
+
+// The surfel weights h^2 mu(s), mu = n_II . n_elem, II normal of radius R.
+std::vector<double> ii_surfel_weights(const detail::Digitized3& d, double h, double R) {
+  const auto ii = ii_principal_curvatures(d.inside, d.box, d.surfels, h, R, 1);
   std::vector<Point3<double>> estimated, elementary;
   estimated.reserve(ii.size());
   elementary.reserve(ii.size());
@@ -37,10 +51,98 @@ ErrorStats run_di_area(const RunInput& in) {
     elementary.push_back({double(n.x), double(n.y), double(n.z)});
   }
   const auto mu = surfel_measure(estimated, elementary);
-  const std::vector<double> areas(mu.size(), in.h * in.h), one(mu.size(), 1.0);
+  const std::vector<double> areas(mu.size(), h * h);
+  return surfel_weights(mu, areas);
+}
+
+ErrorStats run_di_area(const RunInput& in) {
+  const auto& shape = detail::as_3d(in.shape);
+  const auto area = shape.area();
+  if (!area) throw InvalidArgument("the area of '" + in.shape.spec() + "' is not known");
+  const detail::Digitized3 d = whole_surface(in, "di-area");
+  // di-area reads the radius law R = k h^alpha (alpha = 1/3 by default).
+  const double R = in.k * std::pow(in.h, in.alpha);
+  const auto w = ii_surfel_weights(d, in.h, R);
+  const std::vector<double> one(w.size(), 1.0);
   ErrorAccumulator acc;
-  acc.add(digital_integral(surfel_weights(mu, areas), one) - *area);
+  acc.add(digital_integral(w, one) - *area);
   return acc.stats();
+}
+
+// u at points p of the world frame (the shape is X + t: u is a function of the shape's frame,
+// so that the errors do not depend on the translation), and Delta_S u at the nearest point of
+// the true surface.
+struct TestFunction {
+  ScalarField u;
+  Point3<double> t;
+  const Shape3* shape;
+  double value(Point3<double> p) const { return u.value({p.x - t.x, p.y - t.y, p.z - t.z}); }
+  double laplace_beltrami(Point3<double> p) const {
+    const SurfacePoint3 q = shape->project({p.x - t.x, p.y - t.y, p.z - t.z});
+    return u.laplace_beltrami(q.point, q.normal, q.k1, q.k2);
+  }
+};
+
+TestFunction test_function(const RunInput& in, const detail::Digitized3& d) {
+  if (in.function.empty()) throw InvalidArgument("no test function u given");
+  return {ScalarField(in.function), d.t, d.shape};
+}
+
+// The errors L u (p_i) - Delta_S u (xi(p_i)) over the points p_i.
+ErrorStats laplacian_errors(const TestFunction& f, std::span<const Point3<double>> points,
+                            std::span<const double> lu) {
+  ErrorAccumulator acc;
+  for (std::size_t i = 0; i < points.size(); ++i) acc.add(lu[i] - f.laplace_beltrami(points[i]));
+  return acc.stats();
+}
+
+std::vector<double> sampled(const TestFunction& f, std::span<const Point3<double>> points) {
+  std::vector<double> u;
+  u.reserve(points.size());
+  for (const auto& p : points) u.push_back(f.value(p));
+  return u;
+}
+
+// Heat-kernel LB on the surfel centres with the II surfel measure, t = h^alpha, truncated at
+// 5 sqrt(2t).
+ErrorStats run_lb_heat(const RunInput& in) {
+  const detail::Digitized3 d = whole_surface(in, "lb-heat");
+  const TestFunction f = test_function(in, d);
+  const SurfelComplex complex = surfel_complex(primal_surface(d.surfels), in.h);
+  const auto w = ii_surfel_weights(d, in.h, in.k * std::cbrt(in.h));
+  const HeatLaplaceBeltrami L(complex.centres, w, heat_kernel_time(in.h, in.alpha), 5.0, 1);
+  return laplacian_errors(f, complex.centres, L.apply(sampled(f, complex.centres)));
+}
+
+// Cotangent LB M^{-1} S of the primal quads split into triangles, at the pointels.
+ErrorStats run_lb_cotan(const RunInput& in) {
+  const detail::Digitized3 d = whole_surface(in, "lb-cotan");
+  const TestFunction f = test_function(in, d);
+  const SurfelComplex complex = surfel_complex(primal_surface(d.surfels), in.h);
+  const auto triangles = triangulate_quads(complex.surfels);
+  const CotanLaplacian L = cotan_laplacian(complex.pointels, triangles);
+  return laplacian_errors(f, complex.pointels, L.apply(sampled(f, complex.pointels)));
+}
+
+// Combinatorial LB (1/area(s)) sum over the 4 neighbours (u(r) - u(s)), at the surfel centres.
+ErrorStats run_lb_combinatorial(const RunInput& in) {
+  const detail::Digitized3 d = whole_surface(in, "lb-combinatorial");
+  const TestFunction f = test_function(in, d);
+  const SurfelComplex complex = surfel_complex(primal_surface(d.surfels), in.h);
+  const SparseMatrix L = combinatorial_laplacian(complex);
+  return laplacian_errors(f, complex.centres, L.multiply(sampled(f, complex.centres)));
+}
+
+EstimatorParameter function_parameter() {
+  EstimatorParameter p{"u", "x", 0, 0,
+                       "test function u(x, y, z), e.g. x^2-y^2 (convergence/scalar_field.hpp)"};
+  p.check_text = [](const std::string& text) {
+    if (text.find(',') != std::string::npos) {
+      throw InvalidArgument("function '" + text + "': no commas");
+    }
+    ScalarField{text};
+  };
+  return p;
 }
 
 } // namespace
@@ -67,6 +169,57 @@ void register_calculus_estimators(std::vector<Estimator>& out) {
           return std::nullopt;
         }},
        run_di_area});
+
+  // lb-heat: k of the II normal's radius R = k h^{1/3}, alpha of t = h^alpha, u.
+  EstimatorParameter heat_alpha{"alpha", "2/5", 0.0, 1.0,
+                                "heat kernel time t = h^alpha, in (0, 1) (the theorem: alpha < "
+                                "min(1/2, 2 beta / 3) = 4/9 with the II normal)"};
+  heat_alpha.open_above = true;
+  out.push_back(
+      {"lb-heat",
+       3,
+       "heat-kernel Laplace-Beltrami operator on the surfel centres (Gaussian of time t = "
+       "h^alpha, weights h^2 n_II . n_elem, II radius k h^{1/3}) applied to u, against Delta_S u "
+       "at the nearest surface point",
+       "Laplace-Beltrami",
+       {{"k", "2", 0.0, 1e6, "radius factor of the II normal: R = k h^{1/3}"},
+        heat_alpha,
+        function_parameter()},
+       {"converges uniformly for 0 < alpha < min(1/2, 2 beta/3) = 4/9 with the II normal "
+        "(beta = 2/3) on C^3 surfaces (Caissard, Coeurjolly, Lachaud, Roussillon, JMIV 2019); "
+        "no rate stated",
+        [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          return std::nullopt;
+        }},
+       run_lb_heat});
+  out.push_back(
+      {"lb-cotan",
+       3,
+       "cotangent Laplacian M^{-1} S of the primal quad surface split into triangles (Pinkall, "
+       "Polthier 1993) applied to u at the pointels, against Delta_S u at the nearest surface "
+       "point",
+       "Laplace-Beltrami",
+       {function_parameter()},
+       {"no convergence on digital surfaces: their normals do not converge (Hildebrandt, "
+        "Polthier, Wardetzky 2006; Caissard et al., JMIV 2019, Table 1)",
+        [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          return std::nullopt;
+        }},
+       run_lb_cotan});
+  out.push_back(
+      {"lb-combinatorial",
+       3,
+       "combinatorial graph Laplacian of the surfel adjacency, (1/h^2) sum over the 4 "
+       "neighbours (u(r) - u(s)), applied to u at the surfel centres, against Delta_S u at the "
+       "nearest surface point",
+       "Laplace-Beltrami",
+       {function_parameter()},
+       {"no convergence on surfaces that are not grid-aligned planes (Caissard et al., JMIV "
+        "2019, Table 1)",
+        [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          return std::nullopt;
+        }},
+       run_lb_combinatorial});
 }
 
 } // namespace detail

@@ -2,6 +2,7 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/number_text.hpp>
+#include <zdg/convergence/scalar_field.hpp>
 #include <zdg/kernel/parallel_for.hpp>
 
 #include <algorithm>
@@ -138,7 +139,37 @@ ExperimentPlan plan_experiment(const ExperimentConfig& config) {
   const std::vector<std::string> ks = config.k_text
                                           ? k_texts_per_shape(*config.k_text, plan.shapes.size())
                                           : std::vector<std::string>{};
+  // An estimator that takes a test function (a text parameter: the Laplace-Beltrami ones) and
+  // is given none runs once per function of --function (default: default_test_functions()),
+  // as the entries NAME:...,u=F.
+  std::vector<std::string> texts;
+  bool takes_function = false;
   for (const auto& text : config.estimators) {
+    const EstimatorSpec spec = parse_estimator_spec(text);
+    const Estimator& e = find_estimator(spec.name);
+    const EstimatorParameter* u = nullptr;
+    for (const auto& p : e.parameters) {
+      if (p.check_text) u = &p;
+    }
+    if (u == nullptr) {
+      texts.push_back(text);
+      continue;
+    }
+    takes_function = true;
+    if (spec.value(u->name)) {
+      texts.push_back(text);
+      continue;
+    }
+    const auto functions = config.functions.empty() ? default_test_functions() : config.functions;
+    for (const auto& f : functions) {
+      texts.push_back(text + (text.find(':') == std::string::npos ? ":" : ",") + u->name + "=" + f);
+    }
+  }
+  if (!config.functions.empty() && !takes_function) {
+    throw InvalidArgument("--function is given but no estimator of the experiment takes a test "
+                          "function (lb-heat, lb-cotan, lb-combinatorial do)");
+  }
+  for (const auto& text : texts) {
     EstimatorSpec spec = parse_estimator_spec(text);
     EstimatorEntry entry;
     entry.estimator = &find_estimator(spec.name);
@@ -277,7 +308,8 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
                   run_box(config, shape, r.offset, job.h),
                   r.k,
                   r.alpha,
-                  entry.on_shape(job.shape).degree};
+                  entry.on_shape(job.shape).degree,
+                  entry.on_shape(job.shape).function};
       auto t0 = std::chrono::steady_clock::now();
       r.errors = entry.estimator->run(in);
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -53,6 +53,10 @@ struct ExperimentConfig {
   double tolerance = 0.1;
   int threads = 1;
   std::string title; // plot title (provenance only)
+  // Test functions of the estimators that take one (`u`, the Laplace-Beltrami estimators):
+  // each such entry without its own `u=` runs once per function; empty: the defaults
+  // (default_test_functions()).
+  std::vector<std::string> functions;
 };
 
 /// Parses `HMAX:HMIN:N` (N geometric steps), `exp:I0:I1[:STEP]` (h = exp(-i/10)) or a

@@ -3,6 +3,7 @@
 //   zdg converge --shape ellipse:20,7 --estimator ii-curvature --h 0.1:0.01:6 --k 5 -o DIR
 //   zdg converge --shape flower:20,7,6 --estimator ii-curvature:k=5
 //                --estimator bc-curvature:alpha=14/9 --h exp:30:60:3 -o DIR
+//   zdg converge --shape sphere9 --estimator lb-heat --function 'x^2-y^2' --h 2:0.5:3
 //   zdg converge CONFIG.toml -o DIR          (same keys as the flags: shape, estimator, h,
 //                                            k, alpha, translations, seed, box, fit_levels,
 //                                            threads, tolerance, title; convergence/config.hpp)
@@ -43,7 +44,7 @@ namespace fs = std::filesystem;
 // The flags as written (text; checked with the TOML values by validate_experiment_settings).
 struct ConvergeOptions {
   std::string config_file;
-  std::vector<std::string> shapes, estimators;
+  std::vector<std::string> shapes, estimators, functions;
   std::optional<std::string> h, k, alpha, box, title, translations, fit_levels, threads, seed,
       tolerance;
   std::string output;
@@ -86,6 +87,7 @@ ExperimentConfig make_config(const ConvergeOptions& o) {
   ExperimentSettings s;
   for (const auto& x : o.shapes) s.shapes.push_back({x, "--shape"});
   for (const auto& x : o.estimators) s.estimators.push_back({x, "--estimator"});
+  for (const auto& x : o.functions) s.functions.push_back({x, "--function"});
   const std::pair<const std::optional<std::string>*, std::optional<Setting> ExperimentSettings::*>
       flags[] = {{&o.h, &ExperimentSettings::h},
                  {&o.k, &ExperimentSettings::k},
@@ -167,7 +169,13 @@ nlohmann::json entries_json(const ExperimentResult& r) {
   for (const auto& e : r.entries) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& p : e.estimator->parameters) {
-      params[p.name] = p.name == "k" ? e.parameters.k : e.parameters.alpha;
+      if (p.check_text) {
+        params[p.name] = e.parameters.function;
+      } else {
+        params[p.name] = p.name == "k"        ? e.parameters.k
+                         : p.name == "degree" ? e.parameters.degree
+                                              : e.parameters.alpha;
+      }
     }
     out.push_back({{"label", e.label}, {"estimator", e.estimator->name}, {"parameters", params}});
   }
@@ -178,6 +186,7 @@ nlohmann::json config_json(const ExperimentConfig& c, const ExperimentResult& r,
                            const ConvergeOptions& o) {
   return {{"shapes", c.shapes},
           {"estimators", c.estimators},
+          {"functions", c.functions},
           {"entries", entries_json(r)},
           {"h", c.h_text},
           {"hs", c.hs},
@@ -439,6 +448,10 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     cmd->add_option("--estimator", o->estimators,
                     "Estimator with its own parameters, NAME[:KEY=VALUE,...], e.g. "
                     "bc-curvature:k=1,alpha=14/9 (repeatable; see --list)");
+    cmd->add_option("--function", o->functions,
+                    "Test function u(x, y, z) of the estimators that take one (lb-heat, "
+                    "lb-cotan, lb-combinatorial), e.g. 'x^2-y^2' (repeatable; default: x, "
+                    "x^2-y^2, exp(z))");
     add_text_option(cmd, "--h", o->h, "Grid steps: HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
     add_text_option(
         cmd, "--k", o->k,

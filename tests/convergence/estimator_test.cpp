@@ -34,13 +34,22 @@ TEST(EstimatorRegistry, EveryEntryStatesParametersAndTheory) {
     EXPECT_FALSE(e.theory.summary.empty()) << e.name;
     EXPECT_TRUE(e.run) << e.name;
     for (const auto& p : e.parameters) {
+      EXPECT_FALSE(p.meaning.empty());
+      if (p.check_text) { // a text parameter (the test function u): its default passes its check
+        EXPECT_EQ(p.name, "u") << e.name;
+        EXPECT_NO_THROW(p.check_text(p.default_text)) << e.name;
+        continue;
+      }
       // The names resolve_parameters maps onto EstimatorParameters.
       EXPECT_TRUE(p.name == "k" || p.name == "alpha" || p.name == "degree")
           << e.name << " " << p.name;
       const double v = zdg::parse_real(p.default_text, p.name);
       EXPECT_GT(v, p.lo) << e.name << " " << p.name;
-      EXPECT_LE(v, p.hi) << e.name << " " << p.name;
-      EXPECT_FALSE(p.meaning.empty());
+      if (p.open_above) {
+        EXPECT_LT(v, p.hi) << e.name << " " << p.name;
+      } else {
+        EXPECT_LE(v, p.hi) << e.name << " " << p.name;
+      }
     }
     // The defaults resolve, and a rate (where one applies) has its statement and source.
     const auto params = zdg::resolve_parameters(zdg::parse_estimator_spec(e.name), {}, {});
