@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 namespace zdg {
@@ -156,8 +157,9 @@ struct USolve {
   SpdBackend backend = SpdBackend::automatic;
 };
 
-USolve solve_u(const SurfelComplex& c, std::span<const Point3<double>> g, std::span<const double> v,
-               double alpha) {
+// The matrices of the two steps; their patterns do not change from one iteration to the next
+// (explicit zeros are kept), so each solver is analysed once and refactored after.
+SparseMatrix u_matrix(const SurfelComplex& c, std::span<const double> v, double alpha) {
   const std::int64_t n = c.surfel_count();
   std::vector<SparseTriplet> t;
   t.reserve(idx(n) + 4 * c.linels.size());
@@ -170,29 +172,45 @@ USolve solve_u(const SurfelComplex& c, std::span<const Point3<double>> g, std::s
     t.push_back({f0, f1, -w});
     t.push_back({f1, f0, -w});
   }
-  const SparseSpdSolver solver(SparseMatrix::from_triplets(n, n, std::move(t)));
+  return SparseMatrix::from_triplets(n, n, std::move(t));
+}
+
+// Factors m into the solver (the first time: analysis and factorization).
+void factor(std::optional<SparseSpdSolver>& solver, const SparseMatrix& m) {
+  if (solver) {
+    solver->refactor(m);
+  } else {
+    solver.emplace(m);
+  }
+}
+
+USolve solve_u(const SurfelComplex& c, std::span<const Point3<double>> g, std::span<const double> v,
+               double alpha, std::optional<SparseSpdSolver>& solver) {
+  const std::int64_t n = c.surfel_count();
+  factor(solver, u_matrix(c, v, alpha));
   std::vector<double> b(idx(n));
   USolve r;
   r.u.resize(idx(n));
   for (int k = 0; k < 3; ++k) {
     for (std::size_t s = 0; s < b.size(); ++s)
       b[s] = alpha * (k == 0 ? g[s].x : k == 1 ? g[s].y : g[s].z);
-    const auto x = solver.solve(b);
+    const auto x = solver->solve(b);
     for (std::size_t s = 0; s < b.size(); ++s)
       (k == 0 ? r.u[s].x : k == 1 ? r.u[s].y : r.u[s].z) = x[s];
   }
-  r.backend = solver.backend();
+  r.backend = solver->backend();
   return r;
 }
 
 std::vector<double> solve_v(const SurfelComplex& c, std::span<const Point3<double>> u,
-                            double lambda, double eps, const SparseMatrix& L) {
+                            double lambda, double eps, const SparseMatrix& L,
+                            std::optional<SparseSpdSolver>& solver) {
   const double well = lambda / (4 * eps);
   auto d = squared_coboundary(c, u);
   for (auto& x : d) x += well;
-  const SparseSpdSolver solver(add(1.0, SparseMatrix::diagonal(d), lambda * eps, L));
+  factor(solver, add(1.0, SparseMatrix::diagonal(d), lambda * eps, L));
   const std::vector<double> b(d.size(), well);
-  return solver.solve(b);
+  return solver->solve(b);
 }
 
 } // namespace
@@ -203,7 +221,8 @@ std::vector<Point3<double>> at_solve_u(const SurfelComplex& complex,
   check_parameters(parameters);
   check_surfel_field(complex, g, "g");
   check_linel_field(complex, v);
-  return solve_u(complex, g, v, parameters.alpha).u;
+  std::optional<SparseSpdSolver> solver;
+  return solve_u(complex, g, v, parameters.alpha, solver).u;
 }
 
 std::vector<double> at_solve_v(const SurfelComplex& complex, std::span<const Point3<double>> u,
@@ -211,7 +230,8 @@ std::vector<double> at_solve_v(const SurfelComplex& complex, std::span<const Poi
   check_parameters(parameters);
   check_eps(eps);
   check_surfel_field(complex, u, "u");
-  return solve_v(complex, u, parameters.lambda, eps, at_linel_laplacian(complex));
+  std::optional<SparseSpdSolver> solver;
+  return solve_v(complex, u, parameters.lambda, eps, at_linel_laplacian(complex), solver);
 }
 
 ATResult at_normals(const SurfelComplex& complex, std::span<const Point3<double>> g,
@@ -223,6 +243,7 @@ ATResult at_normals(const SurfelComplex& complex, std::span<const Point3<double>
   r.v.assign(complex.linels.size(), 1.0);
   SpdBackend backend = SpdBackend::automatic;
   const SparseMatrix L = at_linel_laplacian(complex);
+  std::optional<SparseSpdSolver> u_solver, v_solver; // analysed once, refactored after
   const auto energy_now = [&](double eps) {
     return energy(complex, g, r.u, r.v, parameters, eps, L);
   };
@@ -233,11 +254,11 @@ ATResult at_normals(const SurfelComplex& complex, std::span<const Point3<double>
     if (eps < parameters.epsilon2 * (1 - 1e-12)) break;
     r.steps.push_back({ATStep::Kind::start, eps, energy_now(eps), 0});
     for (int i = 0; i < parameters.max_iterations; ++i) {
-      auto us = solve_u(complex, g, r.v, parameters.alpha);
+      auto us = solve_u(complex, g, r.v, parameters.alpha, u_solver);
       r.u = std::move(us.u);
       backend = us.backend;
       r.steps.push_back({ATStep::Kind::u, eps, energy_now(eps), 0});
-      auto v = solve_v(complex, r.u, parameters.lambda, eps, L);
+      auto v = solve_v(complex, r.u, parameters.lambda, eps, L, v_solver);
       double change = 0;
       for (std::size_t e = 0; e < v.size(); ++e) change = std::max(change, std::abs(v[e] - r.v[e]));
       r.v = std::move(v);

@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <numbers>
 #include <numeric>
 #include <string>
@@ -24,7 +27,88 @@ double heat_kernel_time(double h, double alpha) {
 
 namespace {
 using Cell = std::array<std::int64_t, 3>;
+
+// Four doubles (GCC and clang vector extensions: one AVX register, two SSE2 ones). The helpers
+// are inlined into pair_sums, so no 32-byte vector crosses a call (GCC's -Wpsabi note about the
+// AVX calling convention does not apply: CMakeLists.txt turns it off for this file).
+typedef double V4 __attribute__((vector_size(32)));
+typedef std::int64_t I4 __attribute__((vector_size(32)));
+
+// exp(x) for x <= 0 lane by lane (arguments below -700 give exp(-700)): x log2(e) = n + f with
+// n = round (the 1.5 2^52 shifter), |f| <= 1/2, 2^n from the exponent bits, e^{f ln 2} by its
+// Taylor polynomial of degree 13 (remainder (ln2 / 2)^14 / 14! < 4e-18): a few ulps from
+// std::exp. No branch, no call: explicit vector code.
+[[gnu::always_inline]] inline V4 exp_nonpositive(V4 x) {
+  const V4 low = {-700.0, -700.0, -700.0, -700.0};
+  x = x < low ? low : x;
+  const V4 y = x * 1.4426950408889634;
+  const V4 k = y + 6755399441055744.0; // 1.5 * 2^52
+  const V4 n = k - 6755399441055744.0;
+  const V4 r = (y - n) * 0.6931471805599453;
+  V4 p = r * (1.0 / 6227020800.0) + 1.0 / 479001600.0;
+  p = p * r + 1.0 / 39916800.0;
+  p = p * r + 1.0 / 3628800.0;
+  p = p * r + 1.0 / 362880.0;
+  p = p * r + 1.0 / 40320.0;
+  p = p * r + 1.0 / 5040.0;
+  p = p * r + 1.0 / 720.0;
+  p = p * r + 1.0 / 120.0;
+  p = p * r + 1.0 / 24.0;
+  p = p * r + 1.0 / 6.0;
+  p = p * r + 0.5;
+  p = p * r + 1.0;
+  p = p * r + 1.0;
+  // The low bits of k hold 2^51 + n: (n + 1023) << 52 is 2^n (n >= -1010 here).
+  I4 bits;
+  std::memcpy(&bits, &k, sizeof bits);
+  bits = (bits + 1023) << 52;
+  V4 scale;
+  std::memcpy(&scale, &bits, sizeof scale);
+  return p * scale;
 }
+
+// sum over r in [b, e) of g(r) w(r) u(r) and of g(r) w(r), g = exp(-|x_r - x_s|^2 / (4t)) where
+// |x_r - x_s| <= rho, else 0 (r = s included: its terms cancel in a1 - u(s) a0), four centres at
+// a time (the tail padded with far-away lanes whose mask is 0).
+// GCC on x86-64: an x86-64-v3 (AVX2 + FMA) clone next to the baseline SSE2 one, chosen at load
+// time by the CPU (an ifunc); the sums are the same up to rounding.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+void pair_sums(const double* x, const double* y, const double* z, const double* w,
+               const double* wu, std::int64_t b, std::int64_t e, double xs, double ys, double zs,
+               double r2max, double inv4t, double& a1, double& a0) {
+  V4 s1 = {0, 0, 0, 0}, s0 = {0, 0, 0, 0};
+  for (std::int64_t r = b; r < e; r += 4) {
+    V4 vx, vy, vz, vw, vwu;
+    if (r + 4 <= e) {
+      std::memcpy(&vx, x + r, sizeof vx);
+      std::memcpy(&vy, y + r, sizeof vy);
+      std::memcpy(&vz, z + r, sizeof vz);
+      std::memcpy(&vw, w + r, sizeof vw);
+      std::memcpy(&vwu, wu + r, sizeof vwu);
+    } else {
+      for (int i = 0; i < 4; ++i) {
+        const bool in = r + i < e;
+        vx[i] = in ? x[r + i] : xs + 1e300; // outside the radius: masked
+        vy[i] = in ? y[r + i] : ys;
+        vz[i] = in ? z[r + i] : zs;
+        vw[i] = in ? w[r + i] : 0;
+        vwu[i] = in ? wu[r + i] : 0;
+      }
+    }
+    const V4 dx = vx - xs, dy = vy - ys, dz = vz - zs;
+    const V4 d2 = dx * dx + dy * dy + dz * dz;
+    const V4 zero = {0, 0, 0, 0};
+    const V4 g = d2 <= r2max ? exp_nonpositive(-d2 * inv4t) : zero;
+    s1 += g * vwu;
+    s0 += g * vw;
+  }
+  a1 += (s1[0] + s1[1]) + (s1[2] + s1[3]);
+  a0 += (s0[0] + s0[1]) + (s0[2] + s0[3]);
+}
+
+} // namespace
 
 HeatLaplaceBeltrami::HeatLaplaceBeltrami(std::span<const Point3<double>> centres,
                                          std::span<const double> weights, double t,
@@ -128,28 +212,26 @@ std::vector<double> HeatLaplaceBeltrami::apply(std::span<const double> u) const 
     wu[k] = us[k] * w_[k];
   }
   const double scale = 1 / (4 * std::numbers::pi * t_ * t_);
-  const auto cells = std::int64_t(cell_start_.size()) - 1;
-  parallel_for(cells, threads_, [&](std::int64_t c) {
-    // Per surfel s: sum g w(r) u(r) - u(s) sum g w(r), accumulated over its pairs in order.
-    std::int64_t current = -1;
-    double a1 = 0, a0 = 0;
-    auto flush = [&] {
-      if (current >= 0)
-        out[std::size_t(order_[std::size_t(current)])] =
-            scale * (a1 - us[std::size_t(current)] * a0);
-    };
-    for (auto s = cell_start_[std::size_t(c)]; s < cell_start_[std::size_t(c) + 1]; ++s)
-      out[std::size_t(order_[std::size_t(s)])] = 0; // surfels without a pair
-    for_each_pair_of_cell(c, [&](std::int64_t s, std::int64_t r, double g) {
-      if (s != current) {
-        flush();
-        current = s;
-        a1 = a0 = 0;
+  const double r2max = rho_ * rho_, inv4t = 1 / (4 * t_);
+  // Per surfel s (in contiguous chunks of the sorted positions, so that the threads share the
+  // work even when a few cells hold every surfel): sum g w(r) u(r) - u(s) sum g w(r) over the
+  // neighbouring cells of its cell, in order.
+  parallel_chunks(std::int64_t(n), threads_, [&](std::int64_t first, std::int64_t last) {
+    auto cell = std::size_t(std::upper_bound(cell_start_.begin(), cell_start_.end(), first) -
+                            cell_start_.begin() - 1);
+    for (auto s = first; s < last; ++s) {
+      while (s >= cell_start_[cell + 1]) ++cell;
+      const auto k = std::size_t(s);
+      double a1 = 0, a0 = 0;
+      for (std::size_t j = 0; j < 27; ++j) {
+        const auto nb = neighbours_[27 * cell + j];
+        if (nb < 0) break;
+        pair_sums(x_.data(), y_.data(), z_.data(), w_.data(), wu.data(),
+                  cell_start_[std::size_t(nb)], cell_start_[std::size_t(nb) + 1], x_[k], y_[k],
+                  z_[k], r2max, inv4t, a1, a0);
       }
-      a1 += g * wu[std::size_t(r)];
-      a0 += g * w_[std::size_t(r)];
-    });
-    flush();
+      out[std::size_t(order_[k])] = scale * (a1 - us[k] * a0);
+    }
   });
   return out;
 }

@@ -25,9 +25,15 @@
 // neighbouring cells per cell), then for each surfel the sum over the centres in its cells;
 // the surfels are processed cell by cell in parallel (kernel/parallel_for.hpp), so apply()
 // costs O(n k) exp evaluations for k surfels per kernel ball (about 2 pi c^2 t / h^2 on a
-// surface of step h), and its result does not depend on the number of threads. matrix() stores
-// the same n k entries (12 bytes each: int64 column, double) as a SparseMatrix. Widths: doubles;
-// indices int64.
+// surface of step h), and its result does not depend on the number of threads. apply()'s inner
+// loop over the centres of a neighbouring cell is explicit 4-double vector code (an exp by
+// range reduction and a degree-13 polynomial, a few ulps from std::exp; matrix() uses
+// std::exp), with an AVX2+FMA clone chosen at load time on x86-64 (GCC): measured 6.1e8 pairs
+// per second on the 2-core development machine (sphere1 at h = 0.025, 30,078 surfels, t =
+// h^0.4 so that the kernel covers the whole sphere: 9.0e8 pairs, 1.49 s; 10^6 surfels with
+// t = 4 h^2: 9.9e8 pairs, 5.0 s; bench/calculus_bench.cpp). matrix()
+// stores the same n k entries (12 bytes each: int64 column, double) as a SparseMatrix. Widths:
+// doubles; indices int64.
 #pragma once
 
 #include <zdg/arith/point.hpp>

@@ -50,6 +50,8 @@ std::string spd_backend_name(SpdBackend backend) {
 struct SparseSpdSolver::Impl {
   std::int64_t n = 0;
   SpdBackend backend = SpdBackend::eigen_ldlt;
+  std::vector<std::int64_t> row_start, column; // the pattern analysed
+  void factor(const EigenSparse& m, bool analyse);
   std::optional<Eigen::SimplicialLDLT<EigenSparse>> ldlt;
 #ifdef ZDG_HAVE_CHOLMOD
   std::optional<Eigen::CholmodSupernodalLLT<EigenSparse>> cholmod;
@@ -73,35 +75,57 @@ SparseSpdSolver::SparseSpdSolver(const SparseMatrix& a, SpdBackend backend)
     throw InvalidArgument("sparse solver: zdg was built without CHOLMOD (ZDG_CHOLMOD=OFF or "
                           "libsuitesparse-dev missing)");
   impl_->n = a.rows;
-  const EigenSparse m = to_eigen(a);
+  impl_->row_start = a.row_start;
+  impl_->column = a.column;
   const bool use_cholmod =
       backend == SpdBackend::cholmod || (backend == SpdBackend::automatic && cholmod_available());
+  impl_->backend = use_cholmod ? SpdBackend::cholmod : SpdBackend::eigen_ldlt;
+  impl_->factor(to_eigen(a), true);
+}
+
+void SparseSpdSolver::Impl::factor(const EigenSparse& m, bool analyse) {
 #ifdef ZDG_HAVE_CHOLMOD
-  if (use_cholmod) {
-    impl_->backend = SpdBackend::cholmod;
-    impl_->cholmod.emplace();
-    impl_->cholmod->compute(m);
-    if (impl_->cholmod->info() != Eigen::Success)
+  if (backend == SpdBackend::cholmod) {
+    if (analyse) {
+      cholmod.emplace();
+      // One ordering (AMD), not CHOLMOD's default search over AMD, METIS and NESDIS: the
+      // analysis is then a small part of the cost on the surface meshes here.
+      cholmod->cholmod().nmethods = 1;
+      cholmod->cholmod().method[0].ordering = CHOLMOD_AMD;
+      cholmod->cholmod().postorder = 1;
+      cholmod->analyzePattern(m);
+    }
+    cholmod->factorize(m);
+    if (cholmod->info() != Eigen::Success)
       throw Error("sparse solver (cholmod): the factorization failed (the matrix is not "
                   "symmetric positive definite)");
     return;
   }
-#else
-  (void)use_cholmod;
 #endif
-  impl_->backend = SpdBackend::eigen_ldlt;
-  impl_->ldlt.emplace();
-  impl_->ldlt->compute(m);
-  if (impl_->ldlt->info() != Eigen::Success)
+  if (analyse) {
+    ldlt.emplace();
+    ldlt->analyzePattern(m);
+  }
+  ldlt->factorize(m);
+  if (ldlt->info() != Eigen::Success)
     throw Error("sparse solver (eigen-simplicial-ldlt): the factorization failed (the matrix is "
                 "not symmetric positive definite)");
   // LDLT succeeds on indefinite matrices: positive definiteness is D > 0.
-  const auto d = impl_->ldlt->vectorD();
+  const auto d = ldlt->vectorD();
   for (Eigen::Index i = 0; i < d.size(); ++i)
     if (!(d[i] > 0))
       throw Error("sparse solver (eigen-simplicial-ldlt): the matrix is not positive definite "
                   "(pivot " +
                   std::to_string(i) + " is " + std::to_string(d[i]) + ")");
+}
+
+void SparseSpdSolver::refactor(const SparseMatrix& b) {
+  if (b.rows != impl_->n || b.cols != impl_->n || b.row_start != impl_->row_start ||
+      b.column != impl_->column)
+    throw InvalidArgument("sparse solver: refactor needs the pattern of the matrix analysed (" +
+                          std::to_string(impl_->n) + " x " + std::to_string(impl_->n) + ", " +
+                          std::to_string(impl_->column.size()) + " stored entries)");
+  impl_->factor(to_eigen(b), false);
 }
 
 SparseSpdSolver::~SparseSpdSolver() = default;

@@ -41,6 +41,12 @@ public:
   SparseSpdSolver(SparseSpdSolver&&) noexcept;
   SparseSpdSolver& operator=(SparseSpdSolver&&) noexcept;
 
+  /// Factors B, a matrix with the same size and the same stored pattern as the A of the
+  /// constructor (the pattern of the last matrix factored), reusing the fill-reducing ordering
+  /// and the symbolic analysis: the numeric factorization only (the iterations of the
+  /// Ambrosio-Tortorelli minimisation change the values, not the pattern). InvalidArgument when
+  /// the pattern differs; Error when the factorization fails (the solver is then unusable).
+  void refactor(const SparseMatrix& b);
   /// x with A x = b (b has n entries; InvalidArgument otherwise).
   std::vector<double> solve(std::span<const double> b) const;
   std::int64_t size() const;

@@ -2,7 +2,9 @@
 // topology, estimators on it, a mesh or a drawing, and a JSON summary.
 //
 //   zdg surface INPUT [selection] [--adjacency 6,26] [--component largest|all|K]
-//               [--estimate ii-mean,ii-k1,...] [--radius R|Rv] [--mesh primal|marching-cubes]
+//               [--estimate ii-mean,ii-k1,...,geodesic,at-normal] [--source SURFEL|X,Y,Z]
+//               [--at-alpha A] [--at-lambda L] [--radius R|Rv]
+//               [--mesh primal|marching-cubes]
 //               [-o OUT.ply|.obj|.off] [--csv F] [--png F [--color E] [--view AZ,EL]
 //               [--png-size WxH]] [--threads N] [--json] [--quiet] [--force]
 //   zdg contour INPUT [selection] [--adjacency 4,8] [--component ...]
@@ -12,13 +14,17 @@
 // The command parses, calls the library and prints; the algorithms are in kernel/
 // (image_surfels, image_surfaces, primal_surface_mesh, marching_cubes, image_contours,
 // connected_components, betti_numbers, mesh_io, render_mesh, render_contours) and
-// estimators/ (volume_ii, contour_estimators).
+// estimators/ (volume_ii, contour_estimators, digital_integration, heat_geodesics,
+// ambrosio_tortorelli).
 // Outputs are declared to an OutputSet before the input is read (a missing folder or an
 // existing file without --force fails at once) and renamed into place at the end.
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/cli/commands.hpp>
 #include <zdg/convergence/cli/volume_input.hpp>
+#include <zdg/estimators/ambrosio_tortorelli.hpp>
 #include <zdg/estimators/contour_estimators.hpp>
+#include <zdg/estimators/digital_integration.hpp>
+#include <zdg/estimators/heat_geodesics.hpp>
 #include <zdg/estimators/volume_ii.hpp>
 #include <zdg/kernel/adjacency.hpp>
 #include <zdg/kernel/betti_numbers.hpp>
@@ -35,6 +41,7 @@
 #include <zdg/kernel/primal_surface_mesh.hpp>
 #include <zdg/kernel/render_contours.hpp>
 #include <zdg/kernel/render_mesh.hpp>
+#include <zdg/kernel/surfel_complex.hpp>
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -332,13 +339,17 @@ void print_picture_line(const nlohmann::json& picture) {
 // ------------------------------------------------------------------------------------------
 // zdg surface
 
-const std::vector<std::string> kSurfaceEstimates = {"ii-mean", "ii-gaussian", "ii-k1",
-                                                    "ii-k2",   "ii-normal",   "ii-directions"};
+const std::vector<std::string> kSurfaceEstimates = {"ii-mean",  "ii-gaussian", "ii-k1",
+                                                    "ii-k2",    "ii-normal",   "ii-directions",
+                                                    "geodesic", "at-normal"};
+// The estimates that can colour the picture (one value per surfel).
+const std::vector<std::string> kSurfaceColors = {"ii-mean", "ii-gaussian", "ii-k1",
+                                                 "ii-k2",   "geodesic",    "at-v"};
 
 struct SurfaceArgs {
   VolumeInputArgs in;
   std::string adjacency = "6,26", component = "all", estimate, radius, mesh = "primal";
-  std::string output, csv;
+  std::string output, csv, source, at_alpha, at_lambda;
   PictureArgs picture;
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
@@ -347,9 +358,112 @@ struct SurfaceArgs {
 struct SurfaceEstimates {
   std::vector<double> mean;
   std::vector<IIPrincipalCurvatures> principal;
+  std::vector<double> geodesic; // heat-method distance to the source (NaN on other surfaces)
+  std::int64_t source = -1;     // its surfel
+  double geodesic_time = 0;
+  std::string solver;
+  std::vector<Point3<double>> at_normal; // Ambrosio-Tortorelli normals
+  std::vector<double> at_v;              // its discontinuity function, per surfel (min of sides)
+  ATParameters at;
+  std::string at_solver;
+  int at_iterations = 0;
   std::set<std::string> names;
   double R = 0, h = 1;
 };
+
+// --source: a surfel index, or a point X,Y,Z in physical units (the nearest surfel centre,
+// within two voxels).
+struct SourceArg {
+  std::optional<std::int64_t> surfel;
+  Point3<double> point;
+};
+
+SourceArg parse_source(const std::string& text) {
+  SourceArg out;
+  if (text.find(',') == std::string::npos) {
+    std::int64_t v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || ec != std::errc() || end != text.data() + text.size() || v < 0)
+      throw InvalidArgument("--source '" + text +
+                            "': expected a surfel index (0, 1, ...) or a point X,Y,Z");
+    out.surfel = v;
+    return out;
+  }
+  const auto parts = split_list(text);
+  if (parts.size() != 3 || std::count(text.begin(), text.end(), ',') != 2)
+    throw InvalidArgument("--source '" + text + "': expected X,Y,Z (three numbers)");
+  out.point = {parse_number(parts[0], "--source"), parse_number(parts[1], "--source"),
+               parse_number(parts[2], "--source")};
+  return out;
+}
+
+// The Ambrosio-Tortorelli piecewise-smooth normals (estimators/ambrosio_tortorelli.hpp) from the
+// II normals on the primal surface's surfels, and v brought to the surfels (the minimum over
+// their four sides: 0 on a sharp edge).
+void compute_at_normals(SurfaceEstimates& est, const PolygonMesh& quads) {
+  const SurfelComplex cx = surfel_complex(quads);
+  std::vector<Point3<double>> g;
+  g.reserve(est.principal.size());
+  for (const auto& p : est.principal) g.push_back(p.normal);
+  const ATResult r = at_normals(cx, g, est.at);
+  est.at_normal = r.normals;
+  est.at_v = at_surfel_v(cx, r.v, ATSurfelPolicy::minimum);
+  est.at_solver = r.backend;
+  est.at_iterations = r.iterations;
+}
+
+// --at-alpha, --at-lambda: positive numbers.
+double parse_positive(const std::string& text, const std::string& option) {
+  const double v = parse_number(text, option);
+  if (!(v > 0) || !std::isfinite(v))
+    throw InvalidArgument(option + " '" + text + "': a positive number is needed");
+  return v;
+}
+
+// The heat-method distance on the primal surface's surfels (estimators/heat_geodesics.hpp),
+// with the II normals and the surfel measure; surfels on other closed surfaces than the
+// source's get NaN.
+void compute_geodesic(SurfaceEstimates& est, const PolygonMesh& quads, const SourceArg& source,
+                      const std::string& path) {
+  const SurfelComplex cx = surfel_complex(quads);
+  std::vector<Point3<double>> normals;
+  normals.reserve(est.principal.size());
+  for (const auto& p : est.principal) normals.push_back(p.normal);
+  const auto w = surfel_weights(surfel_measure(normals, cx.normals), cx.areas);
+  std::int64_t s = 0;
+  if (source.surfel) {
+    s = *source.surfel;
+    if (s >= cx.surfel_count())
+      throw InvalidArgument("--source " + str(s) + ": the surface has " + str(cx.surfel_count()) +
+                            " surfels (0.." + str(cx.surfel_count() - 1) + ")");
+  } else {
+    const auto [nearest, gap] = nearest_surfel(cx, source.point);
+    if (gap > 2 * est.h)
+      throw InvalidArgument(fmt::format("--source {},{},{}: {:.6g} from the nearest surfel centre "
+                                        "of {}, more than two voxels: not on the surface",
+                                        source.point.x, source.point.y, source.point.z, gap, path));
+    s = nearest;
+  }
+  const HeatGeodesics geo(cx, normals, w);
+  est.geodesic = geo.distance(s);
+  est.source = s;
+  est.geodesic_time = geo.time();
+  est.solver = spd_backend_name(geo.backend());
+  // The closed surface of the source: breadth-first over the linels.
+  std::vector<char> reached(std::size_t(cx.surfel_count()), 0);
+  std::vector<std::int64_t> queue{s};
+  reached[std::size_t(s)] = 1;
+  for (std::size_t i = 0; i < queue.size(); ++i)
+    for (int k = 0; k < 4; ++k) {
+      const std::int64_t r = cx.neighbour(queue[i], k);
+      if (!reached[std::size_t(r)]) {
+        reached[std::size_t(r)] = 1;
+        queue.push_back(r);
+      }
+    }
+  for (std::size_t i = 0; i < reached.size(); ++i)
+    if (!reached[i]) est.geodesic[i] = std::numeric_limits<double>::quiet_NaN();
+}
 
 std::vector<double> principal_field(const SurfaceEstimates& e, const std::string& name) {
   std::vector<double> v(e.principal.size());
@@ -366,7 +480,8 @@ void write_surface_csv(const std::string& path, const ImageSurfels& sf, const Im
   if (!f) throw IoError(path + ": cannot be written");
   const bool m = est.names.count("ii-mean") != 0, g = est.names.count("ii-gaussian") != 0,
              k1 = est.names.count("ii-k1") != 0, k2 = est.names.count("ii-k2") != 0,
-             n = est.names.count("ii-normal") != 0, d = est.names.count("ii-directions") != 0;
+             n = est.names.count("ii-normal") != 0, d = est.names.count("ii-directions") != 0,
+             geo = est.names.count("geodesic") != 0, at = est.names.count("at-normal") != 0;
   std::string out = "surfel,surface,x,y,z,voxel_x,voxel_y,voxel_z,direction";
   if (m) out += ",ii_mean";
   if (g) out += ",ii_gaussian";
@@ -374,6 +489,8 @@ void write_surface_csv(const std::string& path, const ImageSurfels& sf, const Im
   if (k2) out += ",ii_k2";
   if (n) out += ",nx,ny,nz";
   if (d) out += ",d1x,d1y,d1z,d2x,d2y,d2z";
+  if (geo) out += ",geodesic";
+  if (at) out += ",at_nx,at_ny,at_nz,at_v";
   out += "\n";
   static const char* dirs[6] = {"-x", "+x", "-y", "+y", "-z", "+z"};
   const VoxelGrid& gr = sf.grid;
@@ -399,6 +516,12 @@ void write_surface_csv(const std::string& path, const ImageSurfels& sf, const Im
         fmt::format_to(std::back_inserter(out), ",{},{},{},{},{},{}", pc.d1.x, pc.d1.y, pc.d1.z,
                        pc.d2.x, pc.d2.y, pc.d2.z);
     }
+    if (geo) fmt::format_to(std::back_inserter(out), ",{}", est.geodesic[std::size_t(i)]);
+    if (at) {
+      const auto& q = est.at_normal[std::size_t(i)];
+      fmt::format_to(std::back_inserter(out), ",{},{},{},{}", q.x, q.y, q.z,
+                     est.at_v[std::size_t(i)]);
+    }
     out += "\n";
     if (out.size() > (std::size_t{1} << 22)) {
       f << out;
@@ -419,23 +542,34 @@ void run_surface(const SurfaceArgs& a) {
   for (const auto& e : split_list(a.estimate)) {
     if (std::find(kSurfaceEstimates.begin(), kSurfaceEstimates.end(), e) == kSurfaceEstimates.end())
       throw InvalidArgument("--estimate: unknown estimator '" + e +
-                            "' (ii-mean, ii-gaussian, ii-k1, ii-k2, ii-normal, ii-directions)");
+                            "' (ii-mean, ii-gaussian, ii-k1, ii-k2, ii-normal, ii-directions, "
+                            "geodesic, at-normal)");
     est.names.insert(e);
   }
+  std::optional<SourceArg> source;
+  if (!a.source.empty()) source = parse_source(a.source);
+  if (!a.at_alpha.empty()) est.at.alpha = parse_positive(a.at_alpha, "--at-alpha");
+  if (!a.at_lambda.empty()) est.at.lambda = parse_positive(a.at_lambda, "--at-lambda");
   // The picture's colour: --color (computed when not in --estimate), else the first scalar
   // estimate, else none (a grey surface).
   const auto [png_w, png_h] = picture_size(a.picture, 1200, 900);
   std::string color = a.picture.color;
   if (!color.empty() && color != "none") {
-    if (std::find(kSurfaceEstimates.begin(), kSurfaceEstimates.begin() + 4, color) ==
-        kSurfaceEstimates.begin() + 4)
+    if (std::find(kSurfaceColors.begin(), kSurfaceColors.end(), color) == kSurfaceColors.end())
       throw InvalidArgument("--color '" + color +
-                            "': expected ii-mean, ii-gaussian, ii-k1, ii-k2 or none");
-    est.names.insert(color);
+                            "': expected ii-mean, ii-gaussian, ii-k1, ii-k2, geodesic, at-v or "
+                            "none");
+    est.names.insert(color == "at-v" ? "at-normal" : color);
   }
+  if ((!a.at_alpha.empty() || !a.at_lambda.empty()) && est.names.count("at-normal") == 0)
+    throw InvalidArgument("--at-alpha and --at-lambda are only read by --estimate at-normal");
+  if (est.names.count("geodesic") != 0 && !source)
+    throw InvalidArgument("--estimate geodesic needs --source SURFEL or --source X,Y,Z");
+  if (source && est.names.count("geodesic") == 0)
+    throw InvalidArgument("--source is only read by --estimate geodesic");
   if (color.empty() && !a.picture.png.empty())
-    for (auto it = kSurfaceEstimates.begin(); it != kSurfaceEstimates.begin() + 4; ++it)
-      if (color.empty() && est.names.count(*it) != 0) color = *it;
+    for (const auto& c : kSurfaceColors)
+      if (color.empty() && est.names.count(c == "at-v" ? "at-normal" : c) != 0) color = c;
   if (color == "none") color.clear();
   MeshRenderOptions render;
   render.width = png_w;
@@ -533,6 +667,17 @@ void run_surface(const SurfaceArgs& a) {
       est.principal = volume_ii_principal_curvatures(mask, sf, est.h, est.R, a.threads);
     progress.done("estimates");
   }
+  if (est.names.count("geodesic")) {
+    progress.start("geodesic distance (heat method)");
+    compute_geodesic(est, primal_surface_mesh(mask, sf, conv, place, a.threads), *source,
+                     a.in.path);
+    progress.done("geodesic");
+  }
+  if (est.names.count("at-normal")) {
+    progress.start("Ambrosio-Tortorelli normals");
+    compute_at_normals(est, primal_surface_mesh(mask, sf, conv, place, a.threads));
+    progress.done("at-normal");
+  }
 
   nlohmann::json mesh_json, picture;
   if (!a.output.empty() || !a.picture.png.empty()) {
@@ -559,6 +704,19 @@ void run_surface(const SurfaceArgs& a) {
     if (est.names.count("ii-mean")) fields.emplace_back("ii-mean", est.mean);
     for (const char* n : {"ii-gaussian", "ii-k1", "ii-k2"})
       if (est.names.count(n)) fields.emplace_back(n, principal_field(est, n));
+    if (est.names.count("geodesic")) fields.emplace_back("geodesic", est.geodesic);
+    if (est.names.count("at-normal")) {
+      std::vector<double> c[3];
+      for (const auto& q : est.at_normal) {
+        c[0].push_back(q.x);
+        c[1].push_back(q.y);
+        c[2].push_back(q.z);
+      }
+      fields.emplace_back("at-nx", std::move(c[0]));
+      fields.emplace_back("at-ny", std::move(c[1]));
+      fields.emplace_back("at-nz", std::move(c[2]));
+      fields.emplace_back("at-v", est.at_v);
+    }
     std::vector<Point3<double>> normals(static_cast<std::size_t>(sf.size()));
     for (std::int64_t i = 0; i < sf.size(); ++i) {
       if (!est.principal.empty()) {
@@ -651,6 +809,22 @@ void run_surface(const SurfaceArgs& a) {
       if (est.names.count(n)) estimates[n] = stats(principal_field(est, n));
     for (const char* n : {"ii-normal", "ii-directions"})
       if (est.names.count(n)) estimates[n] = {{"count", str(std::int64_t(est.principal.size()))}};
+    if (est.names.count("geodesic")) {
+      estimates["geodesic"] = stats(est.geodesic);
+      estimates["geodesic"]["source"] = str(est.source);
+      estimates["geodesic"]["time"] = est.geodesic_time;
+      estimates["geodesic"]["solver"] = est.solver;
+    }
+    if (est.names.count("at-normal")) {
+      estimates["at-normal"] = {{"count", str(std::int64_t(est.at_normal.size()))},
+                                {"alpha", est.at.alpha},
+                                {"lambda", est.at.lambda},
+                                {"epsilon1", est.at.epsilon1},
+                                {"epsilon2", est.at.epsilon2},
+                                {"iterations", est.at_iterations},
+                                {"solver", est.at_solver}};
+      estimates["at-v"] = stats(est.at_v);
+    }
     if (!est.names.empty()) {
       estimates["radius"] = est.R;
       estimates["radius_voxels"] = est.R / est.h;
@@ -1017,11 +1191,22 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                      "(default size 1200x900)");
   surface->add_option("--estimate", s->estimate,
                       "comma-separated estimators: ii-mean, ii-gaussian, ii-k1, ii-k2, ii-normal, "
-                      "ii-directions");
+                      "ii-directions, geodesic (heat-method distance to --source on the surfels, "
+                      "with the II normals), at-normal (Ambrosio-Tortorelli piecewise-smooth "
+                      "normals from the II normals, and their discontinuity field at-v)");
+  surface->add_option("--at-alpha", s->at_alpha,
+                      "Ambrosio-Tortorelli data fidelity alpha > 0 (default 0.1; larger: closer "
+                      "to the II normals)");
+  surface->add_option("--at-lambda", s->at_lambda,
+                      "Ambrosio-Tortorelli discontinuity cost lambda > 0 (default 0.025; "
+                      "smaller: more edges)");
+  surface->add_option("--source", s->source,
+                      "source of --estimate geodesic: a surfel index (the row of --csv) or a "
+                      "point X,Y,Z in physical units (the nearest surfel, within two voxels)");
   surface->add_option("--color", s->picture.color,
-                      "the estimate that colours the picture: ii-mean, ii-gaussian, ii-k1, ii-k2 "
-                      "(computed if not in --estimate), or none; default: the first of these "
-                      "estimated");
+                      "the estimate that colours the picture: ii-mean, ii-gaussian, ii-k1, ii-k2, "
+                      "geodesic, at-v (computed if not in --estimate), or none; default: the "
+                      "first of these estimated");
   surface->add_option("--view", s->picture.view,
                       "picture view AZIMUTH,ELEVATION in degrees (default -60,30; 90,90 looks "
                       "down the z axis with x to the right)");

@@ -10,7 +10,7 @@
 #include <zdg/kernel/digital_surface.hpp>
 #include <zdg/kernel/surfel_complex.hpp>
 
-#include "tests/support/digital_sets.hpp"
+#include "tests/support/digital_sphere.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,35 +22,8 @@
 namespace zdg {
 namespace {
 
-// The unit sphere digitized at step h (voxel z inside iff |h z| <= 1), its surfels, complex,
-// and II normals (R = 2 h^{1/3}, the rate h^{2/3}).
-struct DigitalSphere {
-  double h = 0;
-  VoxelPredicate inside;
-  VoxelBox box;
-  std::vector<Surfel> surfels;
-  SurfelComplex complex;
-  std::vector<Point3<double>> ii_normals;
-};
-
-DigitalSphere digital_sphere(double h, bool normals = true) {
-  DigitalSphere s;
-  s.h = h;
-  const double r2 = 1.0 / (h * h);
-  s.inside = [r2](const Voxel& z) {
-    return static_cast<double>(z.x * z.x + z.y * z.y + z.z * z.z) <= r2;
-  };
-  const auto n = static_cast<std::int64_t>(std::ceil(1.0 / h)) + 2;
-  s.box = VoxelBox{{-n, -n, -n}, {n, n, n}};
-  s.surfels = boundary_surfels(s.inside, s.box);
-  s.complex = surfel_complex(primal_surface(s.surfels), h);
-  if (normals) {
-    for (const auto& c :
-         ii_principal_curvatures(s.inside, s.box, s.surfels, h, 2.0 * std::cbrt(h), 2))
-      s.ii_normals.push_back(c.normal);
-  }
-  return s;
-}
+using test::digital_sphere;
+using test::DigitalSphere;
 
 TEST(SurfelComplex, DigitalSphereIsAClosedSurfaceOfEulerCharacteristicTwo) {
   const DigitalSphere s = digital_sphere(0.2, false);

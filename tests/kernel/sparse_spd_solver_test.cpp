@@ -79,3 +79,36 @@ TEST(SparseSpdSolver, RefusesIndefiniteNonSquareAndWrongSizes) {
 }
 
 } // namespace
+
+// refactor: the numeric factorization of a matrix with the analysed pattern gives the solution
+// of the new system on every backend (a tridiagonal SPD matrix whose values change, explicit
+// zeros included); a different pattern is refused.
+TEST(SparseSpdSolver, RefactorReusesTheAnalysisOfThePattern) {
+  const auto tridiagonal = [](double diag, double off) {
+    std::vector<zdg::SparseTriplet> t;
+    for (std::int64_t i = 0; i < 50; ++i) {
+      t.push_back({i, i, diag + 0.01 * double(i)});
+      if (i > 0) {
+        t.push_back({i, i - 1, off});
+        t.push_back({i - 1, i, off});
+      }
+    }
+    return zdg::SparseMatrix::from_triplets(50, 50, std::move(t));
+  };
+  std::vector<zdg::SpdBackend> backends{zdg::SpdBackend::eigen_ldlt};
+  if (zdg::SparseSpdSolver::cholmod_available()) backends.push_back(zdg::SpdBackend::cholmod);
+  const std::vector<double> rhs(50, 1.0);
+  for (auto be : backends) {
+    zdg::SparseSpdSolver s(tridiagonal(4, -1), be);
+    for (double off : {-1.5, 0.0, 0.7}) { // 0: explicit zeros keep the pattern
+      const auto a = tridiagonal(3, off);
+      s.refactor(a);
+      const auto x = s.solve(rhs);
+      const auto ax = a.multiply(x);
+      for (std::size_t i = 0; i < rhs.size(); ++i) EXPECT_NEAR(ax[i], rhs[i], 1e-12);
+    }
+    EXPECT_THROW(s.refactor(zdg::SparseMatrix::diagonal(std::vector<double>(50, 1.0))),
+                 zdg::InvalidArgument);
+    EXPECT_THROW(s.refactor(tridiagonal(0.5, -2)), zdg::Error); // not positive definite
+  }
+}

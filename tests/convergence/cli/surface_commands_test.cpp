@@ -166,6 +166,47 @@ print(nv, nf, csv['ii_mean'].mean(), csv['ii_k1'].mean())
   EXPECT_NEAR(mean, 1.0 / 9, 0.03);
 }
 
+// --estimate geodesic (the heat method, estimators/heat_geodesics.hpp) on a ball of radius 11
+// voxels from the surfel nearest to its north pole: the CSV's distances against the
+// great-circle distance R acos(n . n0) between the rays of the surfel centres (mean error
+// below 5% of the half circumference pi R), 0 at the source, and the JSON's summary.
+TEST(SurfaceCommand, GeodesicDistanceOnABall) {
+  Files f;
+  const double c = 27.0 / 2; // the centre of the 28^3 volume in voxel coordinates
+  save_volume(f.path("ball.npy"), 28,
+              [](double x, double y, double z) { return x * x + y * y + z * z <= 121; });
+  const auto j = run_json("surface " + f("ball.npy") + " --csv " + f("g.csv") +
+                          " --estimate geodesic --source " + std::to_string(c) + "," +
+                          std::to_string(c) + "," + std::to_string(c + 11.5) + " --threads 2");
+  const auto& g = j["estimates"]["geodesic"];
+  const auto source = std::stoll(g["source"].get<std::string>());
+  EXPECT_GT(g["max"].get<double>(), 11 * 2.5);
+  std::ifstream in(f.path("g.csv"));
+  std::string line;
+  std::getline(in, line);
+  ASSERT_NE(line.find(",geodesic"), std::string::npos) << line;
+  std::vector<std::array<double, 4>> rows; // x, y, z, distance (relative to the centre)
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+    rows.push_back({std::stod(cells[2]) - c, std::stod(cells[3]) - c, std::stod(cells[4]) - c,
+                    std::stod(cells.back())});
+  }
+  ASSERT_EQ(std::to_string(rows.size()), j["surfels"].get<std::string>());
+  const auto& s0 = rows[std::size_t(source)];
+  EXPECT_EQ(s0[3], 0.0);
+  EXPECT_GT(s0[2], 10);
+  double error = 0;
+  for (const auto& r : rows) {
+    const double dot = r[0] * s0[0] + r[1] * s0[1] + r[2] * s0[2];
+    const double la = std::hypot(r[0], r[1], r[2]), lb = std::hypot(s0[0], s0[1], s0[2]);
+    error += std::abs(r[3] - 11 * std::acos(std::clamp(dot / (la * lb), -1.0, 1.0)));
+  }
+  error /= double(rows.size());
+  EXPECT_LT(error, 0.05 * 11 * 3.14159) << error;
+}
+
 // The mesh format follows the extension: OBJ and OFF hold the same vertices and faces as the
 // JSON counts (read back as text), the OFF's faces the primal quads.
 TEST(SurfaceCommand, ObjAndOffByExtension) {
@@ -410,6 +451,12 @@ TEST(SurfaceCommand, BadInputIsOneLineExitTwoNothingWritten) {
       {"surface " + ball + out + " --color-range 0:1", "--color-range needs --png"},
       {"surface " + ball + " --png " + f("out.png") + " --color ii-mean --radius 100v",
        "larger than the volume"},
+      {"surface " + ball + out + " --estimate geodesic", "needs --source"},
+      {"surface " + ball + out + " --source 0", "only read by --estimate geodesic"},
+      {"surface " + ball + out + " --estimate geodesic --source x", "surfel index"},
+      {"surface " + ball + out + " --estimate geodesic --source 1,2", "X,Y,Z"},
+      {"surface " + ball + out + " --estimate geodesic --source 99999", "surfels (0.."},
+      {"surface " + ball + out + " --estimate geodesic --source 100,0,0", "not on the surface"},
       {"surface " + f("flat.npy") + out, "3D one is needed"},
       {"surface " + f("missing.npy") + out, "missing.npy"},
       {"surface " + ball + out + " --estimate ii-mean --spacing 1,1,2", "isotropic"},
