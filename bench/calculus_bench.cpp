@@ -4,9 +4,11 @@
 //   build/bin/calculus_bench --benchmark_counters_tabular=true
 // Steps: the heat-kernel Laplace-Beltrami operator applied to one function (t = h^0.4,
 // truncation 5 sqrt(2t); 2 threads), the heat-method geodesic distance from one source
-// (assembly, two factorizations, two solves; CHOLMOD when built with it). The weights are h^2 n .
+// (assembly, two factorizations, two solves; CHOLMOD when built with it), the
+// Ambrosio-Tortorelli normals with 3 epsilon levels. The weights are h^2 n .
 // n_elem with the unit sphere's exact normal at the surfel centre (the benchmark times the
 // operators, not the II).
+#include <zdg/estimators/ambrosio_tortorelli.hpp>
 #include <zdg/estimators/heat_geodesics.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/kernel/digital_surface.hpp>
@@ -100,6 +102,33 @@ void BM_HeatGeodesics(benchmark::State& state) {
   state.counters["surfels"] = double(s.complex.surfel_count());
 }
 BENCHMARK(BM_HeatGeodesics)->Arg(500)->Arg(250)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Ambrosio-Tortorelli normals with 3 epsilon levels (2, 1, 0.5), at most 10 alternating steps
+// each, from the exact normals plus a deterministic perturbation (so that there is work).
+void BM_ATNormals(benchmark::State& state) {
+  const double h = step(state);
+  const Sphere& s = sphere(h);
+  std::vector<zdg::Point3<double>> g;
+  for (std::size_t i = 0; i < s.normals.size(); ++i) {
+    const auto n = s.normals[i];
+    const double e = 0.1 * std::sin(double(i) * 12.9898);
+    zdg::Point3<double> p{n.x + e, n.y - e, n.z + 0.5 * e};
+    const double l = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    g.push_back({p.x / l, p.y / l, p.z / l});
+  }
+  zdg::ATParameters p;
+  p.epsilon1 = 2;
+  p.epsilon2 = 0.5;
+  int iterations = 0;
+  for (auto _ : state) {
+    const auto r = zdg::at_normals(s.complex, g, p);
+    iterations = r.iterations;
+    benchmark::DoNotOptimize(r.normals.data());
+  }
+  state.counters["surfels"] = double(s.complex.surfel_count());
+  state.counters["iterations"] = iterations;
+}
+BENCHMARK(BM_ATNormals)->Arg(500)->Arg(250)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace
 

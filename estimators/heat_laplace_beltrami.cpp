@@ -29,8 +29,9 @@ namespace {
 using Cell = std::array<std::int64_t, 3>;
 
 // Four doubles (GCC and clang vector extensions: one AVX register, two SSE2 ones). The helpers
-// are inlined into pair_sums, so no 32-byte vector crosses a call (GCC's -Wpsabi note about the
-// AVX calling convention does not apply: CMakeLists.txt turns it off for this file).
+// are inlined into pair_sums, so no 32-byte vector crosses a call (the -Wpsabi note of GCC and
+// clang about the AVX calling convention does not apply: CMakeLists.txt turns it off for this
+// file).
 typedef double V4 __attribute__((vector_size(32)));
 typedef std::int64_t I4 __attribute__((vector_size(32)));
 

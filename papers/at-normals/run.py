@@ -11,6 +11,7 @@ the sharp features (within the II radius of an edge, where the II kernel straddl
 and away from them.
 
     /usr/bin/python3 papers/at-normals/run.py -o out/at-normals [--quick] [--zdg build/bin/zdg]
+        [--radius-voxels 3 | --radius-voxels 0 --k 1] [--at-alpha 0.3] [--at-lambda L]
 
 Outputs in the folder: results.csv (shape, N, h, band, surfels, II and AT mean and max angles
 in degrees, seconds), at-normals.png / .svg (mean angle against h, II dashed, AT solid, one
@@ -166,16 +167,17 @@ def angles(a, b):
     return np.degrees(np.arctan2(cross, np.sum(a * b, axis=-1)))
 
 
-def run(zdg, name, inside, truth, n, k, tmp):
+def run(zdg, name, inside, truth, n, k, fixed, at_options, tmp):
     vol, c = digitize(inside, n)
     path = os.path.join(tmp, f"{name}-{n}.npy")
     np.save(path, vol)
-    radius = k * n ** (2.0 / 3.0)  # R = k h^{1/3} in the unit frame, in voxels
+    # R = k h^{1/3} in the unit frame (k N^{2/3} voxels), or a fixed number of voxels
+    radius = fixed if fixed else k * n ** (2.0 / 3.0)
     out = os.path.join(tmp, f"{name}-{n}.csv")
     t0 = time.time()
     r = subprocess.run([zdg, "surface", path, "--threshold", "1", "--estimate",
                         "ii-normal,at-normal", "--radius", f"{radius}v", "--csv", out,
-                        "--threads", "2", "--quiet", "--force", "--json"],
+                        "--threads", "2", "--quiet", "--force", "--json"] + at_options,
                        capture_output=True, text=True)
     seconds = time.time() - t0
     if r.returncode != 0:
@@ -209,14 +211,26 @@ def main():
     ap.add_argument("--quick", action="store_true", help="N = 8, 12, 16 (default up to 32)")
     ap.add_argument("--zdg", default=os.path.join(ROOT, "build", "bin", "zdg"))
     ap.add_argument("--k", type=float, default=1.0, help="II radius R = k h^{1/3}")
+    ap.add_argument("--radius-voxels", type=float, default=3,
+                    help="a fixed II radius in voxels (default 3, the papers' setting; 0: the "
+                         "convergent law R = k h^{1/3})")
+    ap.add_argument("--at-alpha", default="0.3",
+                    help="zdg surface --at-alpha (default 0.3; zdg's own default is 0.1)")
+    ap.add_argument("--at-lambda", help="zdg surface --at-lambda (default: zdg's)")
     args = ap.parse_args()
     ns = [8, 12, 16] if args.quick else [8, 12, 16, 24, 32]
+    at_options = []
+    if args.at_alpha:
+        at_options += ["--at-alpha", args.at_alpha]
+    if args.at_lambda:
+        at_options += ["--at-lambda", args.at_lambda]
     os.makedirs(args.output, exist_ok=True)
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for name, inside, truth, sharp in SHAPES:
             for n in ns:
-                got = run(args.zdg, name, inside, truth, n, args.k, tmp)
+                got = run(args.zdg, name, inside, truth, n, args.k, args.radius_voxels, at_options,
+                          tmp)
                 for r in got:
                     print(f"{name:24s} N = {n:3d} {r['band']:5s} {r['surfels']:7d} surfels: "
                           f"II {r['ii_mean']:6.2f} deg, AT {r['at_mean']:6.2f} deg "
@@ -241,7 +255,8 @@ def main():
             checks.append({"shape": name, "band": "all", "claim": "AT <= 1.1 II at every h",
                            "pass": ok})
     with open(os.path.join(args.output, "summary.json"), "w") as f:
-        json.dump({"k": args.k, "N": ns, "checks": checks, "rows": rows}, f, indent=1)
+        json.dump({"k": args.k, "radius_voxels": args.radius_voxels, "at_options": at_options,
+                   "N": ns, "checks": checks, "rows": rows}, f, indent=1)
     for c in checks:
         print(f"check {c['shape']:24s} {c['band']:5s} {c['claim']}: "
               f"{'pass' if c['pass'] else 'FAIL'}")
@@ -264,7 +279,8 @@ def main():
             if j == 0:
                 ax.set_ylabel("mean angle (deg)")
             ax.legend(fontsize=8)
-    fig.suptitle(f"Ambrosio-Tortorelli vs integral-invariant normals (R = {args.k} h^(1/3))")
+    law = (f"R = {args.radius_voxels:g} voxels" if args.radius_voxels else f"R = {args.k:g} h^(1/3)")
+    fig.suptitle(f"Ambrosio-Tortorelli vs integral-invariant normals ({law})")
     fig.tight_layout()
     for ext in ("png", "svg"):
         fig.savefig(os.path.join(args.output, "at-normals." + ext), dpi=110)
