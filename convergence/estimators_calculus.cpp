@@ -1,12 +1,12 @@
 // Estimators of the registry from the calculus on digital surfaces (#14): di-area, the digital
 // integral of 1 with the surfel measure of the integral-invariant normal (estimators/
 // digital_integration.hpp), compared with the shape's area in closed form; and the
-// Laplace-Beltrami operators lb-heat (estimators/heat_laplace_beltrami.hpp), lb-cotan and
-// lb-combinatorial (kernel/cotan_laplacian.hpp) applied to a test function u (the parameter
-// `u`, convergence/scalar_field.hpp), compared at every element with Delta_S u at the nearest
-// point of the true surface (its normal and principal curvatures from the shape's closed
-// forms: exact for spheres, from the fundamental forms for the ellipsoid, torus and
-// polynomial shapes).
+// Laplace-Beltrami operators lb-heat (estimators/heat_laplace_beltrami.hpp), lb-cotan (primal
+// surface), lb-cotan-mc (marching-cubes mesh) and lb-combinatorial (kernel/cotan_laplacian.hpp)
+// applied to a test function u (the parameter `u`, convergence/scalar_field.hpp), compared at every
+// element with Delta_S u at the nearest point of the true surface (its normal and principal
+// curvatures from the shape's closed forms: exact for spheres, from the fundamental forms for the
+// ellipsoid, torus and polynomial shapes).
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/estimator.hpp>
@@ -15,6 +15,9 @@
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
 #include <zdg/kernel/cotan_laplacian.hpp>
+#include <zdg/kernel/image_surfaces.hpp>
+#include <zdg/kernel/image_surfels.hpp>
+#include <zdg/kernel/marching_cubes.hpp>
 #include <zdg/kernel/surfel_complex.hpp>
 
 #include <cmath>
@@ -124,6 +127,34 @@ ErrorStats run_lb_cotan(const RunInput& in) {
   return laplacian_errors(f, complex.pointels, L.apply(sampled(f, complex.pointels)));
 }
 
+// Cotangent LB of the marching-cubes mesh of the digitization (kernel/marching_cubes.hpp, the
+// (6,26) convention, level 1/2 between voxel centres), at its vertices.
+ErrorStats run_lb_cotan_mc(const RunInput& in) {
+  const detail::Digitized3 d = whole_surface(in, "lb-cotan-mc");
+  const TestFunction f = test_function(in, d);
+  const VoxelBox& b = d.box;
+  const std::int64_t nx = b.hi.x - b.lo.x + 1, ny = b.hi.y - b.lo.y + 1, nz = b.hi.z - b.lo.z + 1;
+  Image<std::uint8_t> mask(Domain({nz, ny, nx}, {b.lo.z, b.lo.y, b.lo.x}));
+  auto& v = mask.values();
+  for (std::int64_t z = 0, i = 0; z < nz; ++z)
+    for (std::int64_t y = 0; y < ny; ++y)
+      for (std::int64_t x = 0; x < nx; ++x, ++i)
+        v[std::size_t(i)] = d.inside({b.lo.x + x, b.lo.y + y, b.lo.z + z}) ? 1 : 0;
+  const ImageSurfels sf = image_surfels(mask, 1);
+  const VoxelPlacement place{{in.h, in.h, in.h},
+                             {in.h * double(b.lo.x), in.h * double(b.lo.y), in.h * double(b.lo.z)}};
+  const PolygonMesh mesh =
+      marching_cubes(mask, sf, SurfaceConvention::of(6, 26), place, nullptr, 1);
+  std::vector<std::array<std::int64_t, 3>> triangles;
+  triangles.reserve(std::size_t(mesh.face_count()));
+  for (std::int64_t t = 0; t < mesh.face_count(); ++t) {
+    const auto c = mesh.face(t);
+    triangles.push_back({c[0], c[1], c[2]});
+  }
+  const CotanLaplacian L = cotan_laplacian(mesh.vertices, triangles);
+  return laplacian_errors(f, mesh.vertices, L.apply(sampled(f, mesh.vertices)));
+}
+
 // Combinatorial LB (1/area(s)) sum over the 4 neighbours (u(r) - u(s)), at the surfel centres.
 ErrorStats run_lb_combinatorial(const RunInput& in) {
   const detail::Digitized3 d = whole_surface(in, "lb-combinatorial");
@@ -206,6 +237,19 @@ void register_calculus_estimators(std::vector<Estimator>& out) {
           return std::nullopt;
         }},
        run_lb_cotan});
+  out.push_back(
+      {"lb-cotan-mc",
+       3,
+       "cotangent Laplacian M^{-1} S of the marching-cubes mesh of the digitization ((6,26), "
+       "level 1/2) applied to u at its vertices, against Delta_S u at the nearest surface point",
+       "Laplace-Beltrami",
+       {function_parameter()},
+       {"no convergence proven: the marching-cubes vertices of a binary image are off the "
+        "surface by O(h) and its normals do not converge (Caissard et al., JMIV 2019)",
+        [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          return std::nullopt;
+        }},
+       run_lb_cotan_mc});
   out.push_back(
       {"lb-combinatorial",
        3,

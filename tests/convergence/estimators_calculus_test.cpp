@@ -107,12 +107,15 @@ TEST(CalculusEstimators, HeatLaplaceBeltramiConvergesWhereTheOthersDoNot) {
   const auto heat1 = lb("lb-heat:u=x", "sphere9", 1.0), heat2 = lb("lb-heat:u=x", "sphere9", 0.5);
   const auto comb2 = lb("lb-combinatorial:u=x", "sphere9", 0.5);
   const auto cotan2 = lb("lb-cotan:u=x", "sphere9", 0.5);
+  const auto mc2 = lb("lb-cotan-mc:u=x", "sphere9", 0.5);
   std::printf("sphere9, u = x: heat l_inf %.4f (h = 1) %.4f (h = 0.5); combinatorial %.4f, "
-              "cotan %.4f (h = 0.5); |Delta_S u| <= %.4f\n",
-              heat1.linf, heat2.linf, comb2.linf, cotan2.linf, 2.0 / 9);
+              "cotan %.4f, cotan on marching cubes %.4f (h = 0.5); |Delta_S u| <= %.4f\n",
+              heat1.linf, heat2.linf, comb2.linf, cotan2.linf, mc2.linf, 2.0 / 9);
   EXPECT_LT(heat2.linf, heat1.linf);
   EXPECT_LT(heat2.linf, comb2.linf);
   EXPECT_LT(heat2.linf, cotan2.linf);
+  EXPECT_LT(heat2.linf, mc2.linf);
+  EXPECT_GT(mc2.n, 1000);                // the marching-cubes vertices
   EXPECT_LT(heat2.mean, 0.25 * 2.0 / 9); // a quarter of the largest |Delta_S x| = 2/9
 }
 
