@@ -397,15 +397,26 @@ SourceArg parse_source(const std::string& text) {
   return out;
 }
 
+// The cell complex of the primal surface (one surfel per face, in the order of the surfels)
+// and the II normals: what the calculus estimates (geodesic, at-normal) start from, built once.
+struct CalculusInput {
+  SurfelComplex complex;
+  std::vector<Point3<double>> normals;
+};
+
+CalculusInput calculus_input(const SurfaceEstimates& est, const PolygonMesh& quads) {
+  CalculusInput in{surfel_complex(quads), {}};
+  in.normals.reserve(est.principal.size());
+  for (const auto& p : est.principal) in.normals.push_back(p.normal);
+  return in;
+}
+
 // The Ambrosio-Tortorelli piecewise-smooth normals (estimators/ambrosio_tortorelli.hpp) from the
 // II normals on the primal surface's surfels, and v brought to the surfels (the minimum over
 // their four sides: 0 on a sharp edge).
-void compute_at_normals(SurfaceEstimates& est, const PolygonMesh& quads) {
-  const SurfelComplex cx = surfel_complex(quads);
-  std::vector<Point3<double>> g;
-  g.reserve(est.principal.size());
-  for (const auto& p : est.principal) g.push_back(p.normal);
-  const ATResult r = at_normals(cx, g, est.at);
+void compute_at_normals(SurfaceEstimates& est, const CalculusInput& in) {
+  const SurfelComplex& cx = in.complex;
+  const ATResult r = at_normals(cx, in.normals, est.at);
   est.at_normal = r.normals;
   est.at_v = at_surfel_v(cx, r.v, ATSurfelPolicy::minimum);
   est.at_solver = r.backend;
@@ -422,13 +433,11 @@ double parse_positive(const std::string& text, const std::string& option) {
 
 // The heat-method distance on the primal surface's surfels (estimators/heat_geodesics.hpp),
 // with the II normals and the surfel measure; surfels on other closed surfaces than the
-// source's get NaN.
-void compute_geodesic(SurfaceEstimates& est, const PolygonMesh& quads, const SourceArg& source,
-                      const std::string& path) {
-  const SurfelComplex cx = surfel_complex(quads);
-  std::vector<Point3<double>> normals;
-  normals.reserve(est.principal.size());
-  for (const auto& p : est.principal) normals.push_back(p.normal);
+// source's (ImageSurfaces::surface_of) get NaN.
+void compute_geodesic(SurfaceEstimates& est, const CalculusInput& in, const ImageSurfaces& ss,
+                      const SourceArg& source, const std::string& path) {
+  const SurfelComplex& cx = in.complex;
+  const auto& normals = in.normals;
   const auto w = surfel_weights(surfel_measure(normals, cx.normals), cx.areas);
   std::int64_t s = 0;
   if (source.surfel) {
@@ -449,20 +458,9 @@ void compute_geodesic(SurfaceEstimates& est, const PolygonMesh& quads, const Sou
   est.source = s;
   est.geodesic_time = geo.time();
   est.solver = spd_backend_name(geo.backend());
-  // The closed surface of the source: breadth-first over the linels.
-  std::vector<char> reached(std::size_t(cx.surfel_count()), 0);
-  std::vector<std::int64_t> queue{s};
-  reached[std::size_t(s)] = 1;
-  for (std::size_t i = 0; i < queue.size(); ++i)
-    for (int k = 0; k < 4; ++k) {
-      const std::int64_t r = cx.neighbour(queue[i], k);
-      if (!reached[std::size_t(r)]) {
-        reached[std::size_t(r)] = 1;
-        queue.push_back(r);
-      }
-    }
-  for (std::size_t i = 0; i < reached.size(); ++i)
-    if (!reached[i]) est.geodesic[i] = std::numeric_limits<double>::quiet_NaN();
+  const auto own = ss.surface_of[std::size_t(s)];
+  for (std::size_t i = 0; i < est.geodesic.size(); ++i)
+    if (ss.surface_of[i] != own) est.geodesic[i] = std::numeric_limits<double>::quiet_NaN();
 }
 
 std::vector<double> principal_field(const SurfaceEstimates& e, const std::string& name) {
@@ -667,16 +665,19 @@ void run_surface(const SurfaceArgs& a) {
       est.principal = volume_ii_principal_curvatures(mask, sf, est.h, est.R, a.threads);
     progress.done("estimates");
   }
-  if (est.names.count("geodesic")) {
-    progress.start("geodesic distance (heat method)");
-    compute_geodesic(est, primal_surface_mesh(mask, sf, conv, place, a.threads), *source,
-                     a.in.path);
-    progress.done("geodesic");
-  }
-  if (est.names.count("at-normal")) {
-    progress.start("Ambrosio-Tortorelli normals");
-    compute_at_normals(est, primal_surface_mesh(mask, sf, conv, place, a.threads));
-    progress.done("at-normal");
+  if (est.names.count("geodesic") || est.names.count("at-normal")) {
+    const CalculusInput calculus =
+        calculus_input(est, primal_surface_mesh(mask, sf, conv, place, a.threads));
+    if (est.names.count("geodesic")) {
+      progress.start("geodesic distance (heat method)");
+      compute_geodesic(est, calculus, ss, *source, a.in.path);
+      progress.done("geodesic");
+    }
+    if (est.names.count("at-normal")) {
+      progress.start("Ambrosio-Tortorelli normals");
+      compute_at_normals(est, calculus);
+      progress.done("at-normal");
+    }
   }
 
   nlohmann::json mesh_json, picture;
@@ -1195,11 +1196,13 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                       "with the II normals), at-normal (Ambrosio-Tortorelli piecewise-smooth "
                       "normals from the II normals, and their discontinuity field at-v)");
   surface->add_option("--at-alpha", s->at_alpha,
-                      "Ambrosio-Tortorelli data fidelity alpha > 0 (default 0.1; larger: closer "
-                      "to the II normals)");
+                      fmt::format("Ambrosio-Tortorelli data fidelity alpha > 0 (default {}; "
+                                  "larger: closer to the II normals)",
+                                  ATParameters{}.alpha));
   surface->add_option("--at-lambda", s->at_lambda,
-                      "Ambrosio-Tortorelli discontinuity cost lambda > 0 (default 0.025; "
-                      "smaller: more edges)");
+                      fmt::format("Ambrosio-Tortorelli discontinuity cost lambda > 0 (default "
+                                  "{}; smaller: more edges)",
+                                  ATParameters{}.lambda));
   surface->add_option("--source", s->source,
                       "source of --estimate geodesic: a surfel index (the row of --csv) or a "
                       "point X,Y,Z in physical units (the nearest surfel, within two voxels)");
