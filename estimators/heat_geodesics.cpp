@@ -1,5 +1,6 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/heat_geodesics.hpp>
+#include <zdg/kernel/cotan_laplacian.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -169,15 +170,11 @@ HeatGeodesics::HeatGeodesics(const SurfelComplex& complex, std::span<const Point
   // least-squares stiffness A does not see the checkerboard modes of the 2-ring stencil (their
   // fitted gradient vanishes), so the heat step alone would ring around the source; K damps
   // them (a monotone M-matrix), A keeps the metric of the estimated tangent planes.
-  std::vector<SparseTriplet> k;
-  k.reserve(4 * complex.linels.size());
-  for (const auto& e : complex.linels) {
-    k.push_back({e.face[0], e.face[0], 1.0});
-    k.push_back({e.face[1], e.face[1], 1.0});
-    k.push_back({e.face[0], e.face[1], -1.0});
-    k.push_back({e.face[1], e.face[0], -1.0});
-  }
-  const SparseMatrix graph = SparseMatrix::from_triplets(n_, n_, std::move(k));
+  // K = -diag(area) L_comb (kernel/cotan_laplacian.hpp): unit weights per linel.
+  SparseMatrix graph = combinatorial_laplacian(complex);
+  for (std::int64_t i = 0; i < n_; ++i)
+    for (auto p = graph.row_start[std::size_t(i)]; p < graph.row_start[std::size_t(i) + 1]; ++p)
+      graph.value[std::size_t(p)] *= -complex.areas[std::size_t(i)];
   // (W + t (A + K)): the heat step; (A + eps W): the Poisson step (A is singular on constants).
   SparseMatrix heat = add(t_, add(1.0, a, 1.0, graph), 1.0, SparseMatrix::diagonal(weights_));
   const double eps = 1e-9 * trace_a / trace_w;
