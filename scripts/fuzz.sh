@@ -24,8 +24,9 @@ if ! command -v "$cxx" >/dev/null; then
   echo "fuzz.sh: $cxx not found (Debian: apt-get install clang-14 libclang-rt-14-dev)" >&2
   exit 2
 fi
-launcher=()
-if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
+# shellcheck source=scripts/ccache-env.sh
+. scripts/ccache-env.sh
+launcher=("${ZDG_LAUNCHER[@]}")
 start=$(date +%s)
 cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" -DZDG_FUZZ=ON -DZDG_BUILD_TESTS=OFF -DZDG_BUILD_CLI=OFF \

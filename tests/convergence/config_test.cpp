@@ -2,6 +2,7 @@
 // value is refused exactly when the flag with that value is), TOML types and syntax errors are
 // one line with the file and line, estimator entries may carry their own parameters (strings
 // or tables), and the example configurations of papers/ are valid.
+#include "tests/support/paths.hpp"
 #include <zdg/convergence/config.hpp>
 
 #include <zdg/arith/error.hpp>
@@ -176,7 +177,7 @@ TEST(ExperimentConfig, FlagsOverrideTheFile) {
 TEST(ExperimentConfig, PapersConfigurationsAreValid) {
   namespace fs = std::filesystem;
   int n = 0;
-  for (const auto& dir : fs::directory_iterator(fs::path(ZDG_SOURCE_DIR) / "papers")) {
+  for (const auto& dir : fs::directory_iterator(fs::path(zdg::test::source_dir()) / "papers")) {
     if (!dir.is_directory()) continue;
     for (const char* name : {"config.toml", "quick.toml"}) {
       const auto file = dir.path() / name;
@@ -189,7 +190,7 @@ TEST(ExperimentConfig, PapersConfigurationsAreValid) {
     }
   }
   EXPECT_GE(n, 10);
-  std::ifstream in(fs::path(ZDG_SOURCE_DIR) / "papers/cviu2014-compare/config.toml");
+  std::ifstream in(fs::path(zdg::test::source_dir()) / "papers/cviu2014-compare/config.toml");
   std::stringstream text;
   text << in.rdbuf();
   auto c = zdg::parse_experiment_config(text.str(), "config.toml");

@@ -1,4 +1,4 @@
-// Runs the zdg program (path from the ZDG_CLI_PATH compile definition) for command-line
+// Runs the zdg program (path from zdg::test::cli_path(), tests/support/paths.hpp) for command-line
 // tests: exit status, stdout and stderr of `zdg ARGS`.
 //
 //   auto r = zdg::test::run_zdg("cf 415/93 --json");
@@ -6,6 +6,7 @@
 //   auto j = nlohmann::json::parse(r.out);   // include <nlohmann/json.hpp> yourself
 #pragma once
 
+#include "tests/support/paths.hpp"
 #include <gtest/gtest.h>
 
 #include <array>
@@ -54,8 +55,8 @@ inline CliResult run_zdg(const std::string& args, const std::string& stdin_text 
     std::ofstream f(in);
     f << stdin_text;
   }
-  std::string cmd = std::string("'") + ZDG_CLI_PATH + "' " + args + " <'" + in.string() + "' >'" +
-                    out.string() + "' 2>'" + err.string() + "'";
+  std::string cmd = std::string("'") + zdg::test::cli_path() + "' " + args + " <'" + in.string() +
+                    "' >'" + out.string() + "' 2>'" + err.string() + "'";
   int raw = std::system(cmd.c_str());
   CliResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);

@@ -10,6 +10,7 @@
 // (arith_properties.cpp, dss_properties.cpp, hull_properties.cpp, image_properties.cpp,
 // plane_properties.cpp) through zdg check.
 #include "tests/support/cli.hpp"
+#include "tests/support/paths.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -21,8 +22,9 @@ namespace {
 
 using nlohmann::json;
 
-const std::string kPlanted = std::string(ZDG_SOURCE_DIR) + "/tests/convergence/cli/check_planted/";
-const std::string kZdg = ZDG_CLI_PATH;
+const std::string kPlanted =
+    std::string(zdg::test::source_dir()) + "/tests/convergence/cli/check_planted/";
+const std::string kZdg = zdg::test::cli_path();
 
 std::string python(const std::string& script, const std::string& args = "") {
   return "'/usr/bin/python3 " + kPlanted + script + (args.empty() ? "" : " " + args) + "'";
@@ -297,7 +299,7 @@ TEST(ServeCommand, RequestBytesThatAreNotUtf8GetAnErrorLine) {
 
 // examples/check-python: the naive programs and the counterexamples their README shows.
 TEST(CheckCommand, ExamplesFindTheirCounterexamples) {
-  const std::string ex = std::string(ZDG_SOURCE_DIR) + "/examples/check-python/";
+  const std::string ex = std::string(zdg::test::source_dir()) + "/examples/check-python/";
   json f = failure_of("check floor_sum.oracle --type int64 --runs 2000 --seed 1 --against "
                       "'/usr/bin/python3 " +
                       ex + "naive_floor_sum.py'");

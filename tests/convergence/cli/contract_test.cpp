@@ -13,6 +13,7 @@
 //    "a piece of the expected error line"}
 // Files may be in sub-folders ("out/results.csv"); a name ending in '/' makes a folder.
 #include "tests/support/cli.hpp"
+#include "tests/support/paths.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -551,8 +552,8 @@ TEST(CliContract, BadInputGivesOneLineExitTwoAndTouchesNothing) {
 // Output that cannot be written (a full disk) is an error too, not a silent exit 0.
 TEST(CliContract, StdoutThatCannotBeWrittenIsAnError) {
   const fs::path dir = zdg::test::scratch_dir("contract");
-  const std::string cmd = std::string("'") + ZDG_CLI_PATH + "' cf 415/93 --json >/dev/full 2>'" +
-                          (dir / "err").string() + "'";
+  const std::string cmd = std::string("'") + zdg::test::cli_path() +
+                          "' cf 415/93 --json >/dev/full 2>'" + (dir / "err").string() + "'";
   const int raw = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(raw));
   EXPECT_EQ(WEXITSTATUS(raw), 2);

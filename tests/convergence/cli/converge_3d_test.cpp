@@ -1,5 +1,6 @@
 // zdg converge on 3D shapes and estimators, and zdg paper for the 3D configurations.
 #include "tests/support/cli.hpp"
+#include "tests/support/paths.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -51,8 +52,8 @@ TEST(Converge3dCli, ListAndDimensionErrors) {
 TEST(Converge3dCli, PapersExist) {
   for (const char* name : {"cviu2014-ii3d", "hausdorff"}) {
     for (const char* file : {"config.toml", "quick.toml", "README.md"}) {
-      EXPECT_TRUE(
-          std::filesystem::exists(std::filesystem::path(ZDG_SOURCE_DIR) / "papers" / name / file))
+      EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(zdg::test::source_dir()) /
+                                          "papers" / name / file))
           << name << "/" << file;
     }
   }
