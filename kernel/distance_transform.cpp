@@ -58,10 +58,15 @@ void require_background(const Domain& dom, const std::uint8_t* mask, const Trans
 }
 
 template <class T>
-Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOptions& opt) {
-  const Domain& dom = shape.domain();
+void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,
+                             const TransformOptions& opt, T* out) {
+  if (mask_item_bytes != 1 && mask_item_bytes != 2 && mask_item_bytes != 4 &&
+      mask_item_bytes != 8) {
+    throw InvalidArgument("distance transform: mask items of " + std::to_string(mask_item_bytes) +
+                          " bytes (1, 2, 4 or 8)");
+  }
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
-  require_background(shape, opt);
+  require_background(dom, mask, opt, mask_item_bytes);
   if constexpr (!std::is_same_v<T, BigInt>) {
     if (bounds.value_max > type_max<T>()) {
       throw OverflowError("distance transform: values up to " + bounds.value_max.str() + " (" +
@@ -69,28 +74,42 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
                           type_max<T>().str() + ")");
     }
   }
-  Image<T> out(dom);
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
     V inf = detail::envelope_infinity<V>(bounds);
     if constexpr (std::is_integral_v<V> && std::is_integral_v<T> && sizeof(V) == sizeof(T)) {
       // Same width: work in the output buffer (signed and unsigned variants may alias; the
       // final values are >= 0 and finite since there is background).
-      detail::separable_envelope<V>(dom, opt, shape.values().data(),
-                                    reinterpret_cast<V*>(out.values().data()), inf, nullptr);
+      detail::separable_envelope<V>(dom, opt, mask, reinterpret_cast<V*>(out), inf, nullptr,
+                                    mask_item_bytes);
       return;
     }
     std::vector<V> f(static_cast<std::size_t>(dom.size()));
-    detail::separable_envelope<V>(dom, opt, shape.values().data(), f.data(), inf, nullptr);
-    T* o = out.values().data();
+    detail::separable_envelope<V>(dom, opt, mask, f.data(), inf, nullptr, mask_item_bytes);
     const V* fp = f.data();
     parallel_chunks(dom.size(), detail::resolve_threads(opt.threads, dom.size()),
                     [&](std::int64_t b, std::int64_t e) {
-                      for (std::int64_t i = b; i < e; ++i) o[i] = convert_value<T>(fp[i]);
+                      for (std::int64_t i = b; i < e; ++i) out[i] = convert_value<T>(fp[i]);
                     });
   });
+}
+
+template <class T>
+Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOptions& opt) {
+  Image<T> out(shape.domain());
+  distance_transform_into<T>(shape.domain(), shape.values().data(), 1, opt, out.values().data());
   return out;
 }
 
+template void distance_transform_into(const Domain&, const std::uint8_t*, int,
+                                      const TransformOptions&, std::uint8_t*);
+template void distance_transform_into(const Domain&, const std::uint8_t*, int,
+                                      const TransformOptions&, std::uint16_t*);
+template void distance_transform_into(const Domain&, const std::uint8_t*, int,
+                                      const TransformOptions&, std::uint32_t*);
+template void distance_transform_into(const Domain&, const std::uint8_t*, int,
+                                      const TransformOptions&, std::uint64_t*);
+template void distance_transform_into(const Domain&, const std::uint8_t*, int,
+                                      const TransformOptions&, std::int64_t*);
 template Image<std::uint8_t> distance_transform(const Image<std::uint8_t>&,
                                                 const TransformOptions&);
 template Image<std::uint16_t> distance_transform(const Image<std::uint8_t>&,

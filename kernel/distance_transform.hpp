@@ -32,6 +32,17 @@ BigInt distance_transform_max_value(const Domain& domain, const TransformOptions
 template <class T>
 Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOptions& opt = {});
 
+/// The same on buffers: the mask is dom.size() items of mask_item_bytes bytes (1, 2, 4 or 8, C
+/// order; an item is background when all its bytes are 0), read where it lies (e.g. a mapped
+/// .npy file, kernel/mapped_file.hpp), and the values go to out[0 .. dom.size()) (e.g. a mapped
+/// output file). T: std::uint8_t, std::uint16_t, std::uint32_t, std::uint64_t or std::int64_t.
+/// Memory beyond the two buffers: the per-thread line buffers of the engine, plus one temporary
+/// of the engine's width when it differs from T's (none when they agree: the engine works in
+/// the output). The checks and errors of distance_transform.
+template <class T>
+void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,
+                             const TransformOptions& opt, T* out);
+
 /// Throws InvalidArgument when `shape` has no background point (value 0).
 void require_background(const Image<std::uint8_t>& shape, const TransformOptions& opt);
 /// The same for a mask of dom.size() items of mask_item_bytes bytes (1, 2, 4, 8) in C order

@@ -372,11 +372,9 @@ DType dtype_from_name(const std::string& name) {
                         "' (bool, uint8/16/32/64, int8/16/32/64, float32, float64)");
 }
 
-NpyArray read_npy(const std::string& path) {
-  // Header first, then the data straight into the array, once its size has been checked
-  // against the file's: nothing is allocated on the header's word alone.
-  const std::uint64_t size = input_file_size(path);
-  std::ifstream in(path, std::ios::binary);
+namespace {
+// The header of the file at path, checked against the file's size; `in` is left open.
+NpyHeader read_header(const std::string& path, std::ifstream& in, std::uint64_t size) {
   if (!in) fail(path, "cannot open for reading");
   std::string prefix(static_cast<std::size_t>(std::min<std::uint64_t>(size, 12)), '\0');
   in.read(prefix.data(), static_cast<std::streamsize>(prefix.size()));
@@ -388,20 +386,38 @@ NpyArray read_npy(const std::string& path) {
   if (!in) fail(path, "read error in the npy header");
   const NpyHeader h = parse_header(path, header, hstart + hlen);
   check_data_size(path, h, size - h.data_offset);
+  return h;
+}
+} // namespace
+
+NpyArray read_npy(const std::string& path) {
+  // Header first, then the data straight into the array, once its size has been checked
+  // against the file's: nothing is allocated on the header's word alone.
+  const std::uint64_t size = input_file_size(path);
+  std::ifstream in(path, std::ios::binary);
+  const NpyHeader h = read_header(path, in, size);
   NpyArray a;
   a.dtype = h.dtype;
   a.shape = h.shape;
   a.bytes.resize(static_cast<std::size_t>(h.data_bytes));
+  in.seekg(static_cast<std::streamoff>(h.data_offset));
   in.read(reinterpret_cast<char*>(a.bytes.data()), static_cast<std::streamsize>(a.bytes.size()));
   if (!in && !a.bytes.empty()) fail(path, "read error in the array data");
   return a;
 }
 
-std::string npy_file_bytes(const NpyArray& a) {
+NpyLayout read_npy_layout(const std::string& path) {
+  const std::uint64_t size = input_file_size(path);
+  std::ifstream in(path, std::ios::binary);
+  const NpyHeader h = read_header(path, in, size);
+  return {h.dtype, h.shape, h.data_offset, h.data_bytes};
+}
+
+std::string npy_header_bytes(DType t, const std::vector<std::int64_t>& shape) {
   std::ostringstream h;
-  h << "{'descr': '" << info(a.dtype).descr << "', 'fortran_order': False, 'shape': (";
-  for (std::size_t k = 0; k < a.shape.size(); ++k)
-    h << a.shape[k] << (a.shape.size() == 1 ? "," : (k + 1 < a.shape.size() ? ", " : ""));
+  h << "{'descr': '" << info(t).descr << "', 'fortran_order': False, 'shape': (";
+  for (std::size_t k = 0; k < shape.size(); ++k)
+    h << shape[k] << (shape.size() == 1 ? "," : (k + 1 < shape.size() ? ", " : ""));
   h << "), }";
   std::string header = h.str();
   // Version 1.0 holds a header of up to 65535 bytes (2-byte length), 2.0 up to 4 GiB (4-byte
@@ -423,6 +439,11 @@ std::string npy_file_bytes(const NpyArray& a) {
   for (std::size_t k = 0; k < (v1 ? 2u : 4u); ++k)
     out.push_back(static_cast<char>((len >> (8 * k)) & 0xff));
   out += header;
+  return out;
+}
+
+std::string npy_file_bytes(const NpyArray& a) {
+  std::string out = npy_header_bytes(a.dtype, a.shape);
   out.append(reinterpret_cast<const char*>(a.bytes.data()), a.bytes.size());
   return out;
 }

@@ -54,6 +54,19 @@ NpyArray parse_npy(std::string_view bytes, const std::string& source);
 NpyArray read_npy(const std::string& path);
 /// The bytes of the npy file of a (version 1.0, or 2.0 for a header past 65535 bytes).
 std::string npy_file_bytes(const NpyArray& a);
+/// The prefix of such a file (magic, version, header dict, padding to 64 bytes): the array's
+/// bytes follow it. For writers that stream or map the data (kernel/mapped_file.hpp).
+std::string npy_header_bytes(DType t, const std::vector<std::int64_t>& shape);
+
+/// Where an npy file's array is: its dtype, shape, and the offset and size of the data, from
+/// the header alone, with every check of read_npy (the data size equals what the file holds).
+/// For readers that map the file instead of reading it (no size limit but the file's).
+struct NpyLayout {
+  DType dtype = DType::U8;
+  std::vector<std::int64_t> shape;
+  std::uint64_t data_offset = 0, data_bytes = 0;
+};
+NpyLayout read_npy_layout(const std::string& path);
 /// Writes atomically (temporary file + rename). IoError on failure.
 void write_npy(const std::string& path, const NpyArray& a);
 

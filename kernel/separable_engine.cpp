@@ -196,15 +196,19 @@ struct Scratch {
 };
 
 // One pass along axis a: every line of that axis becomes the lower envelope of its values.
+// The lines are those of the columns j in [jb, je) of each block of st = stride(a) values (all
+// of them by default; a part for the out-of-core transform, kernel/out_of_core_transform.hpp).
 template <int K, class V>
 void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
                    const LineMetric<K, V>& m, V* f, const V& inf, std::vector<std::int64_t>* sites,
-                   unsigned threads) {
+                   unsigned threads, std::int64_t jb = 0, std::int64_t je = -1) {
   const std::int64_t n = dom.extent(a), st = dom.stride(a);
+  if (je < 0) je = st;
+  if (je <= jb) return;
   const std::int64_t outer = dom.size() / (n * st);
   constexpr std::int64_t kBlock = sizeof(V) <= 4 ? 16 : 8;
-  const std::int64_t bw_max = std::min(st, kBlock);
-  const std::int64_t nblocks = (st + bw_max - 1) / bw_max;
+  const std::int64_t bw_max = std::min(je - jb, kBlock);
+  const std::int64_t nblocks = (je - jb + bw_max - 1) / bw_max;
   const std::int64_t len = periodic ? 3 * n : n, qlo = periodic ? n : 0;
   V* fp = f;
   std::int64_t* sp = sites != nullptr ? sites->data() : nullptr;
@@ -221,8 +225,8 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
     sc.t.assign(ulen + 1, 0);
     sc.fs.assign(ulen + 1, V{});
     for (std::int64_t unit = begin; unit < end; ++unit) {
-      const std::int64_t o = unit / nblocks, j0 = (unit % nblocks) * bw_max;
-      const std::int64_t bw = std::min(bw_max, st - j0);
+      const std::int64_t o = unit / nblocks, j0 = jb + (unit % nblocks) * bw_max;
+      const std::int64_t bw = std::min(bw_max, je - j0);
       const std::int64_t base = o * n * st + j0;
       V* bp = sc.buf.data();
       constexpr std::int64_t kAhead = 24;
@@ -368,26 +372,32 @@ void mask_pass(const Domain& dom, bool periodic, const LineMetric<K, V>& m,
 
 template <int K, class V>
 void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask, int item,
-                V* f, const V& inf, std::vector<std::int64_t>* sites, const std::vector<V>& pw) {
+                V* f, const V& inf, std::vector<std::int64_t>* sites, const std::vector<V>& pw,
+                const EnvelopePart& part) {
   LineMetric<K, V> m;
   m.pw = pw.data();
   m.p = opt.metric.p;
   m.inv_pow2 = std::ldexp(1.0, -(opt.metric.p - 2));
   const unsigned threads = resolve_threads(opt.threads, dom.size());
   const int d = dom.dim();
-  if (mask != nullptr) {
-    mask_pass(dom, opt.periodic(d - 1), m, mask, item, f, inf, sites, threads);
-  } else {
-    if (sites != nullptr) {
-      sites->resize(static_cast<std::size_t>(dom.size()));
-      for (std::int64_t i = 0; i < dom.size(); ++i) (*sites)[static_cast<std::size_t>(i)] = i;
+  if (part.slices) {
+    if (mask != nullptr) {
+      mask_pass(dom, opt.periodic(d - 1), m, mask, item, f, inf, sites, threads);
+    } else {
+      if (sites != nullptr) {
+        sites->resize(static_cast<std::size_t>(dom.size()));
+        for (std::int64_t i = 0; i < dom.size(); ++i) (*sites)[static_cast<std::size_t>(i)] = i;
+      }
+      envelope_pass(dom, d - 1, opt.periodic(d - 1), false, m, f, inf, sites, threads);
     }
-    envelope_pass(dom, d - 1, opt.periodic(d - 1), false, m, f, inf, sites, threads);
+    for (int a = d - 2; a >= 1; --a)
+      envelope_pass(dom, a, opt.periodic(a), mask != nullptr, m, f, inf, sites, threads);
   }
-  for (int a = d - 2; a >= 0; --a)
-    envelope_pass(dom, a, opt.periodic(a), mask != nullptr, m, f, inf, sites, threads);
+  if (part.axis0 && d >= 2) {
+    envelope_pass(dom, 0, opt.periodic(0), part.from_mask, m, f, inf, sites, threads,
+                  part.column_begin, part.column_end);
+  }
 }
-
 } // namespace
 
 unsigned resolve_threads(unsigned requested, std::int64_t n) {
@@ -465,8 +475,10 @@ V envelope_infinity(const EnvelopeBounds& b) {
 }
 
 template <class V>
-void separable_envelope(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
-                        V* f, const V& inf, std::vector<std::int64_t>* sites, int mask_item_bytes) {
+void separable_envelope_part(const Domain& dom, const TransformOptions& opt,
+                             const std::uint8_t* mask, V* f, const V& inf,
+                             std::vector<std::int64_t>* sites, int mask_item_bytes,
+                             const EnvelopePart& part) {
   if (mask_item_bytes != 1 && mask_item_bytes != 2 && mask_item_bytes != 4 &&
       mask_item_bytes != 8) {
     throw InvalidArgument("transform: mask items of " + std::to_string(mask_item_bytes) +
@@ -476,11 +488,11 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt, const st
   const Metric& mt = opt.metric;
   std::vector<V> pw;
   if (mt.is_inf()) {
-    run_passes<kLinf>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw);
+    run_passes<kLinf>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw, part);
   } else if (mt.p == 1) {
-    run_passes<kL1>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw);
+    run_passes<kL1>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw, part);
   } else if (mt.p == 2) {
-    run_passes<kL2>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw);
+    run_passes<kL2>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw, part);
   } else {
     std::int64_t lmax = 1;
     for (int k = 0; k < dom.dim(); ++k) {
@@ -497,12 +509,23 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt, const st
       }
       pw[static_cast<std::size_t>(t)] = v;
     }
-    run_passes<kLp>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw);
+    run_passes<kLp>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw, part);
   }
+}
+
+template <class V>
+void separable_envelope(const Domain& dom, const TransformOptions& opt, const std::uint8_t* mask,
+                        V* f, const V& inf, std::vector<std::int64_t>* sites, int mask_item_bytes) {
+  EnvelopePart whole;
+  whole.from_mask = mask != nullptr;
+  separable_envelope_part<V>(dom, opt, mask, f, inf, sites, mask_item_bytes, whole);
 }
 
 #define ZDG_ENGINE_INSTANTIATE(V)                                                                  \
   template V envelope_infinity<V>(const EnvelopeBounds&);                                          \
+  template void separable_envelope_part<V>(const Domain&, const TransformOptions&,                 \
+                                           const std::uint8_t*, V*, const V&,                      \
+                                           std::vector<std::int64_t>*, int, const EnvelopePart&);  \
   template void separable_envelope<V>(const Domain&, const TransformOptions&, const std::uint8_t*, \
                                       V*, const V&, std::vector<std::int64_t>*, int);
 ZDG_ENGINE_INSTANTIATE(std::int32_t)

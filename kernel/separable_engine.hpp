@@ -70,6 +70,25 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt, const st
                         int mask_item_bytes = 1);
 
 /// Calls fn(std::type_identity<V>{}) with the engine type of width w.
+/// A part of the passes, for transforms that do not hold the whole volume at once
+/// (kernel/out_of_core_transform.hpp). slices: the mask pass (or the identity) and the passes
+/// along axes d-1 .. 1, whose lines lie in one slice of axis 0 (run them on a slab of whole
+/// slices: a domain with fewer slices and the pointers at the slab's first slice); axis0: the
+/// pass along axis 0 restricted to the columns [column_begin, column_end) of a slice (end -1:
+/// all), from_mask: the values come from a mask (nonnegative). Running the slices on every slab,
+/// then axis 0 on every column range, gives the values of the whole transform, to the bit: each
+/// line sees the same operations in the same order.
+struct EnvelopePart {
+  bool slices = true, axis0 = true, from_mask = true;
+  std::int64_t column_begin = 0, column_end = -1;
+};
+
+template <class V>
+void separable_envelope_part(const Domain& dom, const TransformOptions& opt,
+                             const std::uint8_t* mask, V* f, const V& inf,
+                             std::vector<std::int64_t>* sites, int mask_item_bytes,
+                             const EnvelopePart& part);
+
 template <class Fn>
 decltype(auto) with_value_type(ValueWidth w, Fn&& fn) {
   switch (w) {
@@ -96,6 +115,9 @@ BigInt engine_to_bigint(const V& v) {
 
 #define ZDG_ENGINE_EXTERN(V)                                                                       \
   extern template V envelope_infinity<V>(const EnvelopeBounds&);                                   \
+  extern template void separable_envelope_part<V>(                                                 \
+      const Domain&, const TransformOptions&, const std::uint8_t*, V*, const V&,                   \
+      std::vector<std::int64_t>*, int, const EnvelopePart&);                                       \
   extern template void separable_envelope<V>(const Domain&, const TransformOptions&,               \
                                              const std::uint8_t*, V*, const V&,                    \
                                              std::vector<std::int64_t>*, int);

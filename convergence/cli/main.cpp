@@ -15,6 +15,7 @@
 #include <fmt/core.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -92,6 +93,9 @@ int check_stdout(int status) {
 } // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) reached by an output is a write error (EFBIG: one line, exit
+  // 2, the staged output removed), not a core dump by SIGXFSZ.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     CLI::App app{"zdg: exact-arithmetic research kernel for digital geometry", "zdg"};
     app.require_subcommand(1);

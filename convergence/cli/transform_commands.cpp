@@ -5,7 +5,9 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/cli/commands.hpp>
 #include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/mapped_file.hpp>
 #include <zdg/kernel/npy_io.hpp>
+#include <zdg/kernel/out_of_core_transform.hpp>
 #include <zdg/kernel/output_files.hpp>
 #include <zdg/kernel/pgm_io.hpp>
 #include <zdg/kernel/power_map.hpp>
@@ -15,22 +17,28 @@
 #include <zdg/kernel/vol_io.hpp>
 #include <zdg/kernel/voronoi_map.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iostream>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include <unistd.h>
 
 namespace zdg::cli {
 
 namespace {
 
 struct TransformArgs {
-  std::string input, output, metric = "l2", torus, lower;
+  std::string input, output, metric = "l2", torus, lower, memory;
   unsigned threads = 0;
-  bool json = false, force = false;
+  bool json = false, force = false, out_of_core = false, quiet = false;
   // The file the result is written to before it is moved onto `output` (set by check_paths).
   std::shared_ptr<OutputSet> outputs;
   std::string staged;
@@ -246,8 +254,157 @@ void run_dt_as(TransformArgs& a, const Image<std::uint8_t>& mask, const Transfor
   report(a, "dt", mask.domain(), opt, dtype_name(dtype), std::to_string(mx), secs);
 }
 
+// A byte count: an integer with an optional suffix K, M, G, T (powers of 1024; "16G").
+std::uint64_t parse_memory(const std::string& text) {
+  std::string digits = text;
+  std::uint64_t unit = 1;
+  if (!digits.empty()) {
+    const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(digits.back())));
+    const std::string units = "KMGT";
+    if (const auto k = units.find(c); k != std::string::npos) {
+      unit = std::uint64_t{1} << (10 * (k + 1));
+      digits.pop_back();
+    }
+  }
+  std::uint64_t v = 0;
+  try {
+    v = parse_integer<std::uint64_t>(digits);
+  } catch (const Error&) {
+    throw InvalidArgument("--memory '" + text + "': a byte count such as 512M, 16G or 1073741824");
+  }
+  std::uint64_t bytes = 0;
+  if (v == 0 || __builtin_mul_overflow(v, unit, &bytes)) {
+    throw InvalidArgument("--memory '" + text + "': out of range (1 byte to 2^64 - 1)");
+  }
+  return bytes;
+}
+
+std::string mb(std::uint64_t bytes) {
+  return std::to_string((bytes + 500'000) / 1'000'000) + " MB";
+}
+
+// Progress of a long run on stderr, when it is a terminal and --quiet is not given.
+std::function<void(const OutOfCoreProgress&)> progress_printer(const TransformArgs& a) {
+  if (a.quiet || ::isatty(2) == 0) return {};
+  return [](const OutOfCoreProgress& p) {
+    std::cerr << "\rzdg transform dt: " << p.phase << " " << p.done << "/" << p.total << ", read "
+              << mb(p.bytes_read) << ", written " << mb(p.bytes_written) << "   "
+              << (p.done == p.total ? "\n" : "") << std::flush;
+  };
+}
+
+// The lean path of `dt` (issue #15): an integer .npy in, an .npy out. The input file is mapped
+// and read in place (items of any integer width: background when all bytes are 0, as
+// npy_to_mask reads them), the result is computed straight into the mapped output file, of the
+// narrowest unsigned dtype that holds the largest value: the peak memory is about the input's
+// bytes plus the output's, where the general path below holds the input twice and the output
+// three times. Returns false (nothing done) for what it does not take: other formats, floats,
+// values past 64 bits.
+template <class T>
+void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
+                const TransformOptions& opt, DType dtype) {
+  const auto t0 = std::chrono::steady_clock::now();
+  MappedInput in(a.input);
+  const std::uint8_t* mask = in.data() + lay.data_offset;
+  const int item = static_cast<int>(dtype_size(lay.dtype));
+  // Out of core when asked, or when the in-memory transform would pass the memory budget.
+  const std::uint64_t need = in_memory_transform_bytes<T>(dom, opt, item);
+  const bool budget_given = !a.memory.empty();
+  const std::uint64_t budget = budget_given ? parse_memory(a.memory) : std::uint64_t{4} << 30;
+  const bool out_of_core = a.out_of_core || (budget_given && need > budget);
+  // In memory, the background is checked before the output's space is reserved (out of core,
+  // the transform checks it slab by slab, within the budget).
+  if (!out_of_core) require_background(dom, mask, opt, item);
+  const std::string header = npy_header_bytes(dtype, lay.shape);
+  const auto n = static_cast<std::uint64_t>(dom.size());
+  ReservedFile out(a.staged, header.size() + n * sizeof(T)); // a disk too small fails here
+  out.write(0, header.data(), header.size());
+  if (out_of_core) {
+    OutOfCoreOptions ooc;
+    ooc.memory_budget = budget;
+    ooc.scratch_folder = std::filesystem::path(a.staged).parent_path().string();
+    if (ooc.scratch_folder.empty()) ooc.scratch_folder = ".";
+    ooc.mask_is_mapped_file = true;
+    ooc.progress = progress_printer(a);
+    const T mx = distance_transform_out_of_core<T>(dom, mask, item, opt, out, header.size(), ooc);
+    const double secs = since(t0);
+    out.finish();
+    commit(a);
+    report(a, "dt", dom, opt, dtype_name(dtype), std::to_string(mx), secs,
+           {{"out_of_core", true}, {"memory_budget", budget}, {"in_memory_bytes", need}});
+    return;
+  }
+  // In memory: the values in a buffer of the output's type (not zero-filled: the transform
+  // writes every value), then one sequential write.
+  std::unique_ptr<T[]> values(new T[n]);
+  distance_transform_into<T>(dom, mask, item, opt, values.get());
+  const double secs = since(t0);
+  T mx = 0;
+  std::mutex mx_lock;
+  parallel_chunks(dom.size(), threads_used(opt.threads), [&](std::int64_t b, std::int64_t e) {
+    T m = 0;
+    for (std::int64_t i = b; i < e; ++i) m = std::max(m, values[static_cast<std::size_t>(i)]);
+    const std::lock_guard<std::mutex> hold(mx_lock);
+    mx = std::max(mx, m);
+  });
+  out.write(header.size(), values.get(), n * sizeof(T));
+  values.reset();
+  out.finish();
+  commit(a);
+  report(a, "dt", dom, opt, dtype_name(dtype), std::to_string(mx), secs);
+}
+
+bool lean_dt(TransformArgs& a) {
+  const bool npy = extension(a.input) == ".npy" && extension(a.output) == ".npy";
+  if (a.out_of_core && !npy) {
+    throw InvalidArgument("--out-of-core reads and writes .npy files (got " + a.input + " and " +
+                          a.output + ")");
+  }
+  if (!a.memory.empty()) parse_memory(a.memory); // a bad value fails before the input is read
+  if (!npy) return false;
+  const NpyLayout lay = read_npy_layout(a.input);
+  if (dtype_is_float(lay.dtype)) {
+    // -0.0 is background: not a bytewise test, so floats take the general path.
+    if (a.out_of_core) {
+      throw InvalidArgument("--out-of-core: " + a.input + " holds " + dtype_name(lay.dtype) +
+                            " values; the out-of-core transform reads integer or bool masks");
+    }
+    return false;
+  }
+  if (lay.shape.empty()) throw IoError("a 0-dimensional array is not an image");
+  for (auto e : lay.shape) {
+    if (e == 0) throw IoError("empty array (an extent is 0)");
+  }
+  std::vector<std::int64_t> low;
+  if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
+  if (!low.empty() && low.size() != lay.shape.size()) {
+    throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                          std::to_string(lay.shape.size()) + "-D image");
+  }
+  const Domain dom(lay.shape, low);
+  const auto opt = make_options(a, dom.dim());
+  const BigInt bound = distance_transform_max_value(dom, opt);
+  if (bound <= 255) {
+    lean_dt_as<std::uint8_t>(a, lay, dom, opt, DType::U8);
+  } else if (bound <= 65535) {
+    lean_dt_as<std::uint16_t>(a, lay, dom, opt, DType::U16);
+  } else if (bound <= BigInt(4294967295ULL)) {
+    lean_dt_as<std::uint32_t>(a, lay, dom, opt, DType::U32);
+  } else if (bound <= BigInt(std::numeric_limits<std::uint64_t>::max())) {
+    lean_dt_as<std::uint64_t>(a, lay, dom, opt, DType::U64);
+  } else {
+    if (a.out_of_core) {
+      throw InvalidArgument("--out-of-core: values up to " + bound.str() +
+                            " do not fit 64 bits; use the in-memory transform");
+    }
+    return false;
+  }
+  return true;
+}
+
 void run_dt(TransformArgs& a) {
   check_paths(a);
+  if (lean_dt(a)) return;
   auto mask = read_mask(a);
   auto opt = make_options(a, mask.dim());
   auto t0 = std::chrono::steady_clock::now();
@@ -386,6 +543,14 @@ void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
         ->capture_default_str();
     sub->add_flag("--force", args->force, "replace the output file if it exists");
     sub->add_flag("--json", args->json, "print a JSON summary on stdout");
+    if (std::string(s.name) == "dt") {
+      sub->add_flag("--out-of-core", args->out_of_core,
+                    "transform by slabs and column blocks through the mapped .npy files, within "
+                    "--memory (default 4G): for volumes larger than the memory");
+      sub->add_option("--memory", args->memory,
+                      "memory budget (512M, 16G): past it, the transform runs out of core");
+      sub->add_flag("--quiet", args->quiet, "no progress on stderr");
+    }
     auto run = s.run;
     sub->callback([args, run] { run(*args); });
   }

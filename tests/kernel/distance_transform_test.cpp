@@ -5,6 +5,9 @@
 #include "tests/support/transform_oracle.hpp"
 
 #include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <algorithm>
 
 namespace zdg {
 namespace {
@@ -104,6 +107,39 @@ TEST(DistanceTransform, ThreadCountIndependence) {
       EXPECT_EQ(distance_transform<std::uint32_t>(shape, opt), ref) << p << " " << t;
     }
   }
+}
+
+// The buffer form (what `zdg transform` runs on a mapped .npy): a mask of 1-, 2-, 4- or 8-byte
+// items, an item background iff all its bytes are 0, gives the transform of the 0/1 mask, in
+// every output type that holds it.
+TEST(DistanceTransform, IntoBuffersReadsWideMaskItems) {
+  test::check_property([] {
+    auto c = random_transform_case();
+    const int item = *rc::gen::element(1, 2, 4, 8);
+    const auto n = static_cast<std::size_t>(c.shape.size());
+    std::vector<std::uint8_t> wide(n * static_cast<std::size_t>(item), 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (c.shape.values()[i] == 0) continue;
+      // a foreground item: any nonzero byte pattern (one byte, several, a sign bit alone)
+      const auto byte = *rc::gen::inRange<std::size_t>(0, static_cast<std::size_t>(item));
+      wide[i * static_cast<std::size_t>(item) + byte] = *rc::gen::inRange<int>(1, 256);
+    }
+    const auto expect = distance_transform<std::uint64_t>(c.shape, c.opt);
+    std::vector<std::uint64_t> out(n, 12345);
+    distance_transform_into<std::uint64_t>(c.shape.domain(), wide.data(), item, c.opt, out.data());
+    RC_ASSERT(out == expect.values());
+    if (distance_transform_max_value(c.shape.domain(), c.opt) <= BigInt(4294967295ULL)) {
+      std::vector<std::uint32_t> out32(n, 7);
+      distance_transform_into<std::uint32_t>(c.shape.domain(), wide.data(), item, c.opt,
+                                             out32.data());
+      RC_ASSERT(std::equal(out32.begin(), out32.end(), expect.values().begin()));
+    }
+  });
+  Image<std::uint8_t> img(Domain({3}), std::vector<std::uint8_t>{0, 1, 1});
+  std::vector<std::uint32_t> out(3);
+  EXPECT_THROW(
+      distance_transform_into<std::uint32_t>(img.domain(), img.values().data(), 3, {}, out.data()),
+      InvalidArgument);
 }
 
 TEST(DistanceTransform, Errors) {

@@ -67,6 +67,53 @@ TEST(TransformCommands, OutputDtypeIsTheNarrowestForTheBound) {
   EXPECT_EQ(nlohmann::json::parse(r.out)["dtype"], "uint16");
 }
 
+// The mapped path reads an integer .npy of any width in place (nonzero = foreground, negative
+// values included), as the general path reads it through npy_to_mask; float inputs take the
+// general path (-0.0 is background). Same transform for each.
+TEST(TransformCommands, DtReadsEveryDtypeOfTheInput) {
+  Files f;
+  const std::vector<std::int64_t> values{3, -1, 0, 7, 1, 1, 256, -32768, 1, 1, 0, 1};
+  Image<std::uint8_t> mask(Domain({3, 4}));
+  for (std::size_t i = 0; i < values.size(); ++i) mask.values()[i] = values[i] != 0 ? 1 : 0;
+  const auto expect = distance_transform<std::int64_t>(mask, {});
+  for (DType t : {DType::I16, DType::I32, DType::I64}) {
+    write_npy(f.path("in.npy"), make_npy(t, {3, 4}, values));
+    auto r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") + " --force");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(npy_to_int64(read_npy(f.path("out.npy"))).values(), expect.values()) << dtype_name(t);
+  }
+  std::vector<double> fv(values.begin(), values.end());
+  fv[2] = -0.0;
+  write_npy(f.path("in.npy"), make_npy<double>({3, 4}, fv));
+  auto r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") + " --force");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(npy_to_int64(read_npy(f.path("out.npy"))).values(), expect.values());
+}
+
+// An output larger than the disk allows (here a file-size limit: the same EFBIG/ENOSPC from the
+// space reservation) is refused before the transform runs: one line, exit 2, no file left.
+TEST(TransformCommands, AnOutputThatDoesNotFitIsOneLineAndNoFile) {
+  Files f;
+  Image<std::uint8_t> img(Domain({128, 128, 128}), std::uint8_t{1});
+  img[0] = 0;
+  write_npy(f.path("in.npy"), make_npy<std::uint8_t>({128, 128, 128}, img.values()));
+  const std::string err = f.path("err");
+  // A 1 MiB limit on the files written (2048 blocks of 512 bytes): the 4 MiB uint16 output does
+  // not fit (the 2 MiB input is only read).
+  const std::string cmd = "ulimit -f 2048; '" + std::string(test::cli_path()) + "' transform dt " +
+                          f("in.npy") + " -o " + f("out.npy") + " 2>'" + err + "'";
+  const int raw = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 2);
+  const std::string text = test::read_file(err);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_NE(text.find("does not fit on the disk"), std::string::npos) << text;
+  EXPECT_FALSE(std::filesystem::exists(f.path("out.npy")));
+  for (const auto& e : std::filesystem::directory_iterator(f.dir)) {
+    EXPECT_EQ(e.path().filename().string().find(".zdg-tmp"), std::string::npos) << e.path();
+  }
+}
+
 TEST(TransformCommands, VoronoiPowerRdtRma) {
   Files f;
   auto shape = small_shape();

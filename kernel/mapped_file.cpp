@@ -1,0 +1,109 @@
+#include <zdg/kernel/mapped_file.hpp>
+
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/input_file.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
+#include <unistd.h>
+
+namespace zdg {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what, int err) {
+  throw IoError(path + ": " + what + " (" + std::strerror(err) + ")");
+}
+
+std::string gib(std::uint64_t bytes) {
+  return std::to_string(bytes) + " bytes";
+}
+
+} // namespace
+
+MappedInput::MappedInput(const std::string& path) {
+  size_ = input_file_size(path); // IoError for a missing file, a folder, a device
+  if (size_ == 0) return;
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) fail(path, "cannot open for reading", errno);
+  void* p = ::mmap(nullptr, static_cast<std::size_t>(size_), PROT_READ, MAP_PRIVATE, fd, 0);
+  const int err = errno;
+  ::close(fd);
+  if (p == MAP_FAILED) fail(path, "cannot map the file into memory", err);
+  ::madvise(p, static_cast<std::size_t>(size_), MADV_SEQUENTIAL);
+  data_ = static_cast<const unsigned char*>(p);
+}
+
+MappedInput::~MappedInput() {
+  if (data_ != nullptr) {
+    ::munmap(const_cast<unsigned char*>(data_), static_cast<std::size_t>(size_));
+  }
+}
+
+ReservedFile::ReservedFile(const std::string& path, std::uint64_t size) : path_(path), size_(size) {
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd_ < 0) fail(path, "cannot open for writing", errno);
+  if (size_ == 0) return;
+  // The space first: a disk too small fails here, before any work.
+  if (const int err = ::posix_fallocate(fd_, 0, static_cast<off_t>(size_)); err != 0) {
+    struct statvfs vfs {};
+    std::string free_text;
+    if (::fstatvfs(fd_, &vfs) == 0) {
+      free_text = ", " + gib(static_cast<std::uint64_t>(vfs.f_bavail) * vfs.f_frsize) + " free";
+    }
+    ::close(fd_);
+    fd_ = -1;
+    ::unlink(path.c_str());
+    if (err == ENOSPC || err == EFBIG) {
+      throw IoError(path + ": does not fit on the disk (needs " + gib(size_) + free_text + ")");
+    }
+    fail(path, "cannot reserve " + gib(size_), err);
+  }
+}
+
+void ReservedFile::write(std::uint64_t offset, const void* data, std::uint64_t bytes) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  while (bytes > 0) {
+    const std::size_t chunk = static_cast<std::size_t>(std::min<std::uint64_t>(bytes, 1u << 30));
+    const ssize_t n = ::pwrite(fd_, p, chunk, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail(path_, "write error", n < 0 ? errno : EIO);
+    p += n;
+    offset += static_cast<std::uint64_t>(n);
+    bytes -= static_cast<std::uint64_t>(n);
+  }
+}
+
+void ReservedFile::read(std::uint64_t offset, void* data, std::uint64_t bytes) const {
+  auto* p = static_cast<unsigned char*>(data);
+  while (bytes > 0) {
+    const std::size_t chunk = static_cast<std::size_t>(std::min<std::uint64_t>(bytes, 1u << 30));
+    const ssize_t n = ::pread(fd_, p, chunk, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail(path_, "read error", n < 0 ? errno : EIO);
+    p += n;
+    offset += static_cast<std::uint64_t>(n);
+    bytes -= static_cast<std::uint64_t>(n);
+  }
+}
+
+void ReservedFile::finish() {
+  if (fd_ >= 0) {
+    const int c = ::close(fd_);
+    const int err = errno;
+    fd_ = -1;
+    if (c != 0) fail(path_, "write error", err);
+  }
+}
+
+ReservedFile::~ReservedFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+} // namespace zdg

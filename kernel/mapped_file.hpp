@@ -1,0 +1,65 @@
+// Input files mapped into memory and output files reserved on the disk, for volumes the size of
+// RAM: `zdg transform dt` reads its input through a mapping (no read buffer next to the image)
+// and writes its output into a reserved file, so a volume is never held twice.
+//
+//   MappedInput in("mask.npy");                  // read-only, shared with the page cache
+//   ReservedFile out(staged, bytes);             // space reserved on the disk first
+//   out.write(0, header.data(), header.size());  // then the values, at their offsets
+//   out.finish();                                // closed: then rename it
+//
+// ReservedFile reserves the whole file with posix_fallocate, so a disk that is too small is an
+// IoError at construction ("does not fit on the disk: needs N bytes, M free"), before any work.
+// Outputs are written with pwrite, not through a shared mapping: the passes of a transform
+// modify every value several times, and a mapped output larger than the kernel's dirty-page
+// threshold is written back to the disk again at each modification (measured: 700 GB written
+// for a 4 GB output). All failures are IoError naming the file and the reason. Cost: the
+// mapping is O(1), its pages are read as they are touched (the resident set counts them).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace zdg {
+
+/// A regular file mapped read-only (the whole file).
+class MappedInput {
+public:
+  explicit MappedInput(const std::string& path);
+  ~MappedInput();
+  MappedInput(const MappedInput&) = delete;
+  MappedInput& operator=(const MappedInput&) = delete;
+
+  const unsigned char* data() const { return data_; }
+  std::uint64_t size() const { return size_; }
+
+private:
+  const unsigned char* data_ = nullptr;
+  std::uint64_t size_ = 0;
+};
+
+/// A new file of `size` bytes (created or truncated), its blocks reserved on the disk at
+/// construction, written and read back at offsets (pwrite, pread). finish() closes it; the
+/// destructor closes without the checks.
+class ReservedFile {
+public:
+  ReservedFile(const std::string& path, std::uint64_t size);
+  ~ReservedFile();
+  ReservedFile(const ReservedFile&) = delete;
+  ReservedFile& operator=(const ReservedFile&) = delete;
+
+  std::uint64_t size() const { return size_; }
+  /// Writes bytes at offset (within the reserved size); IoError on failure.
+  void write(std::uint64_t offset, const void* data, std::uint64_t bytes);
+  /// Reads bytes at offset; IoError on failure or a short file.
+  void read(std::uint64_t offset, void* data, std::uint64_t bytes) const;
+  /// Closes the file; IoError on failure.
+  void finish();
+
+private:
+  std::string path_;
+  std::uint64_t size_ = 0;
+  int fd_ = -1;
+};
+
+} // namespace zdg
