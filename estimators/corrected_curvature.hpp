@@ -85,8 +85,8 @@ CorrectedCurvatures corrected_curvatures(const CorrectedMeasures& ball, const Po
 
 /// The corrected normal at every pointel: the normalised sum of the normals of its surfels.
 /// Returned as the four corner normals of every surfel, in the order of surfel_pointels.
-std::vector<std::array<Point3<double>, 4>>
-corner_normals(std::span<const Surfel> surfels, std::span<const Point3<double>> normals);
+std::vector<std::array<Point3<double>, 4>> corner_normals(std::span<const Surfel> surfels,
+                                                          std::span<const Point3<double>> normals);
 
 /// The measures of every face of the surfels at grid step h with the given unit normals.
 std::vector<CorrectedMeasures> face_corrected_measures(std::span<const Surfel> surfels,

@@ -64,7 +64,9 @@ std::vector<P3> vcm_normals(std::span<const Surfel> surfels, double h, double R,
   hi = {hi.x + grow, hi.y + grow, hi.z + grow};
   const std::int64_t nx = hi.x - lo.x + 1, ny = hi.y - lo.y + 1, nz = hi.z - lo.z + 1;
   const Domain dom({nx, ny, nz}, {lo.x, lo.y, lo.z});
-  auto index = [&](const KPoint& q) { return ((q.x - lo.x) * ny + (q.y - lo.y)) * nz + (q.z - lo.z); };
+  auto index = [&](const KPoint& q) {
+    return ((q.x - lo.x) * ny + (q.y - lo.y)) * nz + (q.z - lo.z);
+  };
 
   TransformOptions opt;
   opt.metric = Metric::l2();
@@ -131,8 +133,7 @@ std::vector<P3> vcm_normals(std::span<const Surfel> surfels, double h, double R,
       std::array<double, 6> v{};
       const KPoint c{ks.x >> 1, ks.y >> 1, ks.z >> 1}; // floor(k / 2)
       for (std::int64_t x = std::max(c.x - rv - 1, lo.x); x <= std::min(c.x + rv + 1, hi.x); ++x)
-        for (std::int64_t y = std::max(c.y - rv - 1, lo.y); y <= std::min(c.y + rv + 1, hi.y);
-             ++y)
+        for (std::int64_t y = std::max(c.y - rv - 1, lo.y); y <= std::min(c.y + rv + 1, hi.y); ++y)
           for (std::int64_t z = std::max(c.z - rv - 1, lo.z); z <= std::min(c.z + rv + 1, hi.z);
                ++z) {
             const std::int64_t dx = 2 * x - ks.x, dy = 2 * y - ks.y, dz = 2 * z - ks.z;

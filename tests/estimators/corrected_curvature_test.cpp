@@ -54,7 +54,7 @@ TEST(CorrectedCurvature, DegenerateQuadGivesTheTriangleClosedForms) {
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         const double t = 0.5 * dot(um, dot(e[j], uc - ua) * cross(e[i], b - a) -
-                                            dot(e[j], ub - ua) * cross(e[i], c - a));
+                                           dot(e[j], ub - ua) * cross(e[i], c - a));
         RC_ASSERT(std::abs(m.muxy[std::size_t(3 * i + j)] - t) < 1e-9);
       }
   });
