@@ -282,7 +282,6 @@ public:
 
   std::int64_t size() const { return n_; }
 
-private:
   // Solves on the run lo .. hi (unwrapped) with pair k first; keeps the witness when feasible.
   bool resolve(std::int64_t lo, std::int64_t hi, std::int64_t k) {
     const auto len = static_cast<std::size_t>(hi - lo + 1);
@@ -326,7 +325,22 @@ std::vector<MaximalArc> cover(std::span<const Pixel> inner, std::span<const Pixe
   const std::int64_t i0 = i;
   while (!full() && (closed || j + 1 < n)) {
     // Retract the back until pair j + 1 fits (alone it always does: two 4-adjacent pixels).
-    while (!w.extend(i, j, j + 1)) ++i;
+    // Sub-runs of a DCA are DCA, so the new back is found by bisection: O(log L) solves.
+    if (!w.extend(i, j, j + 1)) {
+      std::int64_t lo = i + 1, hi = j + 1; // the new back is in [lo, hi]
+      bool witness_at_hi = false;
+      while (lo < hi) {
+        const std::int64_t mid = lo + (hi - lo) / 2;
+        if (w.resolve(mid, j + 1, j + 1)) {
+          hi = mid;
+          witness_at_hi = true;
+        } else {
+          lo = mid + 1; // a failed solve leaves the witness (of the run from hi) as it was
+        }
+      }
+      i = lo;
+      if (!witness_at_hi) w.resolve(i, j + 1, j + 1);
+    }
     ++j;
     grow_front();
     if (closed && i >= i0 + n) break; // back to the first arc

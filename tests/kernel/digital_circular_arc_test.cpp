@@ -237,11 +237,15 @@ TEST(CircularArc, CoverArcsAreMaximal) {
       RC_ASSERT(a.circle.separates(in, out));
       RC_ASSERT(std::abs(a.curvature - a.circle.curvature()) < 1e-12);
       if (a.length >= n) continue;
-      auto in_f = run(pairs.inner, a.begin, a.length + 1);
-      auto out_f = run(pairs.outer, a.begin, a.length + 1);
+      // The run itself is separable, so a certificate of the extension uses the added pair:
+      // list it first, where the oracle's enumeration starts.
+      auto in_f = run(pairs.inner, a.begin + a.length, 1), out_f = run(pairs.outer, a.begin + a.length, 1);
+      auto in_b = run(pairs.inner, a.begin + n - 1, 1), out_b = run(pairs.outer, a.begin + n - 1, 1);
+      for (std::size_t t = 0; t < a.length; ++t) {
+        for (auto* v : {&in_f, &in_b}) v->push_back(in[t]);
+        for (auto* v : {&out_f, &out_b}) v->push_back(out[t]);
+      }
       RC_ASSERT(!oracle_separable<zdg::Int128>(in_f, out_f));
-      auto in_b = run(pairs.inner, a.begin + n - 1, a.length + 1);
-      auto out_b = run(pairs.outer, a.begin + n - 1, a.length + 1);
       RC_ASSERT(!oracle_separable<zdg::Int128>(in_b, out_b));
       if (q > 0) RC_ASSERT(a.begin != arcs[q - 1].begin);
     }
