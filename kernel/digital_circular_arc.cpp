@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <sstream>
 #include <utility>
 
@@ -30,10 +31,26 @@ struct Point4 {
   I den;              // > 0
 };
 
+// gcd on the tower; binary (std::gcd) on 64 bits, where Euclid's divisions dominated the
+// profile of the cover.
+template <class I>
+I fast_gcd(const I& a, const I& b) {
+  if constexpr (std::same_as<I, Int64>) {
+    auto mag = [](std::int64_t v) {
+      return v < 0 ? std::uint64_t(0) - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+    };
+    const std::uint64_t g = std::gcd(mag(a.value()), mag(b.value()));
+    if (g > static_cast<std::uint64_t>(INT64_MAX)) return gcd(a, b); // throws OverflowError
+    return Int64(static_cast<std::int64_t>(g));
+  } else {
+    return gcd(a, b);
+  }
+}
+
 template <class I>
 void reduce(Point4<I>& p, int d) {
   I g = p.den;
-  for (int l = 0; l < d && g != 1; ++l) g = gcd(g, p.x[static_cast<std::size_t>(l)]);
+  for (int l = 0; l < d && g != 1; ++l) g = fast_gcd(g, p.x[static_cast<std::size_t>(l)]);
   if (g > 1) {
     for (int l = 0; l < d; ++l) p.x[static_cast<std::size_t>(l)] /= g;
     p.den /= g;
@@ -46,6 +63,7 @@ public:
   /// Feasibility of rows[0..m) at depth 0 (dimension 4); the rows are used in the given order.
   std::optional<Point4<I>> solve(std::vector<Row<I>> rows) {
     levels_[0] = std::move(rows);
+    violated_.clear();
     Point4<I> out;
     if (!solve_level(0, levels_[0].size(), I(1), out)) return std::nullopt;
     return out;
@@ -86,6 +104,13 @@ private:
     return true;
   }
 
+public:
+  /// The input rows (indices) that cut off the feasible point at depth 0 during the last solve:
+  /// the constraints that shaped the answer (or, on failure, the last one is part of the
+  /// obstruction). Listed first in a later solve, they make it cheap (move-to-front).
+  const std::vector<std::size_t>& violated() const { return violated_; }
+
+private:
   bool solve_level(int depth, std::size_t m, const I& dprev, Point4<I>& out) {
     const int d = 4 - depth;
     const auto& rows = levels_[static_cast<std::size_t>(depth)];
@@ -96,6 +121,7 @@ private:
     for (std::size_t i = 0; i < m; ++i) {
       const Row<I>& ri = rows[i];
       if (dot(ri, x, d) >= ri[4] * x.den) continue;
+      if (depth == 0) violated_.push_back(i);
       // Pivot: the coefficient of largest magnitude.
       int piv = -1;
       for (int l = 0; l < d; ++l) {
@@ -143,6 +169,7 @@ private:
   }
 
   std::array<std::vector<Row<I>>, 4> levels_;
+  std::vector<std::size_t> violated_;
 };
 
 // A fixed pseudo-random permutation (xorshift), identical on every run and platform.
@@ -191,22 +218,26 @@ double circle_curvature(const BigInt& d, const BigInt& a, const BigInt& b, const
   return -2.0 * d.convert_to<double>() / std::sqrt(disc.convert_to<double>());
 }
 
-// Separating circle of the inner and outer points (indices into the spans), in the frame of
-// `origin`; the rows listed in `first` go first, the others in a fixed pseudo-random order.
+// Separating circle of the inner and outer points, in the frame of `origin`. The rows are
+// numbered inner 0 .. |inner| - 1, then outer; those listed in `first` go first (in that order,
+// once each), the others follow in a fixed pseudo-random order. `violated` receives the row
+// numbers that cut off the running solution (Seidel::violated).
 template <class I>
 std::optional<LocalCircle<I>> separate(Seidel<I>& lp, std::span<const Pixel> inner,
                                        std::span<const Pixel> outer, const Pixel& origin,
-                                       std::size_t first_inner, std::size_t first_outer) {
+                                       std::span<const std::size_t> first,
+                                       std::vector<std::size_t>* violated = nullptr) {
   const std::size_t m = inner.size() + outer.size();
-  std::vector<std::size_t> idx(m);
-  for (std::size_t k = 0; k < m; ++k) idx[k] = k;
+  std::vector<std::size_t> idx(m), pos(m);
+  for (std::size_t k = 0; k < m; ++k) idx[k] = pos[k] = k;
   std::size_t head = 0;
-  auto to_front = [&](std::size_t k) {
-    auto it = std::find(idx.begin() + static_cast<std::ptrdiff_t>(head), idx.end(), k);
-    std::swap(*it, idx[head++]);
-  };
-  if (first_inner < inner.size()) to_front(first_inner);
-  if (first_outer < outer.size()) to_front(inner.size() + first_outer);
+  for (std::size_t k : first) {
+    if (k >= m || pos[k] < head) continue;
+    const std::size_t at = pos[k], other = idx[head];
+    std::swap(idx[head], idx[at]);
+    pos[other] = at;
+    pos[k] = head++;
+  }
   shuffle_tail(idx, head, m);
   std::vector<Row<I>> rows;
   rows.reserve(m);
@@ -215,6 +246,10 @@ std::optional<LocalCircle<I>> separate(Seidel<I>& lp, std::span<const Pixel> inn
                                     : lifted_row<I>(outer[k - inner.size()], origin, false));
   }
   auto sol = lp.solve(std::move(rows));
+  if (violated) {
+    violated->clear();
+    for (std::size_t r : lp.violated()) violated->push_back(idx[r]);
+  }
   if (!sol) return std::nullopt;
   LocalCircle<I> c;
   c.w = sol->x;
@@ -292,8 +327,18 @@ public:
       buf_in_[t] = in_[s];
       buf_out_[t] = out_[s];
     }
-    const auto first = static_cast<std::size_t>(k - lo);
-    auto c = separate<I>(lp_, buf_in_, buf_out_, buf_in_[0], first, first);
+    // First the new pair, then the pairs whose constraints shaped the last solve.
+    first_.clear();
+    first_.push_back(static_cast<std::size_t>(k - lo));
+    first_.push_back(len + static_cast<std::size_t>(k - lo));
+    for (std::int64_t g : hint_) {
+      if (g < lo || g > hi) continue;
+      first_.push_back(static_cast<std::size_t>(g - lo));
+      first_.push_back(len + static_cast<std::size_t>(g - lo));
+    }
+    auto c = separate<I>(lp_, buf_in_, buf_out_, buf_in_[0], first_, &violated_);
+    hint_.clear();
+    for (std::size_t r : violated_) hint_.push_back(lo + static_cast<std::int64_t>(r % len));
     if (!c) return false;
     witness_ = *c;
     return true;
@@ -304,6 +349,8 @@ public:
   LocalCircle<I> witness_;
   Seidel<I> lp_;
   std::vector<Pixel> buf_in_, buf_out_;
+  std::vector<std::size_t> first_, violated_;
+  std::vector<std::int64_t> hint_; // unwrapped pair indices (move-to-front)
 };
 
 template <class I>
@@ -381,7 +428,7 @@ std::optional<SeparatingCircle> is_digital_circular_arc(std::span<const Pixel> i
                           std::to_string(outer.size()) + " outer)");
   }
   Seidel<I> lp;
-  auto c = separate<I>(lp, inner, outer, inner[0], inner.size(), outer.size());
+  auto c = separate<I>(lp, inner, outer, inner[0], {});
   if (!c) return std::nullopt;
   return c->global();
 }
