@@ -2,9 +2,11 @@
 // R = 5 h^{1/3} (issue target: h = 0.001 under 2 s on one core): the symmetric-difference counter
 // (O(R/h) membership queries per linel) against the contour counter (Green's formula over the
 // complete boundary, O(log n) per linel, estimators/contour_ball_count.hpp). Same integers, so the
-// same curvatures.
+// same curvatures. With them, the curvature of the most centred maximal digital circular arc
+// (estimators/mdca_curvature.hpp, parameter-free) on the same contours, for comparison.
 #include <zdg/convergence/shape.hpp>
 #include <zdg/estimators/ii_curvature.hpp>
+#include <zdg/estimators/mdca_curvature.hpp>
 #include <zdg/kernel/digital_contour.hpp>
 
 #include <benchmark/benchmark.h>
@@ -58,6 +60,19 @@ void BM_GreenII(benchmark::State& state, const char* spec) {
   BM_II<true>(state, spec);
 }
 
+void BM_MDCA(benchmark::State& state, const char* spec) {
+  const double h = 1.0 / static_cast<double>(state.range(0));
+  Setup s = setup(spec, h);
+  for (auto _ : state) {
+    auto k = zdg::mdca_curvature(s.contours.at(0), h);
+    benchmark::DoNotOptimize(k.data());
+  }
+  state.counters["linels"] = static_cast<double>(s.contours.at(0).size());
+  state.counters["ns_per_linel"] = benchmark::Counter(
+      static_cast<double>(s.contours.at(0).size()),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 } // namespace
 
 BENCHMARK_CAPTURE(BM_IncrementalII, incremental_ellipse, "ellipse:20,7")
@@ -73,5 +88,11 @@ BENCHMARK_CAPTURE(BM_GreenII, green_flower, "flower:20,7,6")
     ->Arg(1000)
     ->Arg(6000)
     ->Unit(benchmark::kMillisecond);
+
+BENCHMARK_CAPTURE(BM_MDCA, mdca_ellipse, "ellipse:20,7")
+    ->Arg(100)
+    ->Arg(1000)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MDCA, mdca_flower, "flower:20,7,6")->Arg(1000)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -169,6 +169,7 @@ void register_hausdorff_estimators(std::vector<Estimator>& out); // dimension 0:
 void register_jet_estimators(std::vector<Estimator>& out);
 void register_calculus_estimators(std::vector<Estimator>& out);
 void register_vcm_cnc_estimators(std::vector<Estimator>& out);
+void register_mdca_estimators(std::vector<Estimator>& out); // mdca-curvature (2D)
 } // namespace detail
 
 } // namespace zdg
