@@ -41,7 +41,9 @@
 // (in grid units, 1/radius; > 0 when the inner points are inside, 0 for a line) is what the
 // MDCA estimator reads (estimators/mdca_curvature.hpp).
 //
-// Complexity: one recognition costs O(m) expected (Seidel, dimension 4); the cover costs
+// Complexity: one recognition costs O(m) per pass of the recursion, O(m) expected in Seidel's
+// analysis (which assumes an objective with a unique optimum; this feasibility variant keeps any
+// feasible point, so that bound is heuristic here, the answer exact either way); the cover costs
 // O(n) witness checks plus O(L) per solve, one solve each time the witness fails and
 // O(log L) per new maximal arc (arcs of length L). Measured: 4 s for the 278,372 linels of the
 // flower (20, 7, 6) at h = 0.001 (3,528 arcs of mean length 584). Width: the lifted points are
