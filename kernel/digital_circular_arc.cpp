@@ -37,7 +37,8 @@ template <class I>
 I fast_gcd(const I& a, const I& b) {
   if constexpr (std::same_as<I, Int64>) {
     auto mag = [](std::int64_t v) {
-      return v < 0 ? std::uint64_t(0) - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+      return v < 0 ? std::uint64_t(0) - static_cast<std::uint64_t>(v)
+                   : static_cast<std::uint64_t>(v);
     };
     const std::uint64_t g = std::gcd(mag(a.value()), mag(b.value()));
     if (g > static_cast<std::uint64_t>(INT64_MAX)) return gcd(a, b); // throws OverflowError
@@ -72,7 +73,8 @@ public:
 private:
   static I dot(const Row<I>& r, const Point4<I>& p, int d) {
     I s = 0;
-    for (int l = 0; l < d; ++l) s += r[static_cast<std::size_t>(l)] * p.x[static_cast<std::size_t>(l)];
+    for (int l = 0; l < d; ++l)
+      s += r[static_cast<std::size_t>(l)] * p.x[static_cast<std::size_t>(l)];
     return s;
   }
 
@@ -136,7 +138,8 @@ private:
       next.resize(std::max(next.size(), i));
       for (std::size_t j = 0; j < i; ++j) {
         const Row<I>& rj = rows[j];
-        const I f = sp > 0 ? rj[static_cast<std::size_t>(piv)] : I(-rj[static_cast<std::size_t>(piv)]);
+        const I f =
+            sp > 0 ? rj[static_cast<std::size_t>(piv)] : I(-rj[static_cast<std::size_t>(piv)]);
         Row<I>& nj = next[j];
         int t = 0;
         for (int l = 0; l < d; ++l) {
@@ -204,8 +207,7 @@ struct LocalCircle {
     return w[0] * (x * x + y * y) + w[1] * x + w[2] * y + w[3];
   }
   SeparatingCircle global() const {
-    const BigInt d = to_bigint(w[0]), a = to_bigint(w[1]), b = to_bigint(w[2]),
-                 c = to_bigint(w[3]);
+    const BigInt d = to_bigint(w[0]), a = to_bigint(w[1]), b = to_bigint(w[2]), c = to_bigint(w[3]);
     const BigInt ox(origin.x), oy(origin.y);
     return {d, BigInt(a - 2 * d * ox), BigInt(b - 2 * d * oy),
             BigInt(c + d * (ox * ox + oy * oy) - a * ox - b * oy)};
@@ -267,8 +269,8 @@ void check_pairs(std::span<const Pixel> inner, std::span<const Pixel> outer) {
   if (inner.empty() || inner.size() != outer.size()) {
     throw InvalidArgument("maximal_circular_arcs: needs as many outer as inner points, at least "
                           "one (got " +
-                          std::to_string(inner.size()) + " inner, " +
-                          std::to_string(outer.size()) + " outer)");
+                          std::to_string(inner.size()) + " inner, " + std::to_string(outer.size()) +
+                          " outer)");
   }
   for (std::size_t k = 0; k < inner.size(); ++k) {
     const Pixel& p = inner[k];
@@ -407,8 +409,7 @@ BigInt SeparatingCircle::value(const Pixel& p) const {
   return BigInt(d * (x * x + y * y) + a * x + b * y + c);
 }
 
-bool SeparatingCircle::separates(std::span<const Pixel> inner,
-                                 std::span<const Pixel> outer) const {
+bool SeparatingCircle::separates(std::span<const Pixel> inner, std::span<const Pixel> outer) const {
   for (const auto& p : inner) {
     if (value(p) <= 0) return false;
   }
@@ -424,8 +425,8 @@ std::optional<SeparatingCircle> is_digital_circular_arc(std::span<const Pixel> i
   if (inner.empty() || outer.empty()) {
     throw InvalidArgument("is_digital_circular_arc: needs at least one inner and one outer point "
                           "(got " +
-                          std::to_string(inner.size()) + " inner, " +
-                          std::to_string(outer.size()) + " outer)");
+                          std::to_string(inner.size()) + " inner, " + std::to_string(outer.size()) +
+                          " outer)");
   }
   Seidel<I> lp;
   auto c = separate<I>(lp, inner, outer, inner[0], {});
@@ -435,9 +436,8 @@ std::optional<SeparatingCircle> is_digital_circular_arc(std::span<const Pixel> i
 
 Escalated<std::optional<SeparatingCircle>>
 is_digital_circular_arc_exact(std::span<const Pixel> inner, std::span<const Pixel> outer) {
-  return escalate([&]<class I>(std::type_identity<I>) {
-    return is_digital_circular_arc<I>(inner, outer);
-  });
+  return escalate(
+      [&]<class I>(std::type_identity<I>) { return is_digital_circular_arc<I>(inner, outer); });
 }
 
 template <TowerInt I>
@@ -451,8 +451,7 @@ Escalated<std::vector<MaximalArc>> maximal_circular_arcs_exact(std::span<const P
                                                                std::span<const Pixel> outer,
                                                                bool closed) {
   check_pairs(inner, outer);
-  return escalate(
-      [&]<class I>(std::type_identity<I>) { return cover<I>(inner, outer, closed); });
+  return escalate([&]<class I>(std::type_identity<I>) { return cover<I>(inner, outer, closed); });
 }
 
 LinelPairs linel_pairs(const DigitalContour& contour) {
@@ -470,9 +469,9 @@ LinelPairs linel_pairs(const DigitalContour& contour) {
 }
 
 #define ZDG_INSTANTIATE(I)                                                                         \
-  template std::optional<SeparatingCircle> is_digital_circular_arc<I>(std::span<const Pixel>,     \
-                                                                      std::span<const Pixel>);    \
-  template std::vector<MaximalArc> maximal_circular_arcs<I>(std::span<const Pixel>,               \
+  template std::optional<SeparatingCircle> is_digital_circular_arc<I>(std::span<const Pixel>,      \
+                                                                      std::span<const Pixel>);     \
+  template std::vector<MaximalArc> maximal_circular_arcs<I>(std::span<const Pixel>,                \
                                                             std::span<const Pixel>, bool);
 ZDG_INSTANTIATE(Int64)
 ZDG_INSTANTIATE(Int128)

@@ -55,7 +55,8 @@ bool has_positive_dependency(const std::vector<Vec4<N>>& v, const std::vector<st
     int r = 0;
     for (int c = 0; c < 4; ++c) {
       if (!(mask & (1u << c))) continue;
-      for (int q = 0; q < k; ++q) m[r][q] = v[s[static_cast<std::size_t>(q)]][static_cast<std::size_t>(c)];
+      for (int q = 0; q < k; ++q)
+        m[r][q] = v[s[static_cast<std::size_t>(q)]][static_cast<std::size_t>(c)];
       ++r;
     }
     const int rows[4] = {0, 1, 2, 3};
@@ -239,8 +240,10 @@ TEST(CircularArc, CoverArcsAreMaximal) {
       if (a.length >= n) continue;
       // The run itself is separable, so a certificate of the extension uses the added pair:
       // list it first, where the oracle's enumeration starts.
-      auto in_f = run(pairs.inner, a.begin + a.length, 1), out_f = run(pairs.outer, a.begin + a.length, 1);
-      auto in_b = run(pairs.inner, a.begin + n - 1, 1), out_b = run(pairs.outer, a.begin + n - 1, 1);
+      auto in_f = run(pairs.inner, a.begin + a.length, 1),
+           out_f = run(pairs.outer, a.begin + a.length, 1);
+      auto in_b = run(pairs.inner, a.begin + n - 1, 1),
+           out_b = run(pairs.outer, a.begin + n - 1, 1);
       for (std::size_t t = 0; t < a.length; ++t) {
         for (auto* v : {&in_f, &in_b}) v->push_back(in[t]);
         for (auto* v : {&out_f, &out_b}) v->push_back(out[t]);
@@ -293,7 +296,9 @@ TEST(CircularArc, DigitalDiscIsOneArc) {
 }
 
 // The 8 lattice symmetries map the cover onto the cover of the transformed contour: the same
-// runs of linels (mapped), and each arc's circle, mapped back, separates the original run.
+// runs of linels (mapped; a mirror reverses the contour), and each arc's circle separates the
+// image of the original run it corresponds to (the circles themselves may differ: any element
+// of the separating set is a valid answer).
 TEST(CircularArc, CoverIsInvariantUnderLatticeSymmetries) {
   auto f = [](const Pixel& z) {
     const double x = double(z.x) + 0.31, y = double(z.y) - 0.12;
@@ -305,15 +310,15 @@ TEST(CircularArc, CoverIsInvariantUnderLatticeSymmetries) {
   auto pairs = zdg::linel_pairs(c);
   const std::size_t n = pairs.inner.size();
   const auto ref = zdg::maximal_circular_arcs_exact(pairs.inner, pairs.outer, true).value;
-  auto as_set = [n](const std::vector<zdg::MaximalArc>& arcs,
-                    const std::function<std::pair<std::size_t, std::size_t>(std::size_t,
-                                                                           std::size_t)>& map) {
-    std::vector<std::pair<std::size_t, std::size_t>> s;
-    for (const auto& a : arcs) s.push_back(map(a.begin, a.length));
-    std::sort(s.begin(), s.end());
-    (void)n;
-    return s;
-  };
+  auto as_set =
+      [n](const std::vector<zdg::MaximalArc>& arcs,
+          const std::function<std::pair<std::size_t, std::size_t>(std::size_t, std::size_t)>& map) {
+        std::vector<std::pair<std::size_t, std::size_t>> s;
+        for (const auto& a : arcs) s.push_back(map(a.begin, a.length));
+        std::sort(s.begin(), s.end());
+        (void)n;
+        return s;
+      };
   for (int sym = 0; sym < 8; ++sym) {
     auto g = [sym](const Pixel& p) {
       Pixel q = sym & 1 ? Pixel{p.y, p.x} : p;
