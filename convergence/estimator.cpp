@@ -40,6 +40,7 @@ const std::vector<Estimator>& estimators() {
     detail::register_hausdorff_estimators(v);
     detail::register_jet_estimators(v);
     detail::register_calculus_estimators(v);
+    detail::register_ii_auto_estimators(v);
     return v;
   }();
   return all;

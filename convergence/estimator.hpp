@@ -168,6 +168,7 @@ void register_3d_estimators(std::vector<Estimator>& out);
 void register_hausdorff_estimators(std::vector<Estimator>& out); // dimension 0: any
 void register_jet_estimators(std::vector<Estimator>& out);
 void register_calculus_estimators(std::vector<Estimator>& out);
+void register_ii_auto_estimators(std::vector<Estimator>& out);
 } // namespace detail
 
 } // namespace zdg
