@@ -41,6 +41,7 @@ const std::vector<Estimator>& estimators() {
     detail::register_jet_estimators(v);
     detail::register_calculus_estimators(v);
     detail::register_ii_auto_estimators(v);
+    detail::register_probing_estimators(v);
     return v;
   }();
   return all;

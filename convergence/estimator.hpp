@@ -169,6 +169,7 @@ void register_hausdorff_estimators(std::vector<Estimator>& out); // dimension 0:
 void register_jet_estimators(std::vector<Estimator>& out);
 void register_calculus_estimators(std::vector<Estimator>& out);
 void register_ii_auto_estimators(std::vector<Estimator>& out);
+void register_probing_estimators(std::vector<Estimator>& out);
 } // namespace detail
 
 } // namespace zdg
