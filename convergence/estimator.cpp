@@ -42,6 +42,8 @@ const std::vector<Estimator>& estimators() {
     detail::register_calculus_estimators(v);
     detail::register_vcm_cnc_estimators(v);
     detail::register_mdca_estimators(v);
+    detail::register_ii_auto_estimators(v);
+    detail::register_probing_estimators(v);
     return v;
   }();
   return all;

@@ -170,6 +170,8 @@ void register_jet_estimators(std::vector<Estimator>& out);
 void register_calculus_estimators(std::vector<Estimator>& out);
 void register_vcm_cnc_estimators(std::vector<Estimator>& out);
 void register_mdca_estimators(std::vector<Estimator>& out); // mdca-curvature (2D)
+void register_ii_auto_estimators(std::vector<Estimator>& out);
+void register_probing_estimators(std::vector<Estimator>& out);
 } // namespace detail
 
 } // namespace zdg

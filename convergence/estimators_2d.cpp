@@ -4,6 +4,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_2d.hpp>
 #include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/ii_runs.hpp>
 #include <zdg/estimators/binomial_convolver.hpp>
 #include <zdg/estimators/dss_length.hpp>
 #include <zdg/estimators/gauss_area.hpp>
@@ -72,14 +73,17 @@ ErrorStats run_moments(const RunInput& in) {
 // contour (O(log n) per linel); otherwise from the symmetric-difference updates (O(R/h)).
 // Both give the same integers.
 ErrorStats run_ii_curvature(const RunInput& in) {
-  Digitized2 d = digitize(in);
-  const double radius = in.k * std::pow(in.h, in.alpha);
+  return detail::ii_curvature_errors(digitize(in), in.h, in.k * std::pow(in.h, in.alpha));
+}
+
+} // namespace
+
+ErrorStats detail::ii_curvature_errors(const Digitized2& d, double h, double radius) {
   ErrorAccumulator acc;
   std::optional<ContourBallCounter> green;
-  if (d.complete && radius / in.h <= 1e6) green.emplace(*d.set, d.contours, radius / in.h);
+  if (d.complete && radius / h <= 1e6) green.emplace(*d.set, d.contours, radius / h);
   for (const auto& c : d.contours) {
-    auto kappa =
-        green ? ii_curvature(*green, c, in.h, radius) : ii_curvature(*d.set, c, in.h, radius);
+    auto kappa = green ? ii_curvature(*green, c, h, radius) : ii_curvature(*d.set, c, h, radius);
     std::vector<Point2<double>> mid;
     mid.reserve(c.size());
     Pixel p = c.start;
@@ -93,6 +97,8 @@ ErrorStats run_ii_curvature(const RunInput& in) {
   }
   return acc.stats();
 }
+
+namespace {
 
 ErrorStats run_mlp_length(const RunInput& in) {
   Digitized2 d = digitize(in);

@@ -10,6 +10,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/ii_runs.hpp>
 #include <zdg/estimators/gauss_volume.hpp>
 #include <zdg/estimators/hausdorff.hpp>
 #include <zdg/estimators/ii_3d.hpp>
@@ -151,8 +152,7 @@ using IIKey = std::tuple<std::string, double, std::vector<double>, double,
 
 class IICache {
 public:
-  std::shared_ptr<const IIRun> get(const RunInput& in) {
-    const double R = in.k * std::pow(in.h, in.alpha);
+  std::shared_ptr<const IIRun> get(const RunInput& in, double R, const Digitized3* digitized) {
     IIKey key{in.shape.spec(), in.h, in.translation, R, in.box};
     // The last run this thread used, even if other threads' runs evicted it since: run_plan
     // runs the estimators sharing it one after the other on one thread (a computation of the
@@ -176,7 +176,7 @@ public:
       }
     }
     last.reset(); // not held while computing the next one
-    auto run = compute(in, R);
+    auto run = compute(in, R, digitized);
     std::lock_guard<std::mutex> lock(mutex_);
     entries_.emplace_front(key, run);
     std::size_t total = 0;
@@ -196,9 +196,12 @@ private:
   std::mutex mutex_;
   std::list<std::pair<IIKey, std::shared_ptr<const IIRun>>> entries_;
 
-  static std::shared_ptr<const IIRun> compute(const RunInput& in, double R) {
+  static std::shared_ptr<const IIRun> compute(const RunInput& in, double R,
+                                              const Digitized3* digitized) {
     const std::int64_t r2 = ii_digital_radius2(R, in.h);
-    Digitized3 d = detail::digitize_3d(in);
+    Digitized3 own;
+    if (digitized == nullptr) own = detail::digitize_3d(in);
+    const Digitized3& d = digitized != nullptr ? *digitized : own;
     auto run = std::make_shared<IIRun>();
     run->h = in.h;
     run->R = R;
@@ -216,7 +219,7 @@ IICache& ii_cache() {
   return cache;
 }
 
-enum class IIQuantity { mean, gaussian, k1, k2, normal, directions };
+using IIQuantity = detail::II3Quantity;
 
 // Principal directions are compared where the true curvatures differ by at least this
 // fraction of the larger one and by kDirectionGapAbsolute (curvature units, about a tenth
@@ -226,8 +229,8 @@ enum class IIQuantity { mean, gaussian, k1, k2, normal, directions };
 constexpr double kDirectionGap = 0.25, kDirectionGapAbsolute = 0.02;
 
 template <IIQuantity Q>
-ErrorStats run_ii(const RunInput& in) {
-  auto run = ii_cache().get(in);
+ErrorStats ii_errors(const RunInput& in, double R, const Digitized3* digitized) {
+  auto run = ii_cache().get(in, R, digitized);
   ErrorAccumulator acc;
   for (std::size_t i = 0; i < run->surfels.size(); ++i) {
     const SurfacePoint3& t = run->truth[i];
@@ -254,6 +257,11 @@ ErrorStats run_ii(const RunInput& in) {
   return acc.stats();
 }
 
+template <IIQuantity Q>
+ErrorStats run_ii(const RunInput& in) {
+  return ii_errors<Q>(in, in.k * std::pow(in.h, in.alpha), nullptr);
+}
+
 // --- theory (papers/THEORY.md, "Rates") -----------------------------------------------------
 
 const char* const kCLL = "Coeurjolly, Lachaud, Levallois, CVIU 2014";
@@ -278,6 +286,25 @@ EstimatorTheory ii_theory(double slope, const std::string& statement, const std:
 } // namespace
 
 namespace detail {
+
+ErrorStats ii_3d_errors(const RunInput& in, double radius, II3Quantity quantity,
+                        const Digitized3* digitized) {
+  switch (quantity) {
+  case II3Quantity::mean:
+    return ii_errors<IIQuantity::mean>(in, radius, digitized);
+  case II3Quantity::gaussian:
+    return ii_errors<IIQuantity::gaussian>(in, radius, digitized);
+  case II3Quantity::k1:
+    return ii_errors<IIQuantity::k1>(in, radius, digitized);
+  case II3Quantity::k2:
+    return ii_errors<IIQuantity::k2>(in, radius, digitized);
+  case II3Quantity::normal:
+    return ii_errors<IIQuantity::normal>(in, radius, digitized);
+  case II3Quantity::directions:
+    return ii_errors<IIQuantity::directions>(in, radius, digitized);
+  }
+  throw Error("ii_3d_errors: unknown quantity");
+}
 
 void register_3d_estimators(std::vector<Estimator>& out) {
   out.push_back(
