@@ -10,15 +10,6 @@ namespace zdg {
 
 namespace {
 
-template <class T>
-BigInt type_max() {
-  if constexpr (std::is_same_v<T, BigInt>) {
-    return BigInt(-1);
-  } else {
-    return BigInt(std::numeric_limits<T>::max());
-  }
-}
-
 template <class T, class V>
 T convert_value(const V& v) {
   if constexpr (std::is_same_v<T, BigInt>) {
@@ -60,19 +51,12 @@ void require_background(const Domain& dom, const std::uint8_t* mask, const Trans
 template <class T>
 void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,
                              const TransformOptions& opt, T* out) {
-  if (mask_item_bytes != 1 && mask_item_bytes != 2 && mask_item_bytes != 4 &&
-      mask_item_bytes != 8) {
-    throw InvalidArgument("distance transform: mask items of " + std::to_string(mask_item_bytes) +
-                          " bytes (1, 2, 4 or 8)");
-  }
+  detail::require_mask_item_bytes(mask_item_bytes, "distance transform");
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
   require_background(dom, mask, opt, mask_item_bytes);
   if constexpr (!std::is_same_v<T, BigInt>) {
-    if (bounds.value_max > type_max<T>()) {
-      throw OverflowError("distance transform: values up to " + bounds.value_max.str() + " (" +
-                          opt.metric.name() + ") do not fit the output type (max " +
-                          type_max<T>().str() + ")");
-    }
+    detail::require_output_fits(bounds, opt, BigInt(std::numeric_limits<T>::max()),
+                                "distance transform");
   }
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
     V inf = detail::envelope_infinity<V>(bounds);

@@ -67,30 +67,33 @@ ReservedFile::ReservedFile(const std::string& path, std::uint64_t size) : path_(
   }
 }
 
-void ReservedFile::write(std::uint64_t offset, const void* data, std::uint64_t bytes) {
-  const auto* p = static_cast<const unsigned char*>(data);
+namespace {
+
+// pwrite / pread until every byte is through: both may transfer less than asked (signals,
+// the 2 GiB cap of one call on Linux), and 0 bytes at a position inside the file is an error.
+template <class Ptr, class Call>
+void transfer_all(int fd, Ptr p, std::uint64_t offset, std::uint64_t bytes, const std::string& path,
+                  const char* what, Call call) {
   while (bytes > 0) {
     const std::size_t chunk = static_cast<std::size_t>(std::min<std::uint64_t>(bytes, 1u << 30));
-    const ssize_t n = ::pwrite(fd_, p, chunk, static_cast<off_t>(offset));
+    const ssize_t n = call(fd, p, chunk, static_cast<off_t>(offset));
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) fail(path_, "write error", n < 0 ? errno : EIO);
+    if (n <= 0) fail(path, what, n < 0 ? errno : EIO);
     p += n;
     offset += static_cast<std::uint64_t>(n);
     bytes -= static_cast<std::uint64_t>(n);
   }
 }
 
+} // namespace
+
+void ReservedFile::write(std::uint64_t offset, const void* data, std::uint64_t bytes) {
+  transfer_all(fd_, static_cast<const unsigned char*>(data), offset, bytes, path_, "write error",
+               ::pwrite);
+}
+
 void ReservedFile::read(std::uint64_t offset, void* data, std::uint64_t bytes) const {
-  auto* p = static_cast<unsigned char*>(data);
-  while (bytes > 0) {
-    const std::size_t chunk = static_cast<std::size_t>(std::min<std::uint64_t>(bytes, 1u << 30));
-    const ssize_t n = ::pread(fd_, p, chunk, static_cast<off_t>(offset));
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) fail(path_, "read error", n < 0 ? errno : EIO);
-    p += n;
-    offset += static_cast<std::uint64_t>(n);
-    bytes -= static_cast<std::uint64_t>(n);
-  }
+  transfer_all(fd_, static_cast<unsigned char*>(data), offset, bytes, path_, "read error", ::pread);
 }
 
 void ReservedFile::finish() {

@@ -35,11 +35,6 @@ void release(const void* p, std::uint64_t bytes, bool mapped) {
   if (hi > lo) ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
 }
 
-template <class T>
-BigInt type_max() {
-  return BigInt(std::numeric_limits<T>::max());
-}
-
 std::string bytes_text(std::uint64_t b) {
   return std::to_string(b) + " bytes";
 }
@@ -51,9 +46,8 @@ std::uint64_t in_memory_transform_bytes(const Domain& dom, const TransformOption
                                         int mask_item_bytes) {
   const auto n = static_cast<std::uint64_t>(dom.size());
   const auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
-  std::uint64_t engine = 16;
-  if (bounds.width == detail::ValueWidth::I32) engine = 4;
-  if (bounds.width == detail::ValueWidth::I64) engine = 8;
+  const std::uint64_t width = detail::engine_value_bytes(bounds.width);
+  const std::uint64_t engine = width != 0 ? width : sizeof(BigInt);
   const std::uint64_t temp = engine == sizeof(T) ? 0 : n * engine;
   return n * static_cast<std::uint64_t>(mask_item_bytes) + n * sizeof(T) + temp;
 }
@@ -62,20 +56,14 @@ template <class T>
 T distance_transform_out_of_core(const Domain& dom, const std::uint8_t* mask, int item,
                                  const TransformOptions& opt, ReservedFile& out,
                                  std::uint64_t out_offset, const OutOfCoreOptions& ooc) {
-  if (item != 1 && item != 2 && item != 4 && item != 8) {
-    throw InvalidArgument("out-of-core transform: mask items of " + std::to_string(item) +
-                          " bytes (1, 2, 4 or 8)");
-  }
+  detail::require_mask_item_bytes(item, "out-of-core transform");
   if (dom.dim() < 2) {
     throw InvalidArgument("out-of-core transform: a 1-D image has one axis only (its slabs "
                           "would be the whole line): use the in-memory transform");
   }
   const auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
-  if (bounds.value_max > type_max<T>()) {
-    throw OverflowError("distance transform: values up to " + bounds.value_max.str() + " (" +
-                        opt.metric.name() + ") do not fit the output type (max " +
-                        type_max<T>().str() + ")");
-  }
+  detail::require_output_fits(bounds, opt, BigInt(std::numeric_limits<T>::max()),
+                              "distance transform");
   if (bounds.width != detail::ValueWidth::I32 && bounds.width != detail::ValueWidth::I64) {
     throw InvalidArgument("out-of-core transform: the intermediate values of " + opt.metric.name() +
                           " on this domain need more than 64 bits (bound " + bounds.need.str() +
@@ -166,11 +154,14 @@ T distance_transform_out_of_core(const Domain& dom, const std::uint8_t* mask, in
         prog.bytes_written += cells * sizeof(V);
         report("slices", z1, n0);
       }
-      slab_values = {};
+      // Freed before the blocks are allocated (`slab_values = {}` would assign an empty list
+      // and keep the capacity: the slab and the block together were 1.3 x the budget).
+      std::vector<V>().swap(slab_values);
 
       // (2) Blocks of b columns: the block's part of every slice, read into an n0 x b array
       // whose axis 0 is the volume's, transformed along it, written to the output.
-      const std::uint64_t per_column = un0 * (sizeof(V) + sizeof(T));
+      const std::uint64_t per_column =
+          un0 * (sizeof(V) + (sizeof(V) == sizeof(T) ? 0 : sizeof(T))); // block (+ converted)
       const auto b = static_cast<std::int64_t>(
           std::clamp<std::uint64_t>(ooc.memory_budget / per_column, 1, uslice));
       std::vector<V> block(static_cast<std::size_t>(n0 * b));

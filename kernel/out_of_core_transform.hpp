@@ -14,8 +14,9 @@
 // (tests/kernel/out_of_core_transform_test.cpp), for every metric and torus axis.
 //
 // Memory: a slab holds s slices of the mask and of the values (s x slice x (item + sizeof V)
-// bytes), a block b columns of every slice (n_0 x b x (sizeof V + sizeof T) bytes); both are
-// sized to the budget (at least one slice, one column). The values between the two phases are
+// bytes), a block b columns of every slice (n_0 x b x sizeof V bytes, and as many values of T
+// when T is narrower than V); both are sized to the budget (at least one slice, one column),
+// and the slab is freed before the first block. The values between the two phases are
 // of the engine's width V (int32 or int64, the narrowest that holds the intermediates): in the
 // output file itself when T has that width, else in a scratch file of N x sizeof(V) bytes next
 // to the output (removed at once: it lives as long as the run). Time: the in-memory engine's

@@ -463,6 +463,37 @@ EnvelopeBounds envelope_bounds(const Domain& dom, const TransformOptions& opt,
   return b;
 }
 
+std::uint64_t engine_value_bytes(ValueWidth w) {
+  switch (w) {
+  case ValueWidth::I32:
+    return 4;
+  case ValueWidth::I64:
+    return 8;
+  case ValueWidth::I128:
+    return 16;
+  case ValueWidth::Big:
+    break;
+  }
+  return 0;
+}
+
+void require_output_fits(const EnvelopeBounds& b, const TransformOptions& opt,
+                         const BigInt& out_max, const char* who) {
+  if (b.value_max > out_max) {
+    throw OverflowError(std::string(who) + ": values up to " + b.value_max.str() + " (" +
+                        opt.metric.name() + ") do not fit the output type (max " + out_max.str() +
+                        ")");
+  }
+}
+
+void require_mask_item_bytes(int mask_item_bytes, const char* who) {
+  if (mask_item_bytes != 1 && mask_item_bytes != 2 && mask_item_bytes != 4 &&
+      mask_item_bytes != 8) {
+    throw InvalidArgument(std::string(who) + ": mask items of " + std::to_string(mask_item_bytes) +
+                          " bytes (1, 2, 4 or 8)");
+  }
+}
+
 template <class V>
 V envelope_infinity(const EnvelopeBounds& b) {
   if constexpr (std::is_same_v<V, BigInt>) {
@@ -479,11 +510,7 @@ void separable_envelope_part(const Domain& dom, const TransformOptions& opt,
                              const std::uint8_t* mask, V* f, const V& inf,
                              std::vector<std::int64_t>* sites, int mask_item_bytes,
                              const EnvelopePart& part) {
-  if (mask_item_bytes != 1 && mask_item_bytes != 2 && mask_item_bytes != 4 &&
-      mask_item_bytes != 8) {
-    throw InvalidArgument("transform: mask items of " + std::to_string(mask_item_bytes) +
-                          " bytes (1, 2, 4 or 8 supported)");
-  }
+  require_mask_item_bytes(mask_item_bytes, "transform");
   if (sites != nullptr) sites->resize(static_cast<std::size_t>(dom.size()));
   const Metric& mt = opt.metric;
   std::vector<V> pw;
@@ -494,9 +521,13 @@ void separable_envelope_part(const Domain& dom, const TransformOptions& opt,
   } else if (mt.p == 2) {
     run_passes<kL2>(dom, opt, mask, mask_item_bytes, f, inf, sites, pw, part);
   } else {
+    // The table covers the axes this part runs only: a part's other extents (the out-of-core
+    // column block's width, for one) may exceed every extent the bounds were computed on.
     std::int64_t lmax = 1;
-    for (int k = 0; k < dom.dim(); ++k) {
-      lmax = std::max(lmax, opt.periodic(k) ? 3 * dom.extent(k) : dom.extent(k));
+    const int d = dom.dim();
+    for (int k = 0; k < d; ++k) {
+      const bool runs = k == 0 ? (d == 1 ? part.slices : part.axis0) : part.slices;
+      if (runs) lmax = std::max(lmax, opt.periodic(k) ? 3 * dom.extent(k) : dom.extent(k));
     }
     pw.resize(static_cast<std::size_t>(lmax) + 1);
     for (std::int64_t t = 0; t <= lmax; ++t) {

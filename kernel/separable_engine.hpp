@@ -51,6 +51,17 @@ struct EnvelopeBounds {
 EnvelopeBounds envelope_bounds(const Domain& dom, const TransformOptions& opt,
                                const BigInt& weight_max);
 
+/// Bytes of one value of the engine type of width w (0 for BigInt, whose size varies).
+std::uint64_t engine_value_bytes(ValueWidth w);
+
+/// Throws OverflowError when the largest value b.value_max exceeds out_max (the largest value
+/// of the output type), naming the metric: "<who>: values up to V (l2) do not fit ...".
+void require_output_fits(const EnvelopeBounds& b, const TransformOptions& opt,
+                         const BigInt& out_max, const char* who);
+
+/// Throws InvalidArgument unless mask items have 1, 2, 4 or 8 bytes.
+void require_mask_item_bytes(int mask_item_bytes, const char* who);
+
 /// Worker threads actually used for n points.
 unsigned resolve_threads(unsigned requested, std::int64_t n);
 
@@ -69,7 +80,6 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt, const st
                         V* f, const V& inf, std::vector<std::int64_t>* sites,
                         int mask_item_bytes = 1);
 
-/// Calls fn(std::type_identity<V>{}) with the engine type of width w.
 /// A part of the passes, for transforms that do not hold the whole volume at once
 /// (kernel/out_of_core_transform.hpp). slices: the mask pass (or the identity) and the passes
 /// along axes d-1 .. 1, whose lines lie in one slice of axis 0 (run them on a slab of whole
@@ -89,6 +99,7 @@ void separable_envelope_part(const Domain& dom, const TransformOptions& opt,
                              std::vector<std::int64_t>* sites, int mask_item_bytes,
                              const EnvelopePart& part);
 
+/// Calls fn(std::type_identity<V>{}) with the engine type of width w.
 template <class Fn>
 decltype(auto) with_value_type(ValueWidth w, Fn&& fn) {
   switch (w) {

@@ -6,6 +6,8 @@
 #include <zdg/convergence/shape.hpp>
 #include <zdg/kernel/digital_contour.hpp>
 
+#include "tests/support/predicate_contour.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,26 +17,9 @@
 
 namespace {
 
+using zdg::test::contour_of;
+
 using zdg::Pixel;
-
-class Predicate final : public zdg::GaussDigitization2 {
-public:
-  Predicate(std::function<bool(const Pixel&)> f, std::int64_t r)
-      : GaussDigitization2(zdg::Box2{{-r, -r}, {r, r}}), f_(std::move(f)) {}
-
-protected:
-  bool inside(const Pixel& z) const override { return f_(z); }
-
-private:
-  std::function<bool(const Pixel&)> f_;
-};
-
-zdg::DigitalContour contour_of(const std::function<bool(const Pixel&)>& f, std::int64_t r) {
-  Predicate set(f, r + 2);
-  auto cs = zdg::digital_contours(set, {}, {0});
-  EXPECT_EQ(cs.size(), 1u);
-  return cs.at(0);
-}
 
 // A digital disc is one digital circular arc (the whole contour): every linel gets the
 // curvature of one separating circle, which lies between the inner and outer pixel centres,
@@ -65,7 +50,7 @@ TEST(MdcaCurvature, SignFollowsTheOrientation) {
     const double r2 = double(z.x * z.x + z.y * z.y);
     return r2 <= 30.0 * 30.0 && r2 > 12.0 * 12.0;
   };
-  Predicate set(ring, 34);
+  zdg::test::PredicateSet set(ring, 34);
   auto cs = zdg::digital_contours(set, {}, {0});
   ASSERT_EQ(cs.size(), 2u);
   for (const auto& c : cs) {

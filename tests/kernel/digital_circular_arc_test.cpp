@@ -2,6 +2,8 @@
 
 #include "tests/support/tower.hpp"
 
+#include "tests/support/predicate_contour.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +14,8 @@
 #include <vector>
 
 namespace {
+
+using zdg::test::contour_of;
 
 using zdg::Pixel;
 
@@ -184,26 +188,6 @@ TEST(CircularArc, BadInputAndWidth) {
 }
 
 // --- contours ---------------------------------------------------------------------------------
-
-// Pixels of the digital disc x^2 + y^2 <= r2 (or of any predicate) in a box, as a digitization.
-class Predicate final : public zdg::GaussDigitization2 {
-public:
-  Predicate(std::function<bool(const Pixel&)> f, std::int64_t r)
-      : GaussDigitization2(zdg::Box2{{-r, -r}, {r, r}}), f_(std::move(f)) {}
-
-protected:
-  bool inside(const Pixel& z) const override { return f_(z); }
-
-private:
-  std::function<bool(const Pixel&)> f_;
-};
-
-zdg::DigitalContour contour_of(const std::function<bool(const Pixel&)>& f, std::int64_t r) {
-  Predicate set(f, r + 2);
-  auto cs = zdg::digital_contours(set, {}, {0});
-  EXPECT_FALSE(cs.empty());
-  return cs.at(0);
-}
 
 std::vector<Pixel> run(const std::vector<Pixel>& v, std::size_t begin, std::size_t length) {
   std::vector<Pixel> out;

@@ -68,23 +68,29 @@ std::int64_t component_bound() {
   }
 }
 
+// A random primitive normal of a random octant, its components on one scale (10, 1000 or
+// bound) so that both skewed and balanced normals come.
+template <TowerInt I>
+Point3<I> random_primitive_normal(std::int64_t bound) {
+  const std::int64_t scale = *rc::gen::element<std::int64_t>(10, 1000, bound);
+  auto component = [&] {
+    std::int64_t v = *rc::gen::inRange<std::int64_t>(1, scale + 1);
+    return *rc::gen::arbitrary<bool>() ? -v : v;
+  };
+  std::int64_t a = component(), b = component(), c = component();
+  std::int64_t g = std::gcd(std::gcd(a, b), c);
+  return Point3<I>{I(a / g), I(b / g), I(c / g)};
+}
+
 TYPED_TEST(PlaneProbingTest, BothAlgorithmsReturnTheExactNormalOfEveryOctant) {
   using I = TypeParam;
   test::check_property([] {
     // One scale for the three components: R's step count grows with the skew of the
     // normal (about 10^6 steps for (1, 1, 10^6)), which is H's regime, not R's.
-    const std::int64_t bound = component_bound<I>();
-    const std::int64_t scale = *rc::gen::element<std::int64_t>(10, 1000, bound);
-    auto component = [&] {
-      std::int64_t v = *rc::gen::inRange<std::int64_t>(1, scale + 1);
-      return *rc::gen::arbitrary<bool>() ? -v : v;
-    };
-    std::int64_t a = component(), b = component(), c = component();
-    std::int64_t g = std::gcd(std::gcd(a, b), c);
-    const Point3<I> n{I(a / g), I(b / g), I(c / g)};
+    const Point3<I> n = random_primitive_normal<I>(component_bound<I>());
     check_probe(n, ProbingAlgorithm::r);
     // H can take up to ||N||_1 steps: keep it to moderate normals.
-    if (std::abs(a / g) + std::abs(b / g) + std::abs(c / g) <= 3000) {
+    if (abs(n.x) + abs(n.y) + abs(n.z) <= I(3000)) {
       check_probe(n, ProbingAlgorithm::h);
     }
   });
@@ -146,18 +152,6 @@ std::array<Point3<I>, 3> octant_frame(const Point3<I>& n) {
   auto sg = [](const I& v) { return v < I(0) ? I(-1) : I(1); };
   return {Point3<I>{sg(n.x), I(0), I(0)}, Point3<I>{I(0), sg(n.y), I(0)},
           Point3<I>{I(0), I(0), sg(n.z)}};
-}
-
-template <TowerInt I>
-Point3<I> random_primitive_normal(std::int64_t bound) {
-  const std::int64_t scale = *rc::gen::element<std::int64_t>(10, 1000, bound);
-  auto component = [&] {
-    std::int64_t v = *rc::gen::inRange<std::int64_t>(1, scale + 1);
-    return *rc::gen::arbitrary<bool>() ? -v : v;
-  };
-  std::int64_t a = component(), b = component(), c = component();
-  std::int64_t g = std::gcd(std::gcd(a, b), c);
-  return Point3<I>{I(a / g), I(b / g), I(c / g)};
 }
 
 TYPED_TEST(PlaneProbingTest, GeneralProbingOnTheStandardPlaneIsProbeStandardPlane) {
