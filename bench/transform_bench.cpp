@@ -2,6 +2,14 @@
 // radius 0.45 n in n^3 (n = 256, 512). Arguments: n, p (0 = linf), threads. Reports the time
 // and ns per voxel (counter "ns_per_voxel"). Peers: bench/compare_transforms.py.
 //
+// The bandwidth bound (issue #15, part 4): a STREAM triad a[i] = b[i] + s c[i] (McCalpin,
+// "Memory bandwidth and machine balance", IEEE TCCA newsletter 1995) on three arrays of 2^25
+// doubles, best of 5, measured in the same run with the same threads (benchmark Triad; bytes
+// counted as STREAM does, 24 per element). Dt3d's counter "x_bound" is the transform's time
+// over the time its data movement takes at that bandwidth: the mask pass reads 1 byte and
+// writes 4 per voxel (int32 engine, uint32 output), each of the two other passes reads and
+// writes 4: 1 + 4 + 2 x 8 = 21 bytes per voxel (l2 on 512^3 uses the int32 engine).
+//
 //   build/bin/transform_bench --benchmark_filter='Dt3d/256/2/2'
 #include <zdg/kernel/distance_transform.hpp>
 #include <zdg/kernel/reduced_medial_axis.hpp>
@@ -10,7 +18,13 @@
 
 #include <benchmark/benchmark.h>
 
+#include <zdg/kernel/parallel_for.hpp>
+
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
+#include <map>
+#include <vector>
 
 namespace {
 
@@ -42,6 +56,19 @@ Image<std::uint8_t> ball(std::int64_t n) {
   return img;
 }
 
+// Each voxel foreground with probability 1/2 (fixed seed): the branchy case of the first pass.
+Image<std::uint8_t> random_half(std::int64_t n) {
+  Image<std::uint8_t> img(Domain({n, n, n}), std::uint8_t{0});
+  std::uint64_t x = 0x9E3779B97F4A7C15ULL; // xorshift64
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    img[i] = static_cast<std::uint8_t>(x >> 63);
+  }
+  return img;
+}
+
 zdg::TransformOptions options(const benchmark::State& st) {
   zdg::TransformOptions opt;
   opt.metric = zdg::Metric{static_cast<int>(st.range(1))};
@@ -56,6 +83,38 @@ void run_dt(const Image<std::uint8_t>& img, const zdg::TransformOptions& opt) {
   } else {
     benchmark::DoNotOptimize(zdg::distance_transform<std::uint64_t>(img, opt));
   }
+}
+
+// STREAM triad bandwidth in bytes per second with `threads` threads (cached per count).
+double triad_bandwidth(unsigned threads) {
+  static std::map<unsigned, double> cache;
+  if (auto it = cache.find(threads); it != cache.end()) return it->second;
+  const std::int64_t n = std::int64_t{1} << 25;
+  std::vector<double> a(static_cast<std::size_t>(n)), b(a.size(), 1.0), c(a.size(), 2.0);
+  double best = 1e30;
+  for (int rep = 0; rep < 5; ++rep) {
+    const auto t0 = std::chrono::steady_clock::now();
+    zdg::parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+      for (std::int64_t i = lo; i < hi; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        a[k] = b[k] + 3.0 * c[k];
+      }
+    });
+    benchmark::DoNotOptimize(a.data());
+    best = std::min(best,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  return cache[threads] = 24.0 * static_cast<double>(n) / best;
+}
+
+void Triad(benchmark::State& st) {
+  const auto threads = static_cast<unsigned>(st.range(0));
+  double bw = 0;
+  for (auto _ : st) {
+    bw = triad_bandwidth(threads);
+    benchmark::DoNotOptimize(bw);
+  }
+  st.counters["GB_per_s"] = bw * 1e-9;
 }
 
 void report(benchmark::State& st, std::int64_t voxels) {
@@ -74,8 +133,21 @@ void Dt2d(benchmark::State& st) {
 void Dt3d(benchmark::State& st) {
   auto img = ball(st.range(0));
   auto opt = options(st);
+  const double bound = 21.0 * static_cast<double>(img.size()) / triad_bandwidth(opt.threads);
   for (auto _ : st) run_dt(img, opt);
   report(st, img.size());
+  st.counters["x_bound"] = benchmark::Counter(bound, benchmark::Counter::kIsIterationInvariantRate |
+                                                         benchmark::Counter::kInvert);
+}
+
+void Random3d(benchmark::State& st) {
+  auto img = random_half(st.range(0));
+  auto opt = options(st);
+  const double bound = 21.0 * static_cast<double>(img.size()) / triad_bandwidth(opt.threads);
+  for (auto _ : st) run_dt(img, opt);
+  report(st, img.size());
+  st.counters["x_bound"] = benchmark::Counter(bound, benchmark::Counter::kIsIterationInvariantRate |
+                                                         benchmark::Counter::kInvert);
 }
 
 void Voronoi3d(benchmark::State& st) {
@@ -100,6 +172,7 @@ void Rma3d(benchmark::State& st) {
   report(st, img.size());
 }
 
+BENCHMARK(Triad)->Arg(1)->Arg(2)->Iterations(1)->UseRealTime();
 BENCHMARK(Dt2d)
     ->Args({4096, 2, 1})
     ->Args({4096, 2, 2})
@@ -114,10 +187,12 @@ BENCHMARK(Dt3d)
     ->Args({256, 3, 2})
     ->Args({256, 1, 2})
     ->Args({256, 0, 2})
+    ->Args({512, 2, 1})
     ->Args({512, 2, 2})
     ->Args({512, 3, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(Random3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Voronoi3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Rdt3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Rma3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
