@@ -50,7 +50,8 @@ void require_background(const Domain& dom, const std::uint8_t* mask, const Trans
 
 template <class T>
 void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,
-                             const TransformOptions& opt, T* out) {
+                             const TransformOptions& opt, T* out,
+                             const std::function<void(int, int)>& progress) {
   detail::require_mask_item_bytes(mask_item_bytes, "distance transform");
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
   require_background(dom, mask, opt, mask_item_bytes);
@@ -58,17 +59,22 @@ void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int ma
     detail::require_output_fits(bounds, opt, BigInt(std::numeric_limits<T>::max()),
                                 "distance transform");
   }
+  detail::EnvelopePart whole;
+  if (progress) {
+    whole.after_pass = [&, done = 0](int) mutable { progress(++done, dom.dim()); };
+  }
   detail::with_value_type(bounds.width, [&]<class V>(std::type_identity<V>) {
     V inf = detail::envelope_infinity<V>(bounds);
     if constexpr (std::is_integral_v<V> && std::is_integral_v<T> && sizeof(V) == sizeof(T)) {
       // Same width: work in the output buffer (signed and unsigned variants may alias; the
       // final values are >= 0 and finite since there is background).
-      detail::separable_envelope<V>(dom, opt, mask, reinterpret_cast<V*>(out), inf, nullptr,
-                                    mask_item_bytes);
+      detail::separable_envelope_part<V>(dom, opt, mask, reinterpret_cast<V*>(out), inf, nullptr,
+                                         mask_item_bytes, whole);
       return;
     }
     std::vector<V> f(static_cast<std::size_t>(dom.size()));
-    detail::separable_envelope<V>(dom, opt, mask, f.data(), inf, nullptr, mask_item_bytes);
+    detail::separable_envelope_part<V>(dom, opt, mask, f.data(), inf, nullptr, mask_item_bytes,
+                                       whole);
     const V* fp = f.data();
     parallel_chunks(dom.size(), detail::resolve_threads(opt.threads, dom.size()),
                     [&](std::int64_t b, std::int64_t e) {
@@ -85,15 +91,20 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
 }
 
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
-                                      const TransformOptions&, std::uint8_t*);
+                                      const TransformOptions&, std::uint8_t*,
+                                      const std::function<void(int, int)>&);
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
-                                      const TransformOptions&, std::uint16_t*);
+                                      const TransformOptions&, std::uint16_t*,
+                                      const std::function<void(int, int)>&);
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
-                                      const TransformOptions&, std::uint32_t*);
+                                      const TransformOptions&, std::uint32_t*,
+                                      const std::function<void(int, int)>&);
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
-                                      const TransformOptions&, std::uint64_t*);
+                                      const TransformOptions&, std::uint64_t*,
+                                      const std::function<void(int, int)>&);
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
-                                      const TransformOptions&, std::int64_t*);
+                                      const TransformOptions&, std::int64_t*,
+                                      const std::function<void(int, int)>&);
 template Image<std::uint8_t> distance_transform(const Image<std::uint8_t>&,
                                                 const TransformOptions&);
 template Image<std::uint16_t> distance_transform(const Image<std::uint8_t>&,

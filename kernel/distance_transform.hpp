@@ -21,6 +21,7 @@
 #include <zdg/kernel/lp_metric.hpp>
 
 #include <cstdint>
+#include <functional>
 
 namespace zdg {
 
@@ -38,10 +39,13 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
 /// output file). T: std::uint8_t, std::uint16_t, std::uint32_t, std::uint64_t or std::int64_t.
 /// Memory beyond the two buffers: the per-thread line buffers of the engine, plus one temporary
 /// of the engine's width when it differs from T's (none when they agree: the engine works in
-/// the output). The checks and errors of distance_transform.
+/// the output). The checks and errors of distance_transform. progress (optional) is called
+/// after each of the d passes with (passes done, d), from the calling thread, e.g. to show a
+/// long transform's progress on a terminal (`zdg transform dt`).
 template <class T>
 void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,
-                             const TransformOptions& opt, T* out);
+                             const TransformOptions& opt, T* out,
+                             const std::function<void(int done, int total)>& progress = {});
 
 /// Throws InvalidArgument when `shape` has no background point (value 0).
 void require_background(const Image<std::uint8_t>& shape, const TransformOptions& opt);

@@ -390,12 +390,16 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
       }
       envelope_pass(dom, d - 1, opt.periodic(d - 1), false, m, f, inf, sites, threads);
     }
-    for (int a = d - 2; a >= 1; --a)
+    if (part.after_pass) part.after_pass(d - 1);
+    for (int a = d - 2; a >= 1; --a) {
       envelope_pass(dom, a, opt.periodic(a), mask != nullptr, m, f, inf, sites, threads);
+      if (part.after_pass) part.after_pass(a);
+    }
   }
   if (part.axis0 && d >= 2) {
     envelope_pass(dom, 0, opt.periodic(0), part.from_mask, m, f, inf, sites, threads,
                   part.column_begin, part.column_end);
+    if (part.after_pass) part.after_pass(0);
   }
 }
 } // namespace

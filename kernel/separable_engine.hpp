@@ -34,6 +34,7 @@
 #include <zdg/kernel/parallel_for.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <type_traits>
 #include <vector>
 
@@ -91,6 +92,7 @@ void separable_envelope(const Domain& dom, const TransformOptions& opt, const st
 struct EnvelopePart {
   bool slices = true, axis0 = true, from_mask = true;
   std::int64_t column_begin = 0, column_end = -1;
+  std::function<void(int axis)> after_pass; // optional: called after each pass, with its axis
 };
 
 template <class V>

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -293,6 +294,17 @@ std::function<void(const OutOfCoreProgress&)> progress_printer(const TransformAr
   };
 }
 
+// The same for an in-memory transform: the passes done (one per axis) and the seconds so far.
+std::function<void(int, int)> pass_printer(const TransformArgs& a) {
+  if (a.quiet || ::isatty(2) == 0) return {};
+  return [t0 = std::chrono::steady_clock::now()](int done, int total) {
+    char secs[32];
+    std::snprintf(secs, sizeof secs, "%.1f s", since(t0));
+    std::cerr << "\rzdg transform dt: pass " << done << "/" << total << ", " << secs << "   "
+              << (done == total ? "\n" : "") << std::flush;
+  };
+}
+
 // The lean path of `dt` (issue #15): an integer .npy in, an .npy out. The input file is mapped
 // and read in place (items of any integer width: background when all bytes are 0, as
 // npy_to_mask reads them), the result is computed straight into the mapped output file, of the
@@ -337,7 +349,7 @@ void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
   // In memory: the values in a buffer of the output's type (not zero-filled: the transform
   // writes every value), then one sequential write.
   std::unique_ptr<T[]> values(new T[n]);
-  distance_transform_into<T>(dom, mask, item, opt, values.get());
+  distance_transform_into<T>(dom, mask, item, opt, values.get(), pass_printer(a));
   const double secs = since(t0);
   T mx = 0;
   std::mutex mx_lock;

@@ -8,6 +8,8 @@
 #include <rapidcheck.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace zdg {
 namespace {
@@ -126,8 +128,16 @@ TEST(DistanceTransform, IntoBuffersReadsWideMaskItems) {
     }
     const auto expect = distance_transform<std::uint64_t>(c.shape, c.opt);
     std::vector<std::uint64_t> out(n, 12345);
-    distance_transform_into<std::uint64_t>(c.shape.domain(), wide.data(), item, c.opt, out.data());
+    // With a progress callback: called once per pass, (1, d) .. (d, d), the values unchanged.
+    std::vector<std::pair<int, int>> calls;
+    distance_transform_into<std::uint64_t>(
+        c.shape.domain(), wide.data(), item, c.opt, out.data(),
+        [&](int done, int total) { calls.emplace_back(done, total); });
     RC_ASSERT(out == expect.values());
+    const int d = c.shape.domain().dim();
+    RC_ASSERT(calls.size() == static_cast<std::size_t>(d));
+    for (int k = 0; k < d; ++k)
+      RC_ASSERT(calls[static_cast<std::size_t>(k)] == std::make_pair(k + 1, d));
     if (distance_transform_max_value(c.shape.domain(), c.opt) <= BigInt(4294967295ULL)) {
       std::vector<std::uint32_t> out32(n, 7);
       distance_transform_into<std::uint32_t>(c.shape.domain(), wide.data(), item, c.opt,
