@@ -73,9 +73,7 @@ def main():
         print(f"zdg transform dt, ball {a.n}^3, {a.metric}, output {rows[0][3]}")
         print(f"  input {in_bytes / 1e6:.1f} MB, output {out_bytes / 1e6:.1f} MB")
         if a.memory:
-            units = {"K": 1 << 10, "M": 1 << 20, "G": 1 << 30, "T": 1 << 40}
-            m = a.memory.upper().rstrip("B").rstrip("I")
-            limit = int(m[:-1]) * units[m[-1]] if m[-1] in units else int(m)
+            limit = int(json.loads(r.stdout)["memory_budget"])  # as zdg read --memory
             print(f"  out of core, budget {limit / 1e6:.1f} MB: peak RSS {peak / 1e6:.1f} MB, "
                   f"ratio {peak / limit:.2f}; command {wall:.3f} s")
             return

@@ -307,11 +307,11 @@ std::function<void(int, int)> pass_printer(const TransformArgs& a) {
 
 // The lean path of `dt` (issue #15): an integer .npy in, an .npy out. The input file is mapped
 // and read in place (items of any integer width: background when all bytes are 0, as
-// npy_to_mask reads them), the result is computed straight into the mapped output file, of the
-// narrowest unsigned dtype that holds the largest value: the peak memory is about the input's
-// bytes plus the output's, where the general path below holds the input twice and the output
-// three times. Returns false (nothing done) for what it does not take: other formats, floats,
-// values past 64 bits.
+// npy_to_mask reads them), the values are computed in one buffer (or out of core) and written
+// once, in the narrowest unsigned dtype that holds the largest value: the peak memory is about
+// the input's bytes plus the output's, where the general path below holds the input twice and
+// the output three times. Returns false (nothing done) for what it does not take: other
+// formats, floats, values past 64 bits.
 template <class T>
 void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
                 const TransformOptions& opt, DType dtype) {
