@@ -39,14 +39,18 @@ void require_background(const Domain& dom, const std::uint8_t* mask, const Trans
     const std::uint8_t* p = mask + i * item;
     found = std::all_of(p, p + item, [](std::uint8_t b) { return b == 0; });
   }
-  if (!found) {
-    bool torus = std::any_of(opt.torus.begin(), opt.torus.end(), [](bool b) { return b; });
-    throw InvalidArgument(std::string("distance transform: the image has no background point "
-                                      "(value 0)") +
-                          (torus ? ", also on the torus" : "") +
-                          ": every distance would be infinite");
-  }
+  if (!found) detail::throw_no_background(opt);
 }
+
+namespace detail {
+void throw_no_background(const TransformOptions& opt) {
+  bool torus = std::any_of(opt.torus.begin(), opt.torus.end(), [](bool b) { return b; });
+  throw InvalidArgument(std::string("distance transform: the image has no background point "
+                                    "(value 0)") +
+                        (torus ? ", also on the torus" : "") +
+                        ": every distance would be infinite");
+}
+} // namespace detail
 
 template <class T>
 void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,

@@ -54,4 +54,9 @@ void require_background(const Image<std::uint8_t>& shape, const TransformOptions
 void require_background(const Domain& dom, const std::uint8_t* mask, const TransformOptions& opt,
                         int mask_item_bytes = 1);
 
+namespace detail {
+/// The error of require_background (for transforms that look for background in parts).
+[[noreturn]] void throw_no_background(const TransformOptions& opt);
+} // namespace detail
+
 } // namespace zdg

@@ -4,7 +4,9 @@
 // never over an existing file unless --force.
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/cli/commands.hpp>
+#include <zdg/convergence/cli/mpi_session.hpp>
 #include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/distributed_transform.hpp>
 #include <zdg/kernel/mapped_file.hpp>
 #include <zdg/kernel/npy_io.hpp>
 #include <zdg/kernel/out_of_core_transform.hpp>
@@ -19,6 +21,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -39,7 +42,7 @@ namespace {
 struct TransformArgs {
   std::string input, output, metric = "l2", torus, lower, memory;
   unsigned threads = 0;
-  bool json = false, force = false, out_of_core = false, quiet = false;
+  bool json = false, force = false, out_of_core = false, quiet = false, mpi = false;
   // The file the result is written to before it is moved onto `output` (set by check_paths).
   std::shared_ptr<OutputSet> outputs;
   std::string staged;
@@ -514,9 +517,200 @@ void run_rma(TransformArgs& a) {
          {{"balls", balls.size()}});
 }
 
+// `zdg transform dt|voronoi --mpi` (issue #15, kernel/distributed_transform.hpp): one rank of
+// an MPI job. Rank r reads the slices it owns of the input .npy (MPI-IO), the ranks transform
+// their slabs, exchange them, transform whole columns, and write their column blocks into the
+// output with one collective MPI-IO write; rank 0 prepares the staged output (header, space
+// reserved) and renames it when every rank has written. Failures: what every rank checks
+// before any exchange (the input, the options, the output path, the background) is agreed on
+// and reported once, by the lowest rank that met it (exit 2, nothing written); a failure after
+// (the file system, the memory), on some ranks only, ends the whole job (MPI_Abort, exit 2).
+template <class T>
+void mpi_transform_as(TransformArgs& a, MpiSession& mpi, const std::string& cmd,
+                      const NpyLayout& lay, const Domain& dom, const TransformOptions& opt,
+                      DType dtype, std::vector<std::uint8_t>& slab, const std::string& header,
+                      std::chrono::steady_clock::time_point t0) {
+  const bool voronoi = cmd == "voronoi";
+  const int d = dom.dim();
+  const DistributedPart part = distributed_part(dom, mpi.rank(), mpi.size());
+  const std::int64_t n0 = dom.extent(0), slice = dom.stride(0), w = part.columns.size();
+  const std::string staged = mpi.broadcast(mpi.rank() == 0 ? a.staged : std::string(), 0);
+  const bool show = mpi.rank() == 0 && !a.quiet && ::isatty(2) != 0;
+  nlohmann::json stages = nlohmann::json::object();
+  auto stage = [&](const std::string& name, double seconds) {
+    // Each stage's time is the slowest rank's (a collective step: every rank reports it).
+    const double slowest =
+        static_cast<double>(mpi.max_over_ranks(static_cast<std::uint64_t>(seconds * 1e6))) / 1e6;
+    stages[name] = slowest;
+    if (show)
+      std::cerr << "zdg transform " << cmd << " --mpi: " << name << " " << slowest << " s\n";
+  };
+  stage("read", since(t0));
+  std::string max_text;
+  try {
+    std::vector<T> out(static_cast<std::size_t>(n0 * w));
+    std::vector<std::int64_t> sites;
+    const T mx =
+        distance_transform_distributed<T>(dom, slab.data(), static_cast<int>(dtype_size(lay.dtype)),
+                                          opt, mpi, out.data(), voronoi ? &sites : nullptr, stage);
+    std::vector<std::uint8_t>().swap(slab);
+    const auto t_write = std::chrono::steady_clock::now();
+    if (voronoi) {
+      std::vector<T>().swap(out);
+      const auto ud = static_cast<std::size_t>(d);
+      std::vector<std::int64_t> coords(sites.size() * ud);
+      for (std::size_t i = 0; i < sites.size(); ++i)
+        dom.point(sites[i], std::span<std::int64_t>(coords.data() + i * ud, ud));
+      const std::uint64_t item = 8 * ud;
+      mpi.write_rows(staged, header.size() + static_cast<std::uint64_t>(part.columns.begin) * item,
+                     static_cast<std::uint64_t>(w) * item, static_cast<std::uint64_t>(slice) * item,
+                     n0, coords.data());
+    } else {
+      max_text = std::to_string(mx);
+      mpi.write_rows(staged,
+                     header.size() + static_cast<std::uint64_t>(part.columns.begin) * sizeof(T),
+                     static_cast<std::uint64_t>(w) * sizeof(T),
+                     static_cast<std::uint64_t>(slice) * sizeof(T), n0, out.data());
+    }
+    stage("write", since(t_write));
+  } catch (const std::exception& e) {
+    std::cerr << "zdg: " << e.what() << " (rank " << mpi.rank() << " of " << mpi.size() << ")\n";
+    mpi.abort(2);
+  }
+  const double secs = since(t0);
+  if (mpi.rank() != 0) return;
+  commit(a);
+  report(a, cmd, dom, opt, voronoi ? "int64" : dtype_name(dtype), max_text, secs,
+         {{"mpi", true}, {"ranks", mpi.size()}, {"stages", stages}});
+}
+
+void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
+  MpiSession mpi; // refuses a zdg built without MPI, or a process not started by mpirun
+  const auto t0 = std::chrono::steady_clock::now();
+  const int r = mpi.rank(), P = mpi.size();
+  // Checks and reads without any exchange; a failure is agreed on below.
+  std::string failure;
+  NpyLayout lay;
+  Domain dom;
+  TransformOptions opt;
+  DType dtype = DType::U64;
+  std::string header;
+  std::vector<std::uint8_t> slab;
+  bool background = false;
+  try {
+    if (a.out_of_core || !a.memory.empty()) {
+      throw InvalidArgument("--mpi with --out-of-core or --memory: the ranks hold the volume "
+                            "between them in memory (give one or the other)");
+    }
+    if (extension(a.input) != ".npy" || extension(a.output) != ".npy") {
+      throw InvalidArgument("--mpi reads and writes .npy files (got " + a.input + " and " +
+                            a.output + ")");
+    }
+    if (!std::filesystem::exists(a.input)) throw IoError(a.input + ": no such file");
+    lay = read_npy_layout(a.input);
+    if (dtype_is_float(lay.dtype)) {
+      throw InvalidArgument("--mpi: " + a.input + " holds " + dtype_name(lay.dtype) +
+                            " values; the distributed transform reads integer or bool masks");
+    }
+    if (lay.shape.empty()) throw IoError("a 0-dimensional array is not an image");
+    for (auto e : lay.shape) {
+      if (e == 0) throw IoError("empty array (an extent is 0)");
+    }
+    std::vector<std::int64_t> low;
+    if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
+    if (!low.empty() && low.size() != lay.shape.size()) {
+      throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                            std::to_string(lay.shape.size()) + "-D image");
+    }
+    dom = Domain(lay.shape, low);
+    opt = make_options(a, dom.dim());
+    // All cores by default: shared among the ranks of this machine.
+    if (a.threads == 0) {
+      opt.threads = std::max(1u, std::thread::hardware_concurrency() /
+                                     static_cast<unsigned>(std::max(1, mpi.local_size())));
+    }
+    const DistributedPart part = distributed_part(dom, r, P); // d >= 2
+    const auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
+    if (bounds.width != detail::ValueWidth::I32 && bounds.width != detail::ValueWidth::I64) {
+      throw InvalidArgument("--mpi: the intermediate values of " + opt.metric.name() +
+                            " on this domain need more than 64 bits; use the transform without "
+                            "--mpi");
+    }
+    std::vector<std::int64_t> out_shape = lay.shape;
+    std::uint64_t out_item = 8;
+    if (cmd == "voronoi") {
+      dtype = DType::I64;
+      out_shape.push_back(dom.dim());
+      out_item = 8 * static_cast<std::uint64_t>(dom.dim());
+    } else {
+      const BigInt bound = distance_transform_max_value(dom, opt);
+      dtype = bound <= 255                     ? DType::U8
+              : bound <= 65535                 ? DType::U16
+              : bound <= BigInt(4294967295ULL) ? DType::U32
+                                               : DType::U64;
+      out_item = dtype_size(dtype);
+    }
+    if (static_cast<std::uint64_t>(part.columns.size()) * out_item > INT_MAX ||
+        dom.extent(0) > INT_MAX) {
+      throw InvalidArgument("--mpi: a rank's rows of " + std::to_string(part.columns.size()) +
+                            " values pass MPI-IO's int counts: use more ranks");
+    }
+    header = npy_header_bytes(dtype, out_shape);
+    if (r == 0) {
+      check_paths(a);
+      ReservedFile f(a.staged, header.size() + static_cast<std::uint64_t>(dom.size()) * out_item);
+      f.write(0, header.data(), header.size());
+      f.finish();
+    }
+    const auto item = dtype_size(lay.dtype);
+    const auto uslice = static_cast<std::uint64_t>(dom.stride(0));
+    slab.resize(static_cast<std::size_t>(part.slices.size()) * uslice * item);
+    mpi.read(a.input,
+             lay.data_offset + static_cast<std::uint64_t>(part.slices.begin) * uslice * item,
+             slab.data(), slab.size());
+    for (std::size_t i = 0; i < slab.size() && !background; i += item) {
+      background = std::all_of(slab.begin() + static_cast<std::ptrdiff_t>(i),
+                               slab.begin() + static_cast<std::ptrdiff_t>(i + item),
+                               [](std::uint8_t b) { return b == 0; });
+    }
+  } catch (const std::bad_alloc&) {
+    failure = "out of memory";
+  } catch (const std::exception& e) {
+    failure = e.what();
+    if (failure.empty()) failure = "unknown error";
+  }
+  const bool any_background = mpi.max_over_ranks(background ? 1 : 0) != 0; // (every rank)
+  if (failure.empty() && !any_background) {
+    try {
+      detail::throw_no_background(opt);
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+  }
+  // Reported once, by the lowest failing rank, before any rank exits (mpiexec ends the whole
+  // job when a rank exits with a failure: a message still unwritten would be lost).
+  const auto first_failed = static_cast<int>(mpi.min_over_ranks(failure.empty() ? P : r));
+  if (first_failed < P) {
+    if (r == first_failed) std::cerr << "zdg: " << failure << std::endl;
+    mpi.max_over_ranks(0);
+    ctx.exit_code = 2;
+    return;
+  }
+  switch (dtype) {
+  case DType::U8:
+    return mpi_transform_as<std::uint8_t>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
+  case DType::U16:
+    return mpi_transform_as<std::uint16_t>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
+  case DType::U32:
+    return mpi_transform_as<std::uint32_t>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
+  default:
+    return mpi_transform_as<std::uint64_t>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
+  }
+}
+
 } // namespace
 
-void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
+void add_transform_commands(CLI::App& app, Context& ctx) {
   auto* tr = app.add_subcommand("transform",
                                 "separable exact l_p transforms of n-D images (.npy, .pgm, .vol)");
   tr->require_subcommand(1);
@@ -561,10 +755,22 @@ void add_transform_commands(CLI::App& app, Context& /*ctx*/) {
                     "--memory (default 4G): for volumes larger than the memory");
       sub->add_option("--memory", args->memory,
                       "memory budget (512M, 16G): past it, the transform runs out of core");
+    }
+    if (std::string(s.name) == "dt" || std::string(s.name) == "voronoi") {
+      sub->add_flag("--mpi", args->mpi,
+                    "one rank of an MPI job (mpirun -np P zdg transform ... --mpi): slabs of "
+                    "slices per rank, .npy in and out through MPI-IO; the same values");
       sub->add_flag("--quiet", args->quiet, "no progress on stderr");
     }
     auto run = s.run;
-    sub->callback([args, run] { run(*args); });
+    const std::string name = s.name;
+    sub->callback([args, run, name, &ctx] {
+      if (args->mpi) {
+        run_mpi(*args, ctx, name);
+      } else {
+        run(*args);
+      }
+    });
   }
 }
 

@@ -8,6 +8,8 @@ namespace zdg::test {
 
 /// The zdg program of this build ("" when the command line is not built).
 const char* cli_path();
+/// The MPI launcher (mpiexec) of a zdg built with MPI, "" otherwise.
+const char* mpiexec_path();
 /// The root of the source tree.
 const char* source_dir();
 
