@@ -287,9 +287,13 @@ std::string mb(std::uint64_t bytes) {
   return std::to_string((bytes + 500'000) / 1'000'000) + " MB";
 }
 
-// Progress of a long run on stderr, when it is a terminal and --quiet is not given.
+// Progress of a long run goes to stderr when it is a terminal and --quiet is not given.
+bool show_progress(const TransformArgs& a) {
+  return !a.quiet && ::isatty(2) != 0;
+}
+
 std::function<void(const OutOfCoreProgress&)> progress_printer(const TransformArgs& a) {
-  if (a.quiet || ::isatty(2) == 0) return {};
+  if (!show_progress(a)) return {};
   return [](const OutOfCoreProgress& p) {
     std::cerr << "\rzdg transform dt: " << p.phase << " " << p.done << "/" << p.total << ", read "
               << mb(p.bytes_read) << ", written " << mb(p.bytes_written) << "   "
@@ -299,7 +303,7 @@ std::function<void(const OutOfCoreProgress&)> progress_printer(const TransformAr
 
 // The same for an in-memory transform: the passes done (one per axis) and the seconds so far.
 std::function<void(int, int)> pass_printer(const TransformArgs& a) {
-  if (a.quiet || ::isatty(2) == 0) return {};
+  if (!show_progress(a)) return {};
   return [t0 = std::chrono::steady_clock::now()](int done, int total) {
     char secs[32];
     std::snprintf(secs, sizeof secs, "%.1f s", since(t0));
@@ -535,15 +539,26 @@ void mpi_transform_as(TransformArgs& a, MpiSession& mpi, const std::string& cmd,
   const DistributedPart part = distributed_part(dom, mpi.rank(), mpi.size());
   const std::int64_t n0 = dom.extent(0), slice = dom.stride(0), w = part.columns.size();
   const std::string staged = mpi.broadcast(mpi.rank() == 0 ? a.staged : std::string(), 0);
-  const bool show = mpi.rank() == 0 && !a.quiet && ::isatty(2) != 0;
+  const std::uint64_t out_bytes =
+      header.size() + static_cast<std::uint64_t>(dom.size()) *
+                          (voronoi ? 8 * static_cast<std::uint64_t>(d) : sizeof(T));
+  const bool show = mpi.rank() == 0 && show_progress(a);
   nlohmann::json stages = nlohmann::json::object();
   auto stage = [&](const std::string& name, double seconds) {
     // Each stage's time is the slowest rank's (a collective step: every rank reports it).
     const double slowest =
         static_cast<double>(mpi.max_over_ranks(static_cast<std::uint64_t>(seconds * 1e6))) / 1e6;
     stages[name] = slowest;
-    if (show)
-      std::cerr << "zdg transform " << cmd << " --mpi: " << name << " " << slowest << " s\n";
+    if (!show) return;
+    char secs[32];
+    std::snprintf(secs, sizeof secs, "%.2f s", slowest);
+    std::cerr << "zdg transform " << cmd << " --mpi (" << mpi.size() << " ranks): " << name << " "
+              << secs;
+    if (name == "read")
+      std::cerr << ", " << mb(static_cast<std::uint64_t>(dom.size()) * dtype_size(lay.dtype))
+                << " read";
+    if (name == "write") std::cerr << ", " << mb(out_bytes) << " written";
+    std::cerr << "\n";
   };
   stage("read", since(t0));
   std::string max_text;
