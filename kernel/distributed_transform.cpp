@@ -29,7 +29,8 @@ bool has_background(const std::uint8_t* mask, std::int64_t n, int item) {
 }
 
 // The transpose: this rank's slab (rows of `slice` items, its slices) to its block of columns
-// (n_0 rows of w items), P - 1 rounds of pairwise exchanges plus the rank's own part.
+// (n_0 rows of w items): the rank's own part copied, then P - 1 rounds of pairwise exchanges
+// (round k: send to r + k, receive from r - k, mod P).
 template <class X>
 void transpose_slabs(const Domain& dom, RankExchange& ex, const std::vector<X>& slab,
                      std::vector<X>& block) {
@@ -37,8 +38,13 @@ void transpose_slabs(const Domain& dom, RankExchange& ex, const std::vector<X>& 
   const std::int64_t n0 = dom.extent(0), slice = dom.stride(0);
   const RankRange mine = rank_range(n0, P, r), cols = rank_range(slice, P, r);
   const std::int64_t w = cols.size();
+  // The rank's own part: straight from the slab into the block.
+  for (std::int64_t z = 0; z < mine.size(); ++z) {
+    const X* row = slab.data() + z * slice + cols.begin;
+    std::copy(row, row + w, block.data() + (mine.begin + z) * w);
+  }
   std::vector<X> send;
-  for (int k = 0; k < P; ++k) {
+  for (int k = 1; k < P; ++k) {
     const int to = (r + k) % P, from = (r - k + P) % P;
     const RankRange to_cols = rank_range(slice, P, to), from_slices = rank_range(n0, P, from);
     const std::int64_t tw = to_cols.size();
