@@ -312,6 +312,22 @@ std::function<void(int, int)> pass_printer(const TransformArgs& a) {
   };
 }
 
+// The domain of an .npy input read in place (its shape, --lower): errors for a 0-D or empty
+// array and a --lower of the wrong length.
+Domain npy_domain(const TransformArgs& a, const NpyLayout& lay) {
+  if (lay.shape.empty()) throw IoError("a 0-dimensional array is not an image");
+  for (auto e : lay.shape) {
+    if (e == 0) throw IoError("empty array (an extent is 0)");
+  }
+  std::vector<std::int64_t> low;
+  if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
+  if (!low.empty() && low.size() != lay.shape.size()) {
+    throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                          std::to_string(lay.shape.size()) + "-D image");
+  }
+  return Domain(lay.shape, low);
+}
+
 // The lean path of `dt` (issue #15): an integer .npy in, an .npy out. The input file is mapped
 // and read in place (items of any integer width: background when all bytes are 0, as
 // npy_to_mask reads them), the values are computed in one buffer (or out of core) and written
@@ -390,17 +406,7 @@ bool lean_dt(TransformArgs& a) {
     }
     return false;
   }
-  if (lay.shape.empty()) throw IoError("a 0-dimensional array is not an image");
-  for (auto e : lay.shape) {
-    if (e == 0) throw IoError("empty array (an extent is 0)");
-  }
-  std::vector<std::int64_t> low;
-  if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
-  if (!low.empty() && low.size() != lay.shape.size()) {
-    throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
-                          std::to_string(lay.shape.size()) + "-D image");
-  }
-  const Domain dom(lay.shape, low);
+  const Domain dom = npy_domain(a, lay);
   const auto opt = make_options(a, dom.dim());
   const BigInt bound = distance_transform_max_value(dom, opt);
   if (bound <= 255) {
@@ -627,17 +633,7 @@ void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
       throw InvalidArgument("--mpi: " + a.input + " holds " + dtype_name(lay.dtype) +
                             " values; the distributed transform reads integer or bool masks");
     }
-    if (lay.shape.empty()) throw IoError("a 0-dimensional array is not an image");
-    for (auto e : lay.shape) {
-      if (e == 0) throw IoError("empty array (an extent is 0)");
-    }
-    std::vector<std::int64_t> low;
-    if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
-    if (!low.empty() && low.size() != lay.shape.size()) {
-      throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
-                            std::to_string(lay.shape.size()) + "-D image");
-    }
-    dom = Domain(lay.shape, low);
+    dom = npy_domain(a, lay);
     opt = make_options(a, dom.dim());
     // All cores by default: shared among the ranks of this machine.
     if (a.threads == 0) {
