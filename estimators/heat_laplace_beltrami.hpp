@@ -22,23 +22,27 @@
 // sqrt(t)/h surfels across).
 //
 // Algorithm: a grid of cubes of side rho over the centres (counting sort of the cells, 27
-// neighbouring cells per cell), then for each surfel the sum over the centres in its cells;
-// the surfels are processed cell by cell in parallel (kernel/parallel_for.hpp), so apply()
-// costs O(n k) exp evaluations for k surfels per kernel ball (about 2 pi c^2 t / h^2 on a
-// surface of step h), and its result does not depend on the number of threads. apply()'s inner
-// loop over the centres of a neighbouring cell is explicit 4-double vector code (an exp by
-// range reduction and a degree-13 polynomial, a few ulps from std::exp; matrix() uses
-// std::exp), with an AVX2+FMA clone chosen at load time on x86-64 (GCC): measured 6.1e8 pairs
-// per second on the 2-core development machine (sphere1 at h = 0.025, 30,078 surfels, t =
-// h^0.4 so that the kernel covers the whole sphere: 9.0e8 pairs, 1.49 s; 10^6 surfels with
-// t = 4 h^2: 9.9e8 pairs, 5.0 s; bench/calculus_bench.cpp). matrix()
-// stores the same n k entries (12 bytes each: int64 column, double) as a SparseMatrix. Widths:
+// neighbouring cells per cell). apply() evaluates each pair once for both of its rows (the
+// kernel is symmetric): the cells are cut into blocks of 256 surfels, the pairs of blocks in
+// neighbouring cells are coloured greedily into rounds in which no block appears twice, and
+// each round's pairs run in parallel (kernel/parallel_for.hpp), each block's sums added in
+// round order, so the result does not depend on the number of threads (bit for bit). Cost:
+// O(n k / 2) exp evaluations for k surfels per kernel ball (about 2 pi c^2 t / h^2 on a surface
+// of step h). The inner loop is explicit 4-double vector code (an exp by range reduction and a
+// degree-13 polynomial by Estrin's scheme, a few ulps from std::exp; matrix() uses std::exp),
+// four surfels of a block against each load of four centres of the other, with an AVX2+FMA
+// clone chosen at load time on x86-64 (GCC). Measured on the 2-core development machine
+// (bench/calculus_bench.cpp, 2 threads): sphere1 at h = 0.025, 30,078 surfels, t = h^0.4 so
+// that the kernel covers the whole sphere (9.0e8 pairs): 0.69 s (1.25 s with one exp per
+// ordered pair); 10^6 surfels with t = 4 h^2 (9.9e8 pairs): 2.75 s (5.0 s). matrix() stores
+// the same n k entries (12 bytes each: int64 column, double) as a SparseMatrix. Widths:
 // doubles; indices int64.
 #pragma once
 
 #include <zdg/arith/point.hpp>
 #include <zdg/kernel/sparse_matrix.hpp>
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -77,6 +81,14 @@ private:
   std::vector<double> x_, y_, z_, w_;    // by sorted position
   std::vector<std::int64_t> cell_start_; // cells in sorted order: [cell_start_[c], [c + 1])
   std::vector<std::int64_t> neighbours_; // per cell: up to 27 neighbour cells, -1 padded
+  // apply()'s schedule: blocks of at most 256 positions within one cell ([block_start_[b],
+  // [b + 1])); the pairs I < J of blocks in neighbouring cells, by rounds (round k: pairs_
+  // [round_start_[k], [k + 1])) in which no block appears twice, so that the blocks of a round
+  // are written by one thread each and every sum is added in the same order for any number of
+  // threads.
+  std::vector<std::int64_t> block_start_;
+  std::vector<std::array<std::int64_t, 2>> pairs_;
+  std::vector<std::int64_t> round_start_;
 
   template <class Fn>
   void for_each_pair_of_cell(std::int64_t cell, Fn&& fn) const;
