@@ -3,7 +3,8 @@
 // operators: no free lunch", SGP 2007, for the list of properties), measured here on the same
 // digital surfaces for the heat-kernel operator (estimators/heat_laplace_beltrami.hpp), the
 // cotangent Laplacian of the triangulated primal surface and the combinatorial Laplacian
-// (kernel/cotan_laplacian.hpp). Each property is measured, printed as one row of the table
+// (kernel/cotan_laplacian.hpp) and the cotangent Laplacian of the marching-cubes mesh
+// (kernel/marching_cubes.hpp). Each property is measured, printed as one row of the table
 // (papers/lb-digital/README.md quotes it) and checked against what the operator's theory says:
 //   constants   max |L 1|                                  (all: 0)
 //   symmetry    max |M_i L_ij - M_j L_ji| / max |M L|        (all: 0 for their mass M)
@@ -19,6 +20,8 @@
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
 #include <zdg/kernel/cotan_laplacian.hpp>
+#include <zdg/kernel/image_surfels.hpp>
+#include <zdg/kernel/marching_cubes.hpp>
 
 #include "tests/support/digital_sphere.hpp"
 
@@ -55,6 +58,29 @@ Operator heat_operator(const SurfelComplex& c, const std::vector<double>& w, dou
 Operator cotan_operator(const SurfelComplex& c) {
   const CotanLaplacian L = cotan_laplacian(c.pointels, triangulate_quads(c.surfels));
   return {L.stiffness, L.mass, c.pointels};
+}
+
+// The cotangent Laplacian of the marching-cubes mesh of the digitization ((6,26), vertices at
+// the surfel centres: level 1/2 between voxel centres), at its vertices: M = lumped mass.
+Operator marching_cubes_operator(const VoxelPredicate& inside, const VoxelBox& b, double h) {
+  const std::int64_t nx = b.hi.x - b.lo.x + 1, ny = b.hi.y - b.lo.y + 1, nz = b.hi.z - b.lo.z + 1;
+  Image<std::uint8_t> mask(Domain({nz, ny, nx}, {b.lo.z, b.lo.y, b.lo.x}));
+  auto& v = mask.values();
+  for (std::int64_t z = 0, i = 0; z < nz; ++z)
+    for (std::int64_t y = 0; y < ny; ++y)
+      for (std::int64_t x = 0; x < nx; ++x, ++i)
+        v[std::size_t(i)] = inside({b.lo.x + x, b.lo.y + y, b.lo.z + z}) ? 1 : 0;
+  const VoxelPlacement place{{h, h, h},
+                             {h * double(b.lo.x), h * double(b.lo.y), h * double(b.lo.z)}};
+  const PolygonMesh mesh =
+      marching_cubes(mask, image_surfels(mask, 1), SurfaceConvention::of(6, 26), place, nullptr, 1);
+  std::vector<std::array<std::int64_t, 3>> triangles;
+  for (std::int64_t t = 0; t < mesh.face_count(); ++t) {
+    const auto c = mesh.face(t);
+    triangles.push_back({c[0], c[1], c[2]});
+  }
+  const CotanLaplacian L = cotan_laplacian(mesh.vertices, triangles);
+  return {L.stiffness, L.mass, mesh.vertices};
 }
 
 Operator combinatorial_operator(const SurfelComplex& c) {
@@ -172,14 +198,15 @@ TEST(LaplaceBeltramiProperties, MeasuredTable) {
   const auto wc = surfel_weights(surfel_measure(normals, cc.normals), cc.areas);
 
   const test::DigitalSphere s1 = test::digital_sphere(0.1), s2 = test::digital_sphere(0.05);
-  const char* names[3] = {"heat kernel (t = h^0.4)", "cotangent (primal, split)",
-                          "combinatorial (4 neighbours)"};
-  Row rows[3];
-  for (int o = 0; o < 3; ++o) {
+  const char* names[4] = {"heat kernel (t = h^0.4)", "cotangent (primal, split)",
+                          "combinatorial (4 neighbours)", "cotangent (marching cubes)"};
+  Row rows[4];
+  for (int o = 0; o < 4; ++o) {
     const auto make = [&](const test::DigitalSphere& s) {
       return o == 0   ? heat_operator(s.complex, s.weights, s.h)
              : o == 1 ? cotan_operator(s.complex)
-                      : combinatorial_operator(s.complex);
+             : o == 2 ? combinatorial_operator(s.complex)
+                      : marching_cubes_operator(s.inside, s.box, s.h);
     };
     const Operator a = make(s1), b = make(s2);
     measure_algebra(a, rows[o]);
@@ -189,7 +216,8 @@ TEST(LaplaceBeltramiProperties, MeasuredTable) {
     // the edges; u = g . x with |g| = 1.
     const Operator c = o == 0   ? heat_operator(cc, wc, h)
                        : o == 1 ? cotan_operator(cc)
-                                : combinatorial_operator(cc);
+                       : o == 2 ? combinatorial_operator(cc)
+                                : marching_cubes_operator(inside, box, h);
     std::vector<double> u;
     const P3 g{0.48, -0.6, 0.64};
     for (const auto& p : c.points) u.push_back(g.x * p.x + g.y * p.y + g.z * p.z);
@@ -201,7 +229,7 @@ TEST(LaplaceBeltramiProperties, MeasuredTable) {
   std::printf("\n| operator | L 1 | symmetry of M L | entries per row | min off-diagonal | min "
               "Rayleigh -u'MLu/u'Mu | linear u on tilted faces: max abs(L u) | l_inf error of L "
               "x on the unit sphere, h = 0.1 / 0.05 |\n|---|---|---|---|---|---|---|---|\n");
-  for (int o = 0; o < 3; ++o) {
+  for (int o = 0; o < 4; ++o) {
     const Row& r = rows[o];
     std::printf("| %s | %.1e | %.1e | %lld | %.1e | %.3g | %.3g | %.3f / %.3f |\n", names[o],
                 r.constants, r.symmetry, static_cast<long long>(r.locality), r.positivity, r.psd,
@@ -219,12 +247,17 @@ TEST(LaplaceBeltramiProperties, MeasuredTable) {
   EXPECT_LE(rows[1].locality, 13);
   EXPECT_EQ(rows[2].locality, 5);
   EXPECT_GT(rows[0].locality, 100);
+  // A marching-cubes vertex (a surfel) lies in the 4 cubes of its pointels, with at most three
+  // neighbours in each (its two along the polygon, a diagonal or a fan centre): 13 entries.
+  EXPECT_LE(rows[3].locality, 13);
   // Convergence: only the heat operator's error falls, and it is the smallest at h = 0.05.
   EXPECT_LT(rows[0].error_fine, rows[0].error_coarse);
   EXPECT_GE(rows[1].error_fine, rows[1].error_coarse);
   EXPECT_GE(rows[2].error_fine, rows[2].error_coarse);
+  EXPECT_GE(rows[3].error_fine, rows[3].error_coarse);
   EXPECT_LT(rows[0].error_fine, rows[1].error_fine);
   EXPECT_LT(rows[0].error_fine, rows[2].error_fine);
+  EXPECT_LT(rows[0].error_fine, rows[3].error_fine);
 }
 
 } // namespace
