@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <numbers>
 #include <numeric>
 #include <string>
+#include <thread>
 #include <tuple>
 
 namespace zdg {
@@ -28,91 +30,125 @@ double heat_kernel_time(double h, double alpha) {
 namespace {
 using Cell = std::array<std::int64_t, 3>;
 
-// Four doubles (GCC and clang vector extensions: one AVX register, two SSE2 ones). The helpers
-// are inlined into pair_sums, so no 32-byte vector crosses a call (the -Wpsabi note of GCC and
-// clang about the AVX calling convention does not apply: CMakeLists.txt turns it off for this
-// file).
+// Eight floats and four doubles (GCC and clang vector extensions: one AVX register each, two
+// SSE2 ones). The helpers are inlined into block_sums, so no 32-byte vector crosses a call (the
+// -Wpsabi note of GCC and clang about the AVX calling convention does not apply:
+// CMakeLists.txt turns it off for this file).
+typedef float F8 __attribute__((vector_size(32)));
+typedef std::int32_t I8 __attribute__((vector_size(32)));
 typedef double V4 __attribute__((vector_size(32)));
-typedef std::int64_t I4 __attribute__((vector_size(32)));
 
-// exp(x) for x <= 0 lane by lane (arguments below -700 give exp(-700)): x log2(e) = n + f with
-// n = round (the 1.5 2^52 shifter), |f| <= 1/2, 2^n from the exponent bits, e^{f ln 2} by its
-// Taylor polynomial of degree 13 (remainder (ln2 / 2)^14 / 14! < 4e-18): a few ulps from
-// std::exp. No branch, no call: explicit vector code.
-[[gnu::always_inline]] inline V4 exp_nonpositive(V4 x) {
-  const V4 low = {-700.0, -700.0, -700.0, -700.0};
+// exp(x) in single precision for x <= 0 lane by lane (arguments below -87 give exp(-87), -inf
+// included): x = n ln 2 + r with n = round(x log2 e) (the 1.5 2^23 shifter), r by Cody and
+// Waite's two-part ln 2 (|r| <= ln 2 / 2), e^r by its Taylor polynomial of degree 7 (remainder
+// (ln 2 / 2)^8 / 8! < 6e-9), 2^n from the exponent bits (n >= -126): relative error below
+// 2e-7 (1.73e-7 the largest against std::exp over [-87, 0] in steps of 1e-6, measured). No
+// branch, no call.
+[[gnu::always_inline]] inline F8 expf_nonpositive(F8 x) {
+  const F8 low = {-87.f, -87.f, -87.f, -87.f, -87.f, -87.f, -87.f, -87.f};
   x = x < low ? low : x;
-  const V4 y = x * 1.4426950408889634;
-  const V4 k = y + 6755399441055744.0; // 1.5 * 2^52
-  const V4 n = k - 6755399441055744.0;
-  const V4 r = (y - n) * 0.6931471805599453;
-  // Estrin's scheme: the 14 terms in pairs, then pairs of pairs by r^2, r^4, r^8: four
-  // multiply-adds deep instead of Horner's thirteen, so that the iterations of the caller's
-  // loop overlap (Horner's chain of dependent FMAs held the loop at its latency).
-  const V4 r2 = r * r;
-  const V4 q0 = r + 1.0, q1 = r * (1.0 / 6.0) + 0.5, q2 = r * (1.0 / 120.0) + 1.0 / 24.0,
-           q3 = r * (1.0 / 5040.0) + 1.0 / 720.0, q4 = r * (1.0 / 362880.0) + 1.0 / 40320.0,
-           q5 = r * (1.0 / 39916800.0) + 1.0 / 3628800.0,
-           q6 = r * (1.0 / 6227020800.0) + 1.0 / 479001600.0;
-  const V4 r4 = r2 * r2;
-  const V4 s0 = r2 * q1 + q0, s1 = r2 * q3 + q2, s2 = r2 * q5 + q4;
-  const V4 t0 = r4 * s1 + s0, t1 = r4 * q6 + s2;
-  const V4 p = (r4 * r4) * t1 + t0;
-  // The low bits of k hold 2^51 + n: (n + 1023) << 52 is 2^n (n >= -1010 here).
-  I4 bits;
-  std::memcpy(&bits, &k, sizeof bits);
-  bits = (bits + 1023) << 52;
-  V4 scale;
-  std::memcpy(&scale, &bits, sizeof scale);
+  const F8 k = x * 1.44269504f + 12582912.f; // 1.5 * 2^23
+  const F8 n = k - 12582912.f;
+  const F8 r = (x - n * 0.693359375f) - n * -2.12194440e-4f;
+  const F8 r2 = r * r;
+  const F8 q0 = r + 1.f, q1 = r * (1.f / 6) + 0.5f, q2 = r * (1.f / 120) + 1.f / 24,
+           q3 = r * (1.f / 5040) + 1.f / 720;
+  const F8 p = (r2 * r2) * (r2 * q3 + q2) + (r2 * q1 + q0);
+  const I8 e = (__builtin_convertvector(n, I8) + 127) << 23;
+  F8 scale;
+  std::memcpy(&scale, &e, sizeof scale);
   return p * scale;
 }
 
-// For each of the G surfels s of a group (G <= 4): the sums over r in [b, e) of g(r) w(r) u(r)
-// and of g(r) w(r), g = exp(-|x_r - x_s|^2 / (4t)) where |x_r - x_s| <= rho, else 0 (r = s
-// included: its terms cancel in a1 - u(s) a0), four centres at a time (the tail padded with
-// far-away lanes whose mask is 0). The G surfels share each load of four centres (a fifth of
-// the loads of one surfel at a time). Each surfel's sums are those of its own loop, in order.
-// GCC on x86-64: an x86-64-v3 (AVX2 + FMA) clone next to the baseline SSE2 one, chosen at load
-// time by the CPU (an ifunc); the sums are the same up to rounding.
+// The kernel values of 8 pairs, as two vectors of doubles.
+[[gnu::always_inline]] inline void widen(F8 k, V4& lo, V4& hi) {
+  typedef double V8 __attribute__((vector_size(64)));
+  const V8 d = __builtin_convertvector(k, V8);
+  std::memcpy(&lo, &d, sizeof lo);
+  std::memcpy(&hi, reinterpret_cast<const char*>(&d) + sizeof lo, sizeof hi);
+}
+
 constexpr int kGroup = 4;
-// Positions per block of apply()'s schedule (a multiple of 4: the column sums are stored by
-// four).
+// Positions per block of apply()'s schedule (a multiple of 8: the column sums are stored by
+// eight).
 constexpr std::int64_t kBlock = 256;
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
-void pair_sums(int G, const double* x, const double* y, const double* z, const double* w,
-               const double* wu, std::int64_t b, std::int64_t e, const double* xs,
-               const double* ys, const double* zs, double r2max, double inv4t, double* a1,
-               double* a0) {
-  V4 s1[kGroup] = {}, s0[kGroup] = {};
-  const V4 zero = {0, 0, 0, 0};
-  for (std::int64_t r = b; r < e; r += 4) {
-    V4 vx, vy, vz, vw, vwu;
-    if (r + 4 <= e) {
+// The sums of a group of G surfels s (G <= kGroup) against the m centres r of a block, eight at
+// a time (the tail padded with far-away lanes whose kernel value is 0): for each s, a1 +=
+// sum g w(r) u(r) and a0 += sum g w(r), with g = exp(-|x_r - x_s|^2 / (4t)) where |x_r - x_s|
+// <= rho, else 0 (r = s included: its terms cancel in a1 - u(s) a0); with Both, also the
+// columns' sums c1[r] += g w(s) u(s), c0[r] += g w(s) (c1, c0: m rounded up to 8 entries), so
+// that one exp serves (s, r) and (r, s). The coordinates are floats relative to the block's
+// first centre (xs: the surfels' own, relative to the same point): |x - origin| <= 2 rho for
+// every pair within reach, so the single-precision differences keep about 2^-23 of rho. The
+// kernel values are single precision (relative error below 1e-6 where g >= 4e-6, i.e. within
+// the cut 5 sqrt(2t)); the sums are double precision, and a1 and a0 take the same products
+// (L 1 = 0 exactly). The G surfels share each load of eight centres.
+// GCC on x86-64: an x86-64-v3 (AVX2 + FMA) clone next to the baseline SSE2 one, chosen at load
+// time by the CPU (an ifunc); the sums are the same up to rounding.
+template <bool Both, int G>
+[[gnu::always_inline]] inline void
+block_sums_body(const float* x, const float* y, const float* z, const double* w, const double* wu,
+                std::int64_t m, const float* xs, const float* ys, const float* zs, const double* ws,
+                const double* wus, float r2max, float inv4t, double* a1, double* a0, double* c1,
+                double* c0) {
+  V4 s1[G] = {}, s0[G] = {};
+  const F8 fzero = {};
+  for (std::int64_t r = 0; r < m; r += 8) {
+    F8 vx, vy, vz;
+    V4 w_lo, w_hi, wu_lo, wu_hi;
+    if (r + 8 <= m) {
       std::memcpy(&vx, x + r, sizeof vx);
       std::memcpy(&vy, y + r, sizeof vy);
       std::memcpy(&vz, z + r, sizeof vz);
-      std::memcpy(&vw, w + r, sizeof vw);
-      std::memcpy(&vwu, wu + r, sizeof vwu);
+      std::memcpy(&w_lo, w + r, sizeof w_lo);
+      std::memcpy(&w_hi, w + r + 4, sizeof w_hi);
+      std::memcpy(&wu_lo, wu + r, sizeof wu_lo);
+      std::memcpy(&wu_hi, wu + r + 4, sizeof wu_hi);
     } else {
-      for (int i = 0; i < 4; ++i) {
-        const bool in = r + i < e;
-        vx[i] = in ? x[r + i] : 1e300; // outside the radius of every surfel: masked
+      for (int i = 0; i < 8; ++i) {
+        const bool in = r + i < m;
+        vx[i] = in ? x[r + i] : 1e18f; // outside the radius of every surfel: masked
         vy[i] = in ? y[r + i] : 0;
         vz[i] = in ? z[r + i] : 0;
-        vw[i] = in ? w[r + i] : 0;
-        vwu[i] = in ? wu[r + i] : 0;
+        const double wi = in ? w[r + i] : 0, wui = in ? wu[r + i] : 0;
+        if (i < 4) {
+          w_lo[i] = wi;
+          wu_lo[i] = wui;
+        } else {
+          w_hi[i - 4] = wi;
+          wu_hi[i - 4] = wui;
+        }
       }
     }
-    for (int g = 0; g < kGroup; ++g) {
-      if (g >= G) break;
-      const V4 dx = vx - xs[g], dy = vy - ys[g], dz = vz - zs[g];
-      const V4 d2 = dx * dx + dy * dy + dz * dz;
-      const V4 k = d2 <= r2max ? exp_nonpositive(-d2 * inv4t) : zero;
-      s1[g] += k * vwu;
-      s0[g] += k * vw;
+    V4 t1_lo = {}, t1_hi = {}, t0_lo = {}, t0_hi = {};
+#pragma GCC unroll 4
+    for (int g = 0; g < G; ++g) {
+      const F8 dx = vx - xs[g], dy = vy - ys[g], dz = vz - zs[g];
+      const F8 d2 = dx * dx + dy * dy + dz * dz;
+      const F8 k = d2 <= r2max ? expf_nonpositive(-d2 * inv4t) : fzero;
+      V4 k_lo, k_hi;
+      widen(k, k_lo, k_hi);
+      s1[g] += k_lo * wu_lo + k_hi * wu_hi;
+      s0[g] += k_lo * w_lo + k_hi * w_hi;
+      if constexpr (Both) {
+        t1_lo += k_lo * wus[g];
+        t1_hi += k_hi * wus[g];
+        t0_lo += k_lo * ws[g];
+        t0_hi += k_hi * ws[g];
+      }
+    }
+    if constexpr (Both) {
+      const auto add = [](double* c, V4 t) {
+        V4 o;
+        std::memcpy(&o, c, sizeof o);
+        o += t;
+        std::memcpy(c, &o, sizeof o);
+      };
+      add(c1 + r, t1_lo);
+      add(c1 + r + 4, t1_hi);
+      add(c0 + r, t0_lo);
+      add(c0 + r + 4, t0_hi);
     }
   }
   for (int g = 0; g < G; ++g) {
@@ -121,59 +157,42 @@ void pair_sums(int G, const double* x, const double* y, const double* z, const d
   }
 }
 
-// Both sides of the pairs between a group of G surfels s (G <= 4) and the centres r in [0, m) of
-// another block: the rows' sums as in pair_sums (into a1, a0) and the columns' sums
-// c1[r] += g w(s) u(s), c0[r] += g w(s) (c1, c0 hold m rounded up to 4 entries), so that every
-// exp serves both (s, r) and (r, s).
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
-void pair_sums_both(int G, const double* x, const double* y, const double* z, const double* w,
-                    const double* wu, std::int64_t m, const double* xs, const double* ys,
-                    const double* zs, const double* ws, const double* wus, double r2max,
-                    double inv4t, double* a1, double* a0, double* c1, double* c0) {
-  V4 s1[kGroup] = {}, s0[kGroup] = {};
-  const V4 zero = {0, 0, 0, 0};
-  for (std::int64_t r = 0; r < m; r += 4) {
-    V4 vx, vy, vz, vw, vwu;
-    if (r + 4 <= m) {
-      std::memcpy(&vx, x + r, sizeof vx);
-      std::memcpy(&vy, y + r, sizeof vy);
-      std::memcpy(&vz, z + r, sizeof vz);
-      std::memcpy(&vw, w + r, sizeof vw);
-      std::memcpy(&vwu, wu + r, sizeof vwu);
-    } else {
-      for (int i = 0; i < 4; ++i) {
-        const bool in = r + i < m;
-        vx[i] = in ? x[r + i] : 1e300; // outside the radius of every surfel: masked
-        vy[i] = in ? y[r + i] : 0;
-        vz[i] = in ? z[r + i] : 0;
-        vw[i] = in ? w[r + i] : 0;
-        vwu[i] = in ? wu[r + i] : 0;
-      }
-    }
-    V4 t1 = zero, t0 = zero;
-    for (int g = 0; g < kGroup; ++g) {
-      if (g >= G) break;
-      const V4 dx = vx - xs[g], dy = vy - ys[g], dz = vz - zs[g];
-      const V4 d2 = dx * dx + dy * dy + dz * dz;
-      const V4 k = d2 <= r2max ? exp_nonpositive(-d2 * inv4t) : zero;
-      s1[g] += k * vwu;
-      s0[g] += k * vw;
-      t1 += k * wus[g];
-      t0 += k * ws[g];
-    }
-    V4 o1, o0;
-    std::memcpy(&o1, c1 + r, sizeof o1);
-    std::memcpy(&o0, c0 + r, sizeof o0);
-    o1 += t1;
-    o0 += t0;
-    std::memcpy(c1 + r, &o1, sizeof o1);
-    std::memcpy(c0 + r, &o0, sizeof o0);
+void pair_sums(int G, const float* x, const float* y, const float* z, const double* w,
+               const double* wu, std::int64_t m, const float* xs, const float* ys,
+               const float* zs, float r2max, float inv4t, double* a1, double* a0) {
+  switch (G) {
+#define ZDG_CASE(N)                                                                                \
+  case N:                                                                                          \
+    return block_sums_body<false, N>(x, y, z, w, wu, m, xs, ys, zs, nullptr, nullptr, r2max,       \
+                                     inv4t, a1, a0, nullptr, nullptr);
+    ZDG_CASE(1)
+    ZDG_CASE(2)
+    ZDG_CASE(3)
+    ZDG_CASE(4)
+#undef ZDG_CASE
   }
-  for (int g = 0; g < G; ++g) {
-    a1[g] += (s1[g][0] + s1[g][1]) + (s1[g][2] + s1[g][3]);
-    a0[g] += (s0[g][0] + s0[g][1]) + (s0[g][2] + s0[g][3]);
+}
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
+void pair_sums_both(int G, const float* x, const float* y, const float* z, const double* w,
+                    const double* wu, std::int64_t m, const float* xs, const float* ys,
+                    const float* zs, const double* ws, const double* wus, float r2max,
+                    float inv4t, double* a1, double* a0, double* c1, double* c0) {
+  switch (G) {
+#define ZDG_CASE(N)                                                                                \
+  case N:                                                                                          \
+    return block_sums_body<true, N>(x, y, z, w, wu, m, xs, ys, zs, ws, wus, r2max, inv4t, a1, a0,  \
+                                    c1, c0);
+    ZDG_CASE(1)
+    ZDG_CASE(2)
+    ZDG_CASE(3)
+    ZDG_CASE(4)
+#undef ZDG_CASE
   }
 }
 
@@ -256,6 +275,18 @@ HeatLaplaceBeltrami::HeatLaplaceBeltrami(std::span<const Point3<double>> centres
   first_block[nc] = std::int64_t(block_start_.size());
   const auto blocks = std::size_t(first_block[nc]);
   block_start_.push_back(std::int64_t(n));
+  // Single-precision coordinates relative to the first centre of their block.
+  xf_.resize(n);
+  yf_.resize(n);
+  zf_.resize(n);
+  for (std::size_t B = 0; B < blocks; ++B) {
+    const auto o = std::size_t(block_start_[B]);
+    for (auto k = o; k < std::size_t(block_start_[B + 1]); ++k) {
+      xf_[k] = float(x_[k] - x_[o]);
+      yf_[k] = float(y_[k] - y_[o]);
+      zf_[k] = float(z_[k] - z_[o]);
+    }
+  }
   // The pairs I < J (blocks are sorted by cell: a neighbour cell after the block's own holds
   // only later blocks), then a greedy colouring of the pairs in that order: the smallest round
   // in which neither block is used yet (at most 2 D - 1 rounds for D pairs per block).
@@ -346,29 +377,72 @@ std::vector<double> HeatLaplaceBeltrami::apply(std::span<const double> u) const 
       s += G;
     }
   };
-  parallel_for(blocks, threads_, [&](std::int64_t I) {
-    const auto b = block_start_[std::size_t(I)], e = block_start_[std::size_t(I) + 1];
+  const auto r2f = float(r2max), inv4tf = float(inv4t);
+  // The group's coordinates relative to the first centre of block J, in single precision.
+  auto relative = [&](std::int64_t s, int G, std::int64_t J, float* xs, float* ys, float* zs) {
+    const auto o = std::size_t(block_start_[std::size_t(J)]);
+    for (int g = 0; g < G; ++g) {
+      xs[g] = float(x_[std::size_t(s + g)] - x_[o]);
+      ys[g] = float(y_[std::size_t(s + g)] - y_[o]);
+      zs[g] = float(z_[std::size_t(s + g)] - z_[o]);
+    }
+  };
+  auto within_block = [&](std::int64_t I) {
+    const auto b = std::size_t(block_start_[std::size_t(I)]);
+    const auto m = block_start_[std::size_t(I) + 1] - block_start_[std::size_t(I)];
     groups(I, [&](std::int64_t s, int G) {
-      pair_sums(G, x_.data(), y_.data(), z_.data(), w_.data(), wu.data(), b, e, x_.data() + s,
-                y_.data() + s, z_.data() + s, r2max, inv4t, a1.data() + s, a0.data() + s);
+      float xs[kGroup], ys[kGroup], zs[kGroup];
+      relative(s, G, I, xs, ys, zs);
+      pair_sums(G, xf_.data() + b, yf_.data() + b, zf_.data() + b, w_.data() + b, wu.data() + b, m,
+                xs, ys, zs, r2f, inv4tf, a1.data() + s, a0.data() + s);
     });
-  });
-  for (std::size_t k = 0; k + 1 < round_start_.size(); ++k)
-    parallel_for(round_start_[k + 1] - round_start_[k], threads_, [&](std::int64_t p) {
-      const auto [I, J] = pairs_[std::size_t(round_start_[k] + p)];
-      const auto b = std::size_t(block_start_[std::size_t(J)]);
-      const auto m = block_start_[std::size_t(J) + 1] - block_start_[std::size_t(J)];
-      double c1[kBlock] = {}, c0[kBlock] = {};
-      groups(I, [&](std::int64_t s, int G) {
-        pair_sums_both(G, x_.data() + b, y_.data() + b, z_.data() + b, w_.data() + b, wu.data() + b,
-                       m, x_.data() + s, y_.data() + s, z_.data() + s, w_.data() + s, wu.data() + s,
-                       r2max, inv4t, a1.data() + s, a0.data() + s, c1, c0);
-      });
-      for (std::int64_t r = 0; r < m; ++r) {
-        a1[b + std::size_t(r)] += c1[r];
-        a0[b + std::size_t(r)] += c0[r];
+  };
+  auto between_blocks = [&](std::int64_t I, std::int64_t J) {
+    const auto b = std::size_t(block_start_[std::size_t(J)]);
+    const auto m = block_start_[std::size_t(J) + 1] - block_start_[std::size_t(J)];
+    double c1[kBlock] = {}, c0[kBlock] = {};
+    groups(I, [&](std::int64_t s, int G) {
+      float xs[kGroup], ys[kGroup], zs[kGroup];
+      relative(s, G, J, xs, ys, zs);
+      pair_sums_both(G, xf_.data() + b, yf_.data() + b, zf_.data() + b, w_.data() + b,
+                     wu.data() + b, m, xs, ys, zs, w_.data() + s, wu.data() + s, r2f, inv4tf,
+                     a1.data() + s, a0.data() + s, c1, c0);
+    });
+    for (std::int64_t r = 0; r < m; ++r) {
+      a1[b + std::size_t(r)] += c1[r];
+      a0[b + std::size_t(r)] += c0[r];
+    }
+  };
+  // Items: the blocks (round 0), then pairs_ (rounds 1, 2, ...), handed out in that order from
+  // one counter to workers started once; an item starts when every item of the earlier rounds
+  // is finished (`finished` counts them: a round's items are all handed out before the next
+  // round's, and each is finished by the worker that took it, so the wait always ends).
+  const auto items = blocks + std::int64_t(pairs_.size());
+  std::atomic<std::int64_t> next{0}, finished{0};
+  auto work = [&] {
+    for (;;) {
+      const auto i = next.fetch_add(1, std::memory_order_relaxed);
+      if (i >= items) return;
+      std::int64_t begin = 0; // the first item of i's round
+      if (i >= blocks) {
+        const auto p = i - blocks;
+        const auto k = std::upper_bound(round_start_.begin(), round_start_.end(), p) -
+                       round_start_.begin() - 1;
+        begin = blocks + round_start_[std::size_t(k)];
       }
-    });
+      while (finished.load(std::memory_order_acquire) < begin) std::this_thread::yield();
+      if (i < blocks)
+        within_block(i);
+      else
+        between_blocks(pairs_[std::size_t(i - blocks)][0], pairs_[std::size_t(i - blocks)][1]);
+      finished.fetch_add(1, std::memory_order_release);
+    }
+  };
+  const unsigned workers = worker_count(threads_, items);
+  if (workers <= 1)
+    work();
+  else
+    detail::run_on_workers(workers, work);
   for (std::size_t k = 0; k < n; ++k) out[std::size_t(order_[k])] = scale * (a1[k] - us[k] * a0[k]);
   return out;
 }

@@ -105,6 +105,27 @@ TEST(HeatLaplaceBeltrami, LinearFunctionOnTheSphere) {
   EXPECT_LT(errors[1], 0.45);
 }
 
+// apply() against the matrix's row-by-row product (std::exp in double precision): apply()'s
+// kernel values are single precision, within a relative 1e-5 of the matrix entries (the
+// header's bound), so row i may differ by 1e-5 sum_j |L_ij| |u_j - u_i| -- the pairs at the
+// cut rho (kernel value exp(-12.5) = 4e-6 of the largest) may fall on either side of it, which
+// the same slack covers. Returns the largest ratio of the difference to that sum.
+double apply_against_matrix(const std::vector<double>& a, const SparseMatrix& m,
+                            const std::vector<double>& u) {
+  const auto b = m.multiply(u);
+  double worst = 0;
+  for (std::int64_t i = 0; i < m.rows; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    double spread = 0;
+    for (auto p = m.row_start[k]; p < m.row_start[k + 1]; ++p)
+      spread += std::abs(m.value[static_cast<std::size_t>(p)]) *
+                std::abs(u[static_cast<std::size_t>(m.column[static_cast<std::size_t>(p)])] - u[k]);
+    const double d = std::abs(a[k] - b[k]);
+    worst = std::max(worst, spread > 0 ? d / spread : (d == 0 ? 0.0 : HUGE_VAL));
+  }
+  return worst;
+}
+
 // The property table of Caissard et al. (Table 1), measured: W L symmetric (W = diag(w)),
 // L 1 = 0, off-diagonal entries >= 0 where w > 0, so -W L is positive semi-definite; the
 // matrix and the matrix-free product agree.
@@ -134,12 +155,10 @@ TEST(HeatLaplaceBeltrami, MatrixIsSymmetricForTheWeightsAndNegativeSemiDefinite)
   }
   std::vector<double> u;
   for (const auto& p : s.complex.centres) u.push_back(std::sin(3 * p.x) + p.y * p.z);
-  const auto a = L.apply(u), b = m.multiply(u);
+  const auto a = L.apply(u);
+  EXPECT_LT(apply_against_matrix(a, m, u), 1e-5);
   double quad = 0;
-  for (std::size_t i = 0; i < u.size(); ++i) {
-    EXPECT_NEAR(a[i], b[i], 1e-9 * scale);
-    quad += u[i] * w[i] * a[i];
-  }
+  for (std::size_t i = 0; i < u.size(); ++i) quad += u[i] * w[i] * a[i];
   EXPECT_LE(quad, 0.0); // u^T W L u <= 0
   EXPECT_THROW(heat_kernel_time(0.1, 1.0), InvalidArgument);
   EXPECT_THROW(heat_kernel_time(0.1, 0.0), InvalidArgument);
@@ -148,7 +167,8 @@ TEST(HeatLaplaceBeltrami, MatrixIsSymmetricForTheWeightsAndNegativeSemiDefinite)
 
 // apply() evaluates each pair once for both of its rows, by rounds of pairs of blocks (many
 // cells and blocks here: t = 4 h^2 on 7,000 surfels): the same bits for any number of threads,
-// constants annihilated exactly, and the row-by-row matrix product to rounding.
+// constants annihilated exactly, and the row-by-row matrix product within the single-precision
+// kernel's bound.
 TEST(HeatLaplaceBeltrami, SymmetricScheduleIsDeterministicAndAgreesWithTheMatrix) {
   const DigitalSphere s = digital_sphere(0.05, false);
   std::vector<double> w;
@@ -166,12 +186,11 @@ TEST(HeatLaplaceBeltrami, SymmetricScheduleIsDeterministicAndAgreesWithTheMatrix
     for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(a[i], b[i]) << "surfel " << i;
     for (const double v : L.apply(one)) ASSERT_EQ(v, 0.0);
   }
-  const SparseMatrix m = L1.matrix();
-  const auto b = m.multiply(u);
-  double scale = 0;
-  for (const double v : b) scale = std::max(scale, std::abs(v));
   ASSERT_GT(L1.pair_count(), std::int64_t(50) * std::int64_t(u.size()));
-  for (std::size_t i = 0; i < u.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-12 * scale) << i;
+  const double worst = apply_against_matrix(a, L1.matrix(), u);
+  std::printf("apply() against the matrix: largest difference %.2e of sum |L_ij| |u_j - u_i|\n",
+              worst);
+  EXPECT_LT(worst, 1e-5);
 }
 
 // Pinkall-Polthier: the cotangent stiffness of a planar triangulation annihilates linear
