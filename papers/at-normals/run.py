@@ -11,7 +11,8 @@ the sharp features (within the II radius of an edge, where the II kernel straddl
 and away from them.
 
     /usr/bin/python3 papers/at-normals/run.py -o out/at-normals [--quick] [--zdg build/bin/zdg]
-        [--radius-voxels 3 | --radius-voxels 0 --k 1] [--at-alpha 0.3] [--at-lambda L]
+        [--radius-voxels 3 | --radius-voxels 0 --k 1] [--at-alpha 1.0 | --at-length L]
+        [--at-lambda L]
 
 Outputs in the folder: results.csv (shape, N, h, band, surfels, II and AT mean and max angles
 in degrees, seconds), at-normals.png / .svg (mean angle against h, II dashed, AT solid, one
@@ -214,22 +215,34 @@ def main():
     ap.add_argument("--radius-voxels", type=float, default=3,
                     help="a fixed II radius in voxels (default 3, the papers' setting; 0: the "
                          "convergent law R = k h^{1/3})")
-    ap.add_argument("--at-alpha", default="0.3",
-                    help="zdg surface --at-alpha (default 0.3; zdg's own default is 0.1)")
+    ap.add_argument("--at-alpha", default="1.0",
+                    help="zdg surface --at-alpha (default 1.0; zdg's own default is 0.1)")
     ap.add_argument("--at-lambda", help="zdg surface --at-lambda (default: zdg's)")
+    ap.add_argument("--at-length", type=float,
+                    help="instead of --at-alpha: AT's smoothing length L in the unit frame, the "
+                         "same at every h (alpha = 1 / (L N)^2 per cell: 1/sqrt(alpha) = L N "
+                         "cells)")
     args = ap.parse_args()
     ns = [8, 12, 16] if args.quick else [8, 12, 16, 24, 32]
     at_options = []
-    if args.at_alpha:
+    if args.at_length:
+        if not args.at_length > 0:
+            sys.exit("--at-length must be positive")
+    elif args.at_alpha:
         at_options += ["--at-alpha", args.at_alpha]
     if args.at_lambda:
         at_options += ["--at-lambda", args.at_lambda]
+
+    def options(n):
+        if not args.at_length:
+            return at_options
+        return at_options + ["--at-alpha", f"{1.0 / (args.at_length * n) ** 2:.6g}"]
     os.makedirs(args.output, exist_ok=True)
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for name, inside, truth, sharp in SHAPES:
             for n in ns:
-                got = run(args.zdg, name, inside, truth, n, args.k, args.radius_voxels, at_options,
+                got = run(args.zdg, name, inside, truth, n, args.k, args.radius_voxels, options(n),
                           tmp)
                 for r in got:
                     print(f"{name:24s} N = {n:3d} {r['band']:5s} {r['surfels']:7d} surfels: "
@@ -256,6 +269,7 @@ def main():
                            "pass": ok})
     with open(os.path.join(args.output, "summary.json"), "w") as f:
         json.dump({"k": args.k, "radius_voxels": args.radius_voxels, "at_options": at_options,
+                   "at_length": args.at_length,
                    "N": ns, "checks": checks, "rows": rows}, f, indent=1)
     for c in checks:
         print(f"check {c['shape']:24s} {c['band']:5s} {c['claim']}: "
