@@ -11,7 +11,7 @@ the sharp features (within the II radius of an edge, where the II kernel straddl
 and away from them.
 
     /usr/bin/python3 papers/at-normals/run.py -o out/at-normals [--quick] [--zdg build/bin/zdg]
-        [--radius-voxels 3 | --radius-voxels 0 --k 1] [--at-alpha 1.0 | --at-length L]
+        [--radius-voxels 3 | --radius-voxels 0 --k 1] [--at-alpha 2.0 | --at-length L]
         [--at-lambda L]
 
 Outputs in the folder: results.csv (shape, N, h, band, surfels, II and AT mean and max angles
@@ -215,8 +215,8 @@ def main():
     ap.add_argument("--radius-voxels", type=float, default=3,
                     help="a fixed II radius in voxels (default 3, the papers' setting; 0: the "
                          "convergent law R = k h^{1/3})")
-    ap.add_argument("--at-alpha", default="1.0",
-                    help="zdg surface --at-alpha (default 1.0; zdg's own default is 0.1)")
+    ap.add_argument("--at-alpha", default="2.0",
+                    help="zdg surface --at-alpha (default 2.0; zdg's own default is 0.1)")
     ap.add_argument("--at-lambda", help="zdg surface --at-lambda (default: zdg's)")
     ap.add_argument("--at-length", type=float,
                     help="instead of --at-alpha: AT's smoothing length L in the unit frame, the "
