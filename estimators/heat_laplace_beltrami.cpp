@@ -79,11 +79,11 @@ constexpr std::int64_t kBlock = 256;
 // <= rho, else 0 (r = s included: its terms cancel in a1 - u(s) a0); with Both, also the
 // columns' sums c1[r] += g w(s) u(s), c0[r] += g w(s) (c1, c0: m rounded up to 8 entries), so
 // that one exp serves (s, r) and (r, s). The coordinates are floats relative to the block's
-// first centre (xs: the surfels' own, relative to the same point): |x - origin| <= 2 rho for
-// every pair within reach, so the single-precision differences keep about 2^-23 of rho. The
-// kernel values are single precision (relative error below 1e-6 where g >= 4e-6, i.e. within
-// the cut 5 sqrt(2t)); the sums are double precision, and a1 and a0 take the same products
-// (L 1 = 0 exactly). The G surfels share each load of eight centres.
+// first centre, in units of rho (xs: the surfels' own, relative to the same point; r2max = 1):
+// |x - origin| <= 2 sqrt(3) rho for every pair within reach, so the single-precision
+// differences keep about 2^-23 of rho. The kernel values are single precision (relative error
+// below 2.4e-7 + 4e-7 c^2: the header); the sums are double precision, and a1 and a0 take the
+// same products (L 1 = 0 exactly). The G surfels share each load of eight centres.
 // GCC on x86-64: an x86-64-v3 (AVX2 + FMA) clone next to the baseline SSE2 one, chosen at load
 // time by the CPU (an ifunc); the sums are the same up to rounding.
 template <bool Both, int G>
@@ -275,16 +275,18 @@ HeatLaplaceBeltrami::HeatLaplaceBeltrami(std::span<const Point3<double>> centres
   first_block[nc] = std::int64_t(block_start_.size());
   const auto blocks = std::size_t(first_block[nc]);
   block_start_.push_back(std::int64_t(n));
-  // Single-precision coordinates relative to the first centre of their block.
+  // Single-precision coordinates relative to the first centre of their block, in units of rho
+  // (every quantity of the float kernel is then of order 1, whatever the scale of the input).
   xf_.resize(n);
   yf_.resize(n);
   zf_.resize(n);
+  const double per_rho = 1 / rho_;
   for (std::size_t B = 0; B < blocks; ++B) {
     const auto o = std::size_t(block_start_[B]);
     for (auto k = o; k < std::size_t(block_start_[B + 1]); ++k) {
-      xf_[k] = float(x_[k] - x_[o]);
-      yf_[k] = float(y_[k] - y_[o]);
-      zf_[k] = float(z_[k] - z_[o]);
+      xf_[k] = float((x_[k] - x_[o]) * per_rho);
+      yf_[k] = float((y_[k] - y_[o]) * per_rho);
+      zf_[k] = float((z_[k] - z_[o]) * per_rho);
     }
   }
   // The pairs I < J (blocks are sorted by cell: a neighbour cell after the block's own holds
@@ -377,14 +379,16 @@ std::vector<double> HeatLaplaceBeltrami::apply(std::span<const double> u) const 
       s += G;
     }
   };
-  const auto r2f = float(r2max), inv4tf = float(inv4t);
+  // In units of rho: |x_r - x_s|^2 / rho^2 <= 1 within reach, exp(-d^2 rho^2 / (4t)).
+  const float r2f = 1, inv4tf = float(r2max * inv4t);
+  const double per_rho = 1 / rho_;
   // The group's coordinates relative to the first centre of block J, in single precision.
   auto relative = [&](std::int64_t s, int G, std::int64_t J, float* xs, float* ys, float* zs) {
     const auto o = std::size_t(block_start_[std::size_t(J)]);
     for (int g = 0; g < G; ++g) {
-      xs[g] = float(x_[std::size_t(s + g)] - x_[o]);
-      ys[g] = float(y_[std::size_t(s + g)] - y_[o]);
-      zs[g] = float(z_[std::size_t(s + g)] - z_[o]);
+      xs[g] = float((x_[std::size_t(s + g)] - x_[o]) * per_rho);
+      ys[g] = float((y_[std::size_t(s + g)] - y_[o]) * per_rho);
+      zs[g] = float((z_[std::size_t(s + g)] - z_[o]) * per_rho);
     }
   };
   auto within_block = [&](std::int64_t I) {

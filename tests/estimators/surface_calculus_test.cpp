@@ -193,6 +193,29 @@ TEST(HeatLaplaceBeltrami, SymmetricScheduleIsDeterministicAndAgreesWithTheMatrix
   EXPECT_LT(worst, 1e-5);
 }
 
+// Units: scaling the centres by s, the weights (areas) by s^2 and t by s^2 divides L by s^2,
+// also far outside single precision's range (s = 1e-30: t = 1e-62; s = 1e30) -- apply()'s
+// float kernel works in units of rho, so no exponent or coordinate leaves its range.
+TEST(HeatLaplaceBeltrami, ScalesAsOneOverLengthSquared) {
+  const DigitalSphere sphere = digital_sphere(0.1, false);
+  std::vector<double> w(sphere.complex.areas.begin(), sphere.complex.areas.end()), u;
+  for (const auto& p : sphere.complex.centres) u.push_back(std::sin(2 * p.x) + p.y * p.z);
+  const double t = 4 * 0.1 * 0.1;
+  const auto base = HeatLaplaceBeltrami(sphere.complex.centres, w, t, 5.0, 2).apply(u);
+  double top = 0;
+  for (const double v : base) top = std::max(top, std::abs(v));
+  ASSERT_GT(top, 0.1);
+  for (const double s : {1e-30, 1e30}) {
+    std::vector<Point3<double>> c;
+    std::vector<double> ws;
+    for (const auto& p : sphere.complex.centres) c.push_back({p.x * s, p.y * s, p.z * s});
+    for (const double a : w) ws.push_back(a * s * s);
+    const auto scaled = HeatLaplaceBeltrami(c, ws, t * s * s, 5.0, 2).apply(u);
+    for (std::size_t i = 0; i < u.size(); ++i)
+      ASSERT_NEAR(scaled[i] * s * s, base[i], 1e-6 * top) << "s = " << s << ", surfel " << i;
+  }
+}
+
 // Pinkall-Polthier: the cotangent stiffness of a planar triangulation annihilates linear
 // functions at interior vertices (linear precision); S is symmetric with zero row sums.
 TEST(CotanLaplacian, LinearPrecisionOnAPlanarPatchAndSymmetry) {
