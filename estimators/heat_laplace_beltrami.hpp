@@ -33,19 +33,19 @@
 // Precision of apply(): the kernel values are computed in single precision (8 lanes of explicit
 // vector code, an AVX2+FMA clone chosen at load time on x86-64 with GCC: an exp by Cody-Waite
 // reduction and a degree-7 polynomial, relative error below 2e-7; the coordinates as floats
-// relative to the first centre of their block, so that the rounding is relative to rho, not to the
-// coordinates' magnitude), within a relative 2.4e-7 + 4e-7 c^2 of the exact value (1e-5 at the
-// default c = 5, reached only near the cut, where the value is exp(-c^2/2) of the largest);
-// the sums are double precision, and the sums with u and with 1 take the same products, so L 1
-// = 0 exactly. Row i of apply() is therefore within 1e-5 sum_j |L_ij| |u_j - u_i| of the exact
-// operator (tested against matrix(), which uses std::exp in double precision: 2.6e-6 measured);
-// the estimator's own error (O(t) bias, normals) is orders of magnitude larger.
-// Measured on the 2-core development machine (bench/calculus_bench.cpp, 2 threads, median of 7):
-// sphere1 at h = 0.025, 30,078 surfels, t = h^0.4 so that the kernel covers the whole sphere
-// (9.0e8 pairs): 0.43 s (1.25 s with one double-precision exp per ordered pair); 10^6 surfels
-// with t = 4 h^2 (9.9e8 pairs): 1.7-2.0 s (5.0 s). matrix() stores the same n k entries (12 bytes
-// each: int64 column, double) as a SparseMatrix. Widths: doubles (floats for the kernel
-// values of apply()); indices int64.
+// relative to the first centre of their block, in units of rho, so that the rounding is relative
+// to rho and no float leaves its range, whatever the coordinates' magnitude), within a
+// relative 2.4e-7 + 4e-7 c^2 of the exact value (1e-5 at the default c = 5, reached only near the
+// cut, where the value is exp(-c^2/2) of the largest); the sums are double precision, and the sums
+// with u and with 1 take the same products, so L 1 = 0 exactly. Row i of apply() is therefore
+// within 1e-5 sum_j |L_ij| |u_j - u_i| of the exact operator (tested against matrix(), which uses
+// std::exp in double precision: 1.9e-6 measured); the estimator's own error (O(t) bias, normals) is
+// orders of magnitude larger. Measured on the 2-core development machine (bench/calculus_bench.cpp,
+// 2 threads, median of 7): sphere1 at h = 0.025, 30,078 surfels, t = h^0.4 so that the kernel
+// covers the whole sphere (9.0e8 pairs): 0.43 s (1.25 s with one double-precision exp per ordered
+// pair); 10^6 surfels with t = 4 h^2 (9.9e8 pairs): 1.7-2.0 s (5.0 s). matrix() stores the same n k
+// entries (12 bytes each: int64 column, double) as a SparseMatrix. Widths: doubles (floats for the
+// kernel values of apply()); indices int64.
 #pragma once
 
 #include <zdg/arith/point.hpp>
