@@ -2,10 +2,10 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/parallel_rounds.hpp>
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -13,7 +13,6 @@
 #include <numbers>
 #include <numeric>
 #include <string>
-#include <thread>
 #include <tuple>
 
 namespace zdg {
@@ -79,7 +78,8 @@ constexpr std::int64_t kBlock = 256;
 // <= rho, else 0 (r = s included: its terms cancel in a1 - u(s) a0); with Both, also the
 // columns' sums c1[r] += g w(s) u(s), c0[r] += g w(s) (c1, c0: m rounded up to 8 entries), so
 // that one exp serves (s, r) and (r, s). The coordinates are floats relative to the block's
-// first centre, in units of rho (xs: the surfels' own, relative to the same point; r2max = 1):
+// first centre, in units of rho (xs: the surfels' own, relative to the same point; the reach
+// is 1, inv4t = rho^2 / (4t)):
 // |x - origin| <= 2 sqrt(3) rho for every pair within reach, so the single-precision
 // differences keep about 2^-23 of rho. The kernel values are single precision (relative error
 // below 2.4e-7 + 4e-7 c^2: the header); the sums are double precision, and a1 and a0 take the
@@ -90,8 +90,7 @@ template <bool Both, int G>
 [[gnu::always_inline]] inline void
 block_sums_body(const float* x, const float* y, const float* z, const double* w, const double* wu,
                 std::int64_t m, const float* xs, const float* ys, const float* zs, const double* ws,
-                const double* wus, float r2max, float inv4t, double* a1, double* a0, double* c1,
-                double* c0) {
+                const double* wus, float inv4t, double* a1, double* a0, double* c1, double* c0) {
   V4 s1[G] = {}, s0[G] = {};
   const F8 fzero = {};
   for (std::int64_t r = 0; r < m; r += 8) {
@@ -126,7 +125,7 @@ block_sums_body(const float* x, const float* y, const float* z, const double* w,
     for (int g = 0; g < G; ++g) {
       const F8 dx = vx - xs[g], dy = vy - ys[g], dz = vz - zs[g];
       const F8 d2 = dx * dx + dy * dy + dz * dz;
-      const F8 k = d2 <= r2max ? expf_nonpositive(-d2 * inv4t) : fzero;
+      const F8 k = d2 <= 1.f ? expf_nonpositive(-d2 * inv4t) : fzero;
       V4 k_lo, k_hi;
       widen(k, k_lo, k_hi);
       s1[g] += k_lo * wu_lo + k_hi * wu_hi;
@@ -157,44 +156,30 @@ block_sums_body(const float* x, const float* y, const float* z, const double* w,
   }
 }
 
+// block_sums_body for G surfels, the columns' sums too when c1 is not null.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
 __attribute__((target_clones("arch=x86-64-v3", "default")))
 #endif
-void pair_sums(int G, const float* x, const float* y, const float* z, const double* w,
-               const double* wu, std::int64_t m, const float* xs, const float* ys,
-               const float* zs, float r2max, float inv4t, double* a1, double* a0) {
-  switch (G) {
-#define ZDG_CASE(N)                                                                                \
-  case N:                                                                                          \
-    return block_sums_body<false, N>(x, y, z, w, wu, m, xs, ys, zs, nullptr, nullptr, r2max,       \
-                                     inv4t, a1, a0, nullptr, nullptr);
-    ZDG_CASE(1)
-    ZDG_CASE(2)
-    ZDG_CASE(3)
-    ZDG_CASE(4)
+void block_sums(int G, const float* x, const float* y, const float* z, const double* w,
+                const double* wu, std::int64_t m, const float* xs, const float* ys, const float* zs,
+                const double* ws, const double* wus, float inv4t, double* a1, double* a0,
+                double* c1, double* c0) {
+  switch (G + (c1 != nullptr ? kGroup : 0)) {
+#define ZDG_CASE(BOTH, N)                                                                          \
+  case N + (BOTH ? kGroup : 0):                                                                    \
+    return block_sums_body<BOTH, N>(x, y, z, w, wu, m, xs, ys, zs, ws, wus, inv4t, a1, a0, c1, c0);
+    ZDG_CASE(false, 1)
+    ZDG_CASE(false, 2)
+    ZDG_CASE(false, 3)
+    ZDG_CASE(false, 4)
+    ZDG_CASE(true, 1)
+    ZDG_CASE(true, 2)
+    ZDG_CASE(true, 3)
+    ZDG_CASE(true, 4)
 #undef ZDG_CASE
   }
 }
-
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
-void pair_sums_both(int G, const float* x, const float* y, const float* z, const double* w,
-                    const double* wu, std::int64_t m, const float* xs, const float* ys,
-                    const float* zs, const double* ws, const double* wus, float r2max,
-                    float inv4t, double* a1, double* a0, double* c1, double* c0) {
-  switch (G) {
-#define ZDG_CASE(N)                                                                                \
-  case N:                                                                                          \
-    return block_sums_body<true, N>(x, y, z, w, wu, m, xs, ys, zs, ws, wus, r2max, inv4t, a1, a0,  \
-                                    c1, c0);
-    ZDG_CASE(1)
-    ZDG_CASE(2)
-    ZDG_CASE(3)
-    ZDG_CASE(4)
-#undef ZDG_CASE
-  }
-}
+static_assert(kGroup == 4, "block_sums instantiates G = 1 .. 4");
 
 } // namespace
 
@@ -324,11 +309,14 @@ HeatLaplaceBeltrami::HeatLaplaceBeltrami(std::span<const Point3<double>> centres
     round[p] = std::int64_t(word) * 64 + bit;
     rounds = std::max(rounds, round[p] + 1);
   }
-  round_start_.assign(std::size_t(rounds) + 1, 0);
-  for (const auto k : round) ++round_start_[std::size_t(k) + 1];
+  // Round 0: each block with itself (disjoint), then the coloured rounds.
+  round_start_.assign(std::size_t(rounds) + 2, 0);
+  round_start_[1] = std::int64_t(blocks);
+  for (const auto k : round) ++round_start_[std::size_t(k) + 2];
   std::partial_sum(round_start_.begin(), round_start_.end(), round_start_.begin());
-  pairs_.resize(pairs.size());
-  std::vector<std::int64_t> fill(round_start_.begin(), round_start_.end() - 1);
+  pairs_.resize(blocks + pairs.size());
+  for (std::size_t B = 0; B < blocks; ++B) pairs_[B] = {std::int64_t(B), std::int64_t(B)};
+  std::vector<std::int64_t> fill(round_start_.begin() + 1, round_start_.end() - 1);
   for (std::size_t p = 0; p < pairs.size(); ++p)
     pairs_[std::size_t(fill[std::size_t(round[p])]++)] = pairs[p];
 }
@@ -366,87 +354,39 @@ std::vector<double> HeatLaplaceBeltrami::apply(std::span<const double> u) const 
     wu[k] = us[k] * w_[k];
   }
   const double scale = 1 / (4 * std::numbers::pi * t_ * t_);
-  const double r2max = rho_ * rho_, inv4t = 1 / (4 * t_);
-  // Every pair once: the sums of (s, r) and of (r, s) share their exp. First the pairs within
-  // each block (rows only: both orders are in the block, s = r included: its terms cancel in
-  // a1 - u(s) a0), then the rounds of pairs of blocks, each block's sums added in round order.
+  // Every pair once: the sums of (s, r) and of (r, s) share their exp. Round 0 pairs each block
+  // with itself (rows only: both orders are in the block, s = r included: its terms cancel in
+  // a1 - u(s) a0), the later rounds pairs of distinct blocks, each block's sums added in round
+  // order. In units of rho: |x_r - x_s|^2 / rho^2 <= 1 within reach, exp(-d^2 rho^2 / (4t)).
   std::vector<double> a1(n, 0.0), a0(n, 0.0);
-  const auto blocks = std::int64_t(block_start_.size()) - 1;
-  auto groups = [&](std::int64_t I, auto&& fn) {
-    for (auto s = block_start_[std::size_t(I)]; s < block_start_[std::size_t(I) + 1];) {
-      const auto G = int(std::min<std::int64_t>(kGroup, block_start_[std::size_t(I) + 1] - s));
-      fn(s, G);
-      s += G;
-    }
-  };
-  // In units of rho: |x_r - x_s|^2 / rho^2 <= 1 within reach, exp(-d^2 rho^2 / (4t)).
-  const float r2f = 1, inv4tf = float(r2max * inv4t);
+  const auto inv4t = float(rho_ * rho_ / (4 * t_));
   const double per_rho = 1 / rho_;
-  // The group's coordinates relative to the first centre of block J, in single precision.
-  auto relative = [&](std::int64_t s, int G, std::int64_t J, float* xs, float* ys, float* zs) {
-    const auto o = std::size_t(block_start_[std::size_t(J)]);
-    for (int g = 0; g < G; ++g) {
-      xs[g] = float((x_[std::size_t(s + g)] - x_[o]) * per_rho);
-      ys[g] = float((y_[std::size_t(s + g)] - y_[o]) * per_rho);
-      zs[g] = float((z_[std::size_t(s + g)] - z_[o]) * per_rho);
-    }
-  };
-  auto within_block = [&](std::int64_t I) {
-    const auto b = std::size_t(block_start_[std::size_t(I)]);
-    const auto m = block_start_[std::size_t(I) + 1] - block_start_[std::size_t(I)];
-    groups(I, [&](std::int64_t s, int G) {
-      float xs[kGroup], ys[kGroup], zs[kGroup];
-      relative(s, G, I, xs, ys, zs);
-      pair_sums(G, xf_.data() + b, yf_.data() + b, zf_.data() + b, w_.data() + b, wu.data() + b, m,
-                xs, ys, zs, r2f, inv4tf, a1.data() + s, a0.data() + s);
-    });
-  };
-  auto between_blocks = [&](std::int64_t I, std::int64_t J) {
+  parallel_rounds(round_start_, threads_, [&](std::int64_t p) {
+    const auto [I, J] = pairs_[std::size_t(p)];
     const auto b = std::size_t(block_start_[std::size_t(J)]);
     const auto m = block_start_[std::size_t(J) + 1] - block_start_[std::size_t(J)];
     double c1[kBlock] = {}, c0[kBlock] = {};
-    groups(I, [&](std::int64_t s, int G) {
+    const bool both = I != J;
+    for (auto s = block_start_[std::size_t(I)]; s < block_start_[std::size_t(I) + 1];) {
+      const auto G = int(std::min<std::int64_t>(kGroup, block_start_[std::size_t(I) + 1] - s));
+      // The group's coordinates relative to the first centre of block J, in units of rho.
       float xs[kGroup], ys[kGroup], zs[kGroup];
-      relative(s, G, J, xs, ys, zs);
-      pair_sums_both(G, xf_.data() + b, yf_.data() + b, zf_.data() + b, w_.data() + b,
-                     wu.data() + b, m, xs, ys, zs, w_.data() + s, wu.data() + s, r2f, inv4tf,
-                     a1.data() + s, a0.data() + s, c1, c0);
-    });
-    for (std::int64_t r = 0; r < m; ++r) {
-      a1[b + std::size_t(r)] += c1[r];
-      a0[b + std::size_t(r)] += c0[r];
-    }
-  };
-  // Items: the blocks (round 0), then pairs_ (rounds 1, 2, ...), handed out in that order from
-  // one counter to workers started once; an item starts when every item of the earlier rounds
-  // is finished (`finished` counts them: a round's items are all handed out before the next
-  // round's, and each is finished by the worker that took it, so the wait always ends).
-  const auto items = blocks + std::int64_t(pairs_.size());
-  std::atomic<std::int64_t> next{0}, finished{0};
-  auto work = [&] {
-    for (;;) {
-      const auto i = next.fetch_add(1, std::memory_order_relaxed);
-      if (i >= items) return;
-      std::int64_t begin = 0; // the first item of i's round
-      if (i >= blocks) {
-        const auto p = i - blocks;
-        const auto k = std::upper_bound(round_start_.begin(), round_start_.end(), p) -
-                       round_start_.begin() - 1;
-        begin = blocks + round_start_[std::size_t(k)];
+      for (int g = 0; g < G; ++g) {
+        xs[g] = float((x_[std::size_t(s + g)] - x_[b]) * per_rho);
+        ys[g] = float((y_[std::size_t(s + g)] - y_[b]) * per_rho);
+        zs[g] = float((z_[std::size_t(s + g)] - z_[b]) * per_rho);
       }
-      while (finished.load(std::memory_order_acquire) < begin) std::this_thread::yield();
-      if (i < blocks)
-        within_block(i);
-      else
-        between_blocks(pairs_[std::size_t(i - blocks)][0], pairs_[std::size_t(i - blocks)][1]);
-      finished.fetch_add(1, std::memory_order_release);
+      block_sums(G, xf_.data() + b, yf_.data() + b, zf_.data() + b, w_.data() + b, wu.data() + b, m,
+                 xs, ys, zs, w_.data() + s, wu.data() + s, inv4t, a1.data() + s, a0.data() + s,
+                 both ? c1 : nullptr, both ? c0 : nullptr);
+      s += G;
     }
-  };
-  const unsigned workers = worker_count(threads_, items);
-  if (workers <= 1)
-    work();
-  else
-    detail::run_on_workers(workers, work);
+    if (both)
+      for (std::int64_t r = 0; r < m; ++r) {
+        a1[b + std::size_t(r)] += c1[r];
+        a0[b + std::size_t(r)] += c0[r];
+      }
+  });
   for (std::size_t k = 0; k < n; ++k) out[std::size_t(order_[k])] = scale * (a1[k] - us[k] * a0[k]);
   return out;
 }

@@ -25,7 +25,7 @@
 // neighbouring cells per cell). apply() evaluates each pair once for both of its rows (the
 // kernel is symmetric): the cells are cut into blocks of 256 surfels, the pairs of blocks in
 // neighbouring cells are coloured greedily into rounds in which no block appears twice, and
-// each round's pairs run in parallel (kernel/parallel_for.hpp), each block's sums added in
+// each round's pairs run in parallel (kernel/parallel_rounds.hpp), each block's sums added in
 // round order, so the result does not depend on the number of threads (bit for bit). Cost:
 // O(n k / 2) exp evaluations for k surfels per kernel ball (about 2 pi c^2 t / h^2 on a surface
 // of step h).
@@ -91,12 +91,12 @@ private:
   std::vector<std::int64_t> cell_start_; // cells in sorted order: [cell_start_[c], [c + 1])
   std::vector<std::int64_t> neighbours_; // per cell: up to 27 neighbour cells, -1 padded
   // apply()'s schedule: blocks of at most 256 positions within one cell ([block_start_[b],
-  // [b + 1])); the pairs I < J of blocks in neighbouring cells, by rounds (round k: pairs_
-  // [round_start_[k], [k + 1])) in which no block appears twice, so that the blocks of a round
-  // are written by one thread each and every sum is added in the same order for any number of
-  // threads.
+  // [b + 1])); pairs_ by rounds (round k: [round_start_[k], [k + 1])): round 0 pairs each block
+  // with itself, the later ones the pairs I < J of blocks in neighbouring cells, no block twice
+  // in a round, so that the blocks of a round are written by one thread each and every sum is
+  // added in the same order for any number of threads.
   std::vector<std::int64_t> block_start_;
-  std::vector<float> xf_, yf_, zf_; // relative to the first centre of their block
+  std::vector<float> xf_, yf_, zf_; // relative to the first centre of their block, / rho
   std::vector<std::array<std::int64_t, 2>> pairs_;
   std::vector<std::int64_t> round_start_;
 
