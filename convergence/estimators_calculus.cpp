@@ -132,19 +132,7 @@ ErrorStats run_lb_cotan(const RunInput& in) {
 ErrorStats run_lb_cotan_mc(const RunInput& in) {
   const detail::Digitized3 d = whole_surface(in, "lb-cotan-mc");
   const TestFunction f = test_function(in, d);
-  const VoxelBox& b = d.box;
-  const std::int64_t nx = b.hi.x - b.lo.x + 1, ny = b.hi.y - b.lo.y + 1, nz = b.hi.z - b.lo.z + 1;
-  Image<std::uint8_t> mask(Domain({nz, ny, nx}, {b.lo.z, b.lo.y, b.lo.x}));
-  auto& v = mask.values();
-  for (std::int64_t z = 0, i = 0; z < nz; ++z)
-    for (std::int64_t y = 0; y < ny; ++y)
-      for (std::int64_t x = 0; x < nx; ++x, ++i)
-        v[std::size_t(i)] = d.inside({b.lo.x + x, b.lo.y + y, b.lo.z + z}) ? 1 : 0;
-  const ImageSurfels sf = image_surfels(mask, 1);
-  const VoxelPlacement place{{in.h, in.h, in.h},
-                             {in.h * double(b.lo.x), in.h * double(b.lo.y), in.h * double(b.lo.z)}};
-  const PolygonMesh mesh =
-      marching_cubes(mask, sf, SurfaceConvention::of(6, 26), place, nullptr, 1);
+  const PolygonMesh mesh = marching_cubes(d.inside, d.box, in.h, 1);
   std::vector<std::array<std::int64_t, 3>> triangles;
   triangles.reserve(std::size_t(mesh.face_count()));
   for (std::int64_t t = 0; t < mesh.face_count(); ++t) {

@@ -152,4 +152,20 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
   return mesh;
 }
 
+PolygonMesh marching_cubes(const VoxelPredicate& inside, const VoxelBox& b, double h,
+                           unsigned threads) {
+  check_voxel_box(b);
+  const std::int64_t nx = b.hi.x - b.lo.x + 1, ny = b.hi.y - b.lo.y + 1, nz = b.hi.z - b.lo.z + 1;
+  Image<std::uint8_t> mask(Domain({nz, ny, nx}, {b.lo.z, b.lo.y, b.lo.x}));
+  auto& v = mask.values();
+  for (std::int64_t z = 0, i = 0; z < nz; ++z)
+    for (std::int64_t y = 0; y < ny; ++y)
+      for (std::int64_t x = 0; x < nx; ++x, ++i)
+        v[std::size_t(i)] = inside({b.lo.x + x, b.lo.y + y, b.lo.z + z}) ? 1 : 0;
+  const VoxelPlacement place{{h, h, h},
+                             {h * double(b.lo.x), h * double(b.lo.y), h * double(b.lo.z)}};
+  return marching_cubes(mask, image_surfels(mask, threads), SurfaceConvention::of(6, 26), place,
+                        nullptr, threads);
+}
+
 } // namespace zdg

@@ -40,6 +40,7 @@
 // triangles (about two per surfel). The result does not depend on the number of threads.
 #pragma once
 
+#include <zdg/kernel/digital_surface.hpp>
 #include <zdg/kernel/image.hpp>
 #include <zdg/kernel/image_surfaces.hpp>
 #include <zdg/kernel/image_surfels.hpp>
@@ -63,5 +64,11 @@ struct IsoLevel {
 PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels& surfels,
                            const SurfaceConvention& convention, const VoxelPlacement& placement,
                            const IsoLevel* grey = nullptr, unsigned threads = 0);
+
+/// The marching-cubes mesh ((6,26), binary positions) of the digitization {z in box :
+/// inside(z)} on the grid of step h (voxel z at h z): the set rasterized to an image of the box
+/// (one byte per voxel), its surfels, then the call above.
+PolygonMesh marching_cubes(const VoxelPredicate& inside, const VoxelBox& box, double h,
+                           unsigned threads = 0);
 
 } // namespace zdg

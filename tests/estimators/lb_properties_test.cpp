@@ -20,7 +20,6 @@
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
 #include <zdg/kernel/cotan_laplacian.hpp>
-#include <zdg/kernel/image_surfels.hpp>
 #include <zdg/kernel/marching_cubes.hpp>
 
 #include "tests/support/digital_sphere.hpp"
@@ -63,17 +62,7 @@ Operator cotan_operator(const SurfelComplex& c) {
 // The cotangent Laplacian of the marching-cubes mesh of the digitization ((6,26), vertices at
 // the surfel centres: level 1/2 between voxel centres), at its vertices: M = lumped mass.
 Operator marching_cubes_operator(const VoxelPredicate& inside, const VoxelBox& b, double h) {
-  const std::int64_t nx = b.hi.x - b.lo.x + 1, ny = b.hi.y - b.lo.y + 1, nz = b.hi.z - b.lo.z + 1;
-  Image<std::uint8_t> mask(Domain({nz, ny, nx}, {b.lo.z, b.lo.y, b.lo.x}));
-  auto& v = mask.values();
-  for (std::int64_t z = 0, i = 0; z < nz; ++z)
-    for (std::int64_t y = 0; y < ny; ++y)
-      for (std::int64_t x = 0; x < nx; ++x, ++i)
-        v[std::size_t(i)] = inside({b.lo.x + x, b.lo.y + y, b.lo.z + z}) ? 1 : 0;
-  const VoxelPlacement place{{h, h, h},
-                             {h * double(b.lo.x), h * double(b.lo.y), h * double(b.lo.z)}};
-  const PolygonMesh mesh =
-      marching_cubes(mask, image_surfels(mask, 1), SurfaceConvention::of(6, 26), place, nullptr, 1);
+  const PolygonMesh mesh = marching_cubes(inside, b, h, 1);
   std::vector<std::array<std::int64_t, 3>> triangles;
   for (std::int64_t t = 0; t < mesh.face_count(); ++t) {
     const auto c = mesh.face(t);
