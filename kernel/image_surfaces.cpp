@@ -85,21 +85,21 @@ ImageSurfaces image_surfaces(const Image<std::uint8_t>& image, const ImageSurfel
       static_cast<std::size_t>(chunks));
   std::vector<std::int64_t> pinches(static_cast<std::size_t>(chunks), 0);
   std::vector<std::int64_t> linel_sightings(static_cast<std::size_t>(chunks), 0);
+  const PointelStar* stars = pointel_stars(convention.linels);
   parallel_for(chunks, static_cast<unsigned>(chunks), [&](std::int64_t t) {
     const std::int64_t q = n / chunks, r = n % chunks;
     const std::int64_t b = q * t + r * t / chunks, e = q * (t + 1) + r * (t + 1) / chunks;
     auto& my_cross = cross[std::size_t(t)];
     std::int64_t my_pinches = 0, my_linels = 0;
-    for (std::int64_t i = b; i < e; ++i) {
-      const std::uint64_t code = surfels.codes[std::size_t(i)];
+    for_each_surfel(surfels, b, e, [&](std::int64_t i, std::uint64_t code, const std::int64_t* v) {
       int own = 0;
       SurfelCorner k[4];
       std::uint8_t config[4];
       const PointelStar* st[4];
       for (int c = 0; c < 4; ++c) {
-        k[c] = surfel_corner(g, code, c);
+        k[c] = surfel_corner(v, code, c);
         config[c] = pointel_configuration(g, data, k[c].q[0], k[c].q[1], k[c].q[2]);
-        st[c] = &pointel_star(config[c], convention.linels);
+        st[c] = &stars[config[c]];
       }
       for (int c = 0; c < 4; ++c) {
         const int f = k[c].face;
@@ -113,7 +113,8 @@ ImageSurfaces image_surfaces(const Image<std::uint8_t>& image, const ImageSurfel
           ++my_linels;
         const int nf = st[c]->next[std::size_t(f)];
         if (nf < 0) throw Error("image_surfaces: a surfel corner is not a boundary face");
-        const std::int64_t j = surfels.find(local_face_code(g, k[c].q, nf, config[c]));
+        const LocalSurfel ls = local_face_surfel(g, k[c].q, nf, config[c]);
+        const std::int64_t j = surfels.find_in_row(ls.row, ls.code);
         if (j < 0) throw Error("image_surfaces: a neighbour surfel is missing from the list");
         if (j >= b && j < e) {
           unite(parent, std::uint64_t(i), std::uint64_t(j));
@@ -122,7 +123,7 @@ ImageSurfaces image_surfaces(const Image<std::uint8_t>& image, const ImageSurfel
         }
       }
       owned[std::size_t(i)] = static_cast<std::uint8_t>(own);
-    }
+    });
     pinches[std::size_t(t)] = my_pinches;
     linel_sightings[std::size_t(t)] = my_linels;
   });

@@ -29,10 +29,7 @@ VoxelGrid VoxelGrid::of(const Domain& domain) {
 std::int64_t ImageSurfels::find(std::uint64_t code) const {
   const std::int64_t r = code_voxel(code) / grid.nx;
   if (r < 0 || r >= grid.rows()) return -1;
-  const auto first = codes.begin() + row_start[static_cast<std::size_t>(r)];
-  const auto last = codes.begin() + row_start[static_cast<std::size_t>(r) + 1];
-  const auto it = std::lower_bound(first, last, code);
-  return it != last && *it == code ? it - codes.begin() : -1;
+  return find_in_row(r, code);
 }
 
 Surfel ImageSurfels::surfel_of(std::uint64_t code) const {

@@ -29,6 +29,7 @@
 #include <zdg/kernel/cubical_cells.hpp>
 #include <zdg/kernel/image.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -98,12 +99,49 @@ struct ImageSurfels {
   std::int64_t size() const { return static_cast<std::int64_t>(codes.size()); }
   /// Position of the code in `codes`, or -1 when it is not a boundary surfel.
   std::int64_t find(std::uint64_t code) const;
+  /// The same when the row of the code's inner voxel (k ny + j) is known (0 <= row < rows):
+  /// a branch-free binary search among the surfels of that row.
+  std::int64_t find_in_row(std::int64_t row, std::uint64_t code) const {
+    const std::int64_t b = row_start[static_cast<std::size_t>(row)];
+    std::int64_t len = row_start[static_cast<std::size_t>(row) + 1] - b;
+    if (len == 0) return -1;
+    const std::uint64_t* base = codes.data() + b;
+    while (len > 1) {
+      const std::int64_t half = len / 2;
+      base += static_cast<std::int64_t>(base[half - 1] < code) * half; // no branch to mispredict
+      len -= half;
+    }
+    return *base == code ? base - codes.data() : -1;
+  }
   /// The Khalimsky surfel of code c (Z^3 coordinates, direct iff the outer voxel is at +e_a).
   Surfel surfel_of(std::uint64_t code) const;
   Surfel surfel(std::int64_t i) const { return surfel_of(codes[static_cast<std::size_t>(i)]); }
   /// The Khalimsky surfels of all the codes, in the same order.
   std::vector<Surfel> surfels(unsigned threads = 0) const;
 };
+
+/// Calls f(i, code, c) for the surfels of positions b <= i < e in order, c = {i, j, k} the grid
+/// indices of the inner voxel (an std::int64_t[3]); the row index gives j and k, so there is
+/// no division per surfel.
+template <class F>
+void for_each_surfel(const ImageSurfels& s, std::int64_t b, std::int64_t e, F&& f) {
+  if (b >= e) return;
+  const auto& rs = s.row_start;
+  std::int64_t r = std::int64_t(std::upper_bound(rs.begin(), rs.end(), b) - rs.begin()) - 1;
+  std::int64_t c[3] = {0, r % s.grid.ny, r / s.grid.ny};
+  for (std::int64_t i = b; i < e; ++i) {
+    while (rs[static_cast<std::size_t>(r) + 1] <= i) {
+      ++r;
+      if (++c[1] == s.grid.ny) {
+        c[1] = 0;
+        ++c[2];
+      }
+    }
+    const std::uint64_t code = s.codes[static_cast<std::size_t>(i)];
+    c[0] = code_voxel(code) - r * s.grid.nx;
+    f(i, code, c);
+  }
+}
 
 /// The boundary surfels of the nonzero voxels of a 3D image (threads: 0 = all cores).
 /// InvalidArgument when the image is not 3D (see VoxelGrid::of).

@@ -3,6 +3,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/kernel/parallel_for.hpp>
 #include <zdg/kernel/pointel_cycles.hpp>
+#include <zdg/kernel/populate_pages.hpp>
 
 #include <algorithm>
 #include <array>
@@ -33,7 +34,7 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
     throw InvalidArgument("marching_cubes: the surfels are not those of this image");
   const std::uint8_t* data = image.values().data();
   const std::int64_t n = surfels.size();
-  const auto adj = convention.linels;
+  const PointelStar* stars = pointel_stars(convention.linels);
   PolygonMesh mesh;
   mesh.face_size = 3;
 
@@ -50,18 +51,17 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
   parallel_for(chunks, static_cast<unsigned>(chunks), [&](std::int64_t t) {
     const auto [b, e] = bounds(t);
     std::int64_t tris = 0, centres = 0;
-    for (std::int64_t i = b; i < e; ++i) {
-      const std::uint64_t code = surfels.codes[std::size_t(i)];
+    for_each_surfel(surfels, b, e, [&](std::int64_t, std::uint64_t code, const std::int64_t* v) {
       for (int k = 0; k < 4; ++k) {
-        const SurfelCorner sc = surfel_corner(g, code, k);
+        const SurfelCorner sc = surfel_corner(v, code, k);
         const std::uint8_t config = pointel_configuration(g, data, sc.q[0], sc.q[1], sc.q[2]);
-        const PointelStar& st = pointel_star(config, adj);
+        const PointelStar& st = stars[config];
         if (st.owner[std::size_t(sc.face)] != sc.face) continue;
         const int len = st.length[std::size_t(sc.face)];
         tris += triangles_of(len);
         centres += len >= 5 ? 1 : 0;
       }
-    }
+    });
     first_triangle[std::size_t(t) + 1] = tris;
     first_centre[std::size_t(t) + 1] = centres;
   });
@@ -69,15 +69,15 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
     first_triangle[t + 1] += first_triangle[t];
     first_centre[t + 1] += first_centre[t];
   }
+  reserve_populated(mesh.indices, static_cast<std::size_t>(3 * first_triangle.back()), threads);
   mesh.indices.resize(static_cast<std::size_t>(3 * first_triangle.back()));
+  reserve_populated(mesh.vertices, static_cast<std::size_t>(n + first_centre.back()), threads);
   mesh.vertices.resize(static_cast<std::size_t>(n + first_centre.back()));
 
   // The surfel vertices: on the cut edge from the inner to the outer voxel centre.
   parallel_chunks(n, static_cast<unsigned>(chunks), [&](std::int64_t b, std::int64_t e) {
-    for (std::int64_t i = b; i < e; ++i) {
-      const std::uint64_t code = surfels.codes[std::size_t(i)];
+    for_each_surfel(surfels, b, e, [&](std::int64_t i, std::uint64_t code, const std::int64_t* c) {
       const std::int64_t v = code_voxel(code);
-      const std::int64_t c[3] = {v % g.nx, (v / g.nx) % g.ny, v / (g.nx * g.ny)};
       const int a = code_axis(code);
       const int s = code_positive(code) ? 1 : -1;
       double step = 0.5;
@@ -92,7 +92,7 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
       double p[3] = {double(c[0]), double(c[1]), double(c[2])};
       p[a] += s * step;
       mesh.vertices[std::size_t(i)] = placement.at(p[0], p[1], p[2]);
-    }
+    });
   });
 
   // Pass 2: the polygons of the owned cycles, triangulated.
@@ -106,12 +106,11 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
       *out++ = y;
       *out++ = z;
     };
-    for (std::int64_t i = b; i < e; ++i) {
-      const std::uint64_t code = surfels.codes[std::size_t(i)];
+    for_each_surfel(surfels, b, e, [&](std::int64_t i, std::uint64_t code, const std::int64_t* v) {
       for (int k = 0; k < 4; ++k) {
-        const SurfelCorner sc = surfel_corner(g, code, k);
+        const SurfelCorner sc = surfel_corner(v, code, k);
         const std::uint8_t config = pointel_configuration(g, data, sc.q[0], sc.q[1], sc.q[2]);
-        const PointelStar& st = pointel_star(config, adj);
+        const PointelStar& st = stars[config];
         if (st.owner[std::size_t(sc.face)] != sc.face) continue;
         const int len = st.length[std::size_t(sc.face)];
         int f = sc.face;
@@ -119,7 +118,8 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
           if (m == 0) {
             poly[0] = i;
           } else {
-            poly[std::size_t(m)] = surfels.find(local_face_code(g, sc.q, f, config));
+            const LocalSurfel ls = local_face_surfel(g, sc.q, f, config);
+            poly[std::size_t(m)] = surfels.find_in_row(ls.row, ls.code);
             if (poly[std::size_t(m)] < 0)
               throw Error("marching_cubes: a surfel of a cycle is missing from the list");
           }
@@ -147,7 +147,7 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
           ++centre;
         }
       }
-    }
+    });
   });
   return mesh;
 }

@@ -105,10 +105,13 @@ struct StarTables {
 
 } // namespace
 
-const PointelStar& pointel_star(std::uint8_t configuration, SurfelAdjacency adjacency) {
+const PointelStar* pointel_stars(SurfelAdjacency adjacency) {
   static const StarTables tables;
-  return adjacency == SurfelAdjacency::interior ? tables.interior[configuration]
-                                                : tables.exterior[configuration];
+  return adjacency == SurfelAdjacency::interior ? tables.interior.data() : tables.exterior.data();
+}
+
+const PointelStar& pointel_star(std::uint8_t configuration, SurfelAdjacency adjacency) {
+  return pointel_stars(adjacency)[configuration];
 }
 
 } // namespace zdg

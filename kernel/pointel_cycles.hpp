@@ -66,6 +66,8 @@ struct PointelStar {
 
 /// The star of the configuration byte under the surfel adjacency (tables built once).
 const PointelStar& pointel_star(std::uint8_t configuration, SurfelAdjacency adjacency);
+/// The 256 stars of an adjacency, indexed by the configuration byte (for inner loops).
+const PointelStar* pointel_stars(SurfelAdjacency adjacency);
 
 /// The local face f = 4 a + u + 2 w (see above).
 constexpr int local_face(int axis, int u, int w) {
@@ -115,44 +117,96 @@ struct SurfelCorner {
   int face;
 };
 
+namespace detail {
+struct CornerStep {
+  std::int8_t dq[3];
+  std::int8_t face;
+};
+// The corners of the surfels of each direction d = 2 a + (outer voxel at +e_a): the pointel
+// index minus the inner voxel's indices, and the local face of the surfel there.
+constexpr std::array<std::array<CornerStep, 4>, 6> corner_steps() {
+  constexpr int du[4] = {-1, 1, 1, -1}, dv[4] = {-1, -1, 1, 1};
+  std::array<std::array<CornerStep, 4>, 6> t{};
+  for (int d = 0; d < 6; ++d)
+    for (int n = 0; n < 4; ++n) {
+      const int a = d / 2, b = (a + 1) % 3, cc = (a + 2) % 3;
+      const bool pos = (d & 1) != 0;
+      const int jn = pos ? n : 3 - n;
+      auto& k = t[std::size_t(d)][std::size_t(n)];
+      k.dq[a] = pos ? 1 : 0;
+      k.dq[b] = du[jn] > 0 ? 1 : 0;
+      k.dq[cc] = dv[jn] > 0 ? 1 : 0;
+      k.face = static_cast<std::int8_t>(local_face(a, du[jn] < 0 ? 1 : 0, dv[jn] < 0 ? 1 : 0));
+    }
+  return t;
+}
+inline constexpr auto kCornerSteps = corner_steps();
+} // namespace detail
+
+/// Corner n (0..3) of the surfel of code `code` whose inner voxel has the grid indices c, in
+/// the counterclockwise order seen from outside of surfel_pointels().
+inline SurfelCorner surfel_corner(const std::int64_t c[3], std::uint64_t code, int n) {
+  const auto& k = detail::kCornerSteps[code & 7][static_cast<std::size_t>(n)];
+  return {{c[0] + k.dq[0], c[1] + k.dq[1], c[2] + k.dq[2]}, k.face};
+}
+
+/// The grid indices (i, j, k) of the inner voxel of the surfel of code `code`.
+struct GridIndex {
+  std::int64_t c[3];
+};
+inline GridIndex code_indices(const VoxelGrid& g, std::uint64_t code) {
+  const std::int64_t v = code_voxel(code);
+  return {{v % g.nx, (v / g.nx) % g.ny, v / (g.nx * g.ny)}};
+}
+
 /// Corner n (0..3) of the surfel of code c, in the counterclockwise order seen from outside
 /// of surfel_pointels().
 inline SurfelCorner surfel_corner(const VoxelGrid& g, std::uint64_t code, int n) {
-  static constexpr int du[4] = {-1, 1, 1, -1}, dv[4] = {-1, -1, 1, 1};
-  const std::int64_t v = code_voxel(code);
-  const std::int64_t c[3] = {v % g.nx, (v / g.nx) % g.ny, v / (g.nx * g.ny)};
-  const int a = code_axis(code), b = (a + 1) % 3, cc = (a + 2) % 3;
-  const bool pos = code_positive(code);
-  const int jn = pos ? n : 3 - n;
-  SurfelCorner r{};
-  r.q[a] = c[a] + (pos ? 1 : 0);
-  r.q[b] = c[b] + (du[jn] > 0 ? 1 : 0);
-  r.q[cc] = c[cc] + (dv[jn] > 0 ? 1 : 0);
-  r.face = local_face(a, du[jn] < 0 ? 1 : 0, dv[jn] < 0 ? 1 : 0);
-  return r;
+  return surfel_corner(code_indices(g, code).c, code, n);
 }
 
-/// Which corner (0..3) of the surfel of code c is the pointel q (which must be one of them).
-inline int corner_index(const VoxelGrid& g, std::uint64_t code, const std::int64_t q[3]) {
-  const std::int64_t v = code_voxel(code);
-  const std::int64_t c[3] = {v % g.nx, (v / g.nx) % g.ny, v / (g.nx * g.ny)};
+/// Which corner (0..3) of the surfel of code `code`, inner voxel of grid indices c, is the
+/// pointel q (which must be one of them).
+inline int corner_index(const std::int64_t c[3], std::uint64_t code, const std::int64_t q[3]) {
   const int a = code_axis(code), b = (a + 1) % 3, cc = (a + 2) % 3;
   const bool ub = q[b] > c[b], uc = q[cc] > c[cc];
   const int jn = ub ? (uc ? 2 : 1) : (uc ? 3 : 0);
   return code_positive(code) ? jn : 3 - jn;
 }
 
-/// The code of the boundary surfel of local face f at the pointel q, for the configuration
-/// byte of q (f must be a boundary face of it).
-inline std::uint64_t local_face_code(const VoxelGrid& g, const std::int64_t q[3], int f,
+/// Which corner (0..3) of the surfel of code c is the pointel q (which must be one of them).
+inline int corner_index(const VoxelGrid& g, std::uint64_t code, const std::int64_t q[3]) {
+  return corner_index(code_indices(g, code).c, code, q);
+}
+
+/// The boundary surfel of local face f at the pointel q, for the configuration byte of q (f
+/// must be a boundary face of it): its code, the row of its inner voxel and the grid indices
+/// of that voxel.
+struct LocalSurfel {
+  std::uint64_t code;
+  std::int64_t row;
+  std::int64_t c[3];
+};
+inline LocalSurfel local_face_surfel(const VoxelGrid& g, const std::int64_t q[3], int f,
                                      std::uint8_t configuration) {
   const int a = f / 4;
   const int low = local_face_voxel(f, 0);
   const bool low_inside = ((configuration >> low) & 1) != 0;
   const int inner = low_inside ? low : local_face_voxel(f, 1);
-  const std::int64_t x = q[0] - 1 + (inner & 1), y = q[1] - 1 + ((inner >> 1) & 1),
-                     z = q[2] - 1 + (inner >> 2);
-  return surfel_code(g.index(x, y, z), a, low_inside);
+  LocalSurfel s{};
+  s.c[0] = q[0] - 1 + (inner & 1);
+  s.c[1] = q[1] - 1 + ((inner >> 1) & 1);
+  s.c[2] = q[2] - 1 + (inner >> 2);
+  s.row = s.c[2] * g.ny + s.c[1];
+  s.code = surfel_code(s.row * g.nx + s.c[0], a, low_inside);
+  return s;
+}
+
+/// The code of the boundary surfel of local face f at the pointel q, for the configuration
+/// byte of q (f must be a boundary face of it).
+inline std::uint64_t local_face_code(const VoxelGrid& g, const std::int64_t q[3], int f,
+                                     std::uint8_t configuration) {
+  return local_face_surfel(g, q, f, configuration).code;
 }
 
 } // namespace zdg

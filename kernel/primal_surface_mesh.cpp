@@ -3,6 +3,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/kernel/parallel_for.hpp>
 #include <zdg/kernel/pointel_cycles.hpp>
+#include <zdg/kernel/populate_pages.hpp>
 
 #include <vector>
 
@@ -17,9 +18,10 @@ PolygonMesh primal_surface_mesh(const Image<std::uint8_t>& image, const ImageSur
     throw InvalidArgument("primal_surface_mesh: the surfels are not those of this image");
   const std::uint8_t* data = image.values().data();
   const std::int64_t n = surfels.size();
-  const auto adj = convention.linels;
+  const PointelStar* stars = pointel_stars(convention.linels);
   PolygonMesh mesh;
   mesh.face_size = 4;
+  reserve_populated(mesh.indices, static_cast<std::size_t>(4 * n), threads);
   mesh.indices.assign(static_cast<std::size_t>(4 * n), -1);
 
   const std::int64_t chunks = worker_count(threads, n);
@@ -34,12 +36,11 @@ PolygonMesh primal_surface_mesh(const Image<std::uint8_t>& image, const ImageSur
   parallel_for(chunks, static_cast<unsigned>(chunks), [&](std::int64_t t) {
     const auto [b, e] = bounds(t);
     std::int64_t owners = 0;
-    for (std::int64_t i = b; i < e; ++i) {
-      const std::uint64_t code = surfels.codes[std::size_t(i)];
+    for_each_surfel(surfels, b, e, [&](std::int64_t i, std::uint64_t code, const std::int64_t* v) {
       for (int c = 0; c < 4; ++c) {
-        const SurfelCorner k = surfel_corner(g, code, c);
+        const SurfelCorner k = surfel_corner(v, code, c);
         const std::uint8_t config = pointel_configuration(g, data, k.q[0], k.q[1], k.q[2]);
-        const PointelStar& st = pointel_star(config, adj);
+        const PointelStar& st = stars[config];
         const int owner_face = st.owner[std::size_t(k.face)];
         auto& slot = mesh.indices[std::size_t(4 * i + c)];
         if (owner_face == k.face) {
@@ -47,31 +48,33 @@ PolygonMesh primal_surface_mesh(const Image<std::uint8_t>& image, const ImageSur
           ++owners;
           continue;
         }
-        const std::uint64_t owner = local_face_code(g, k.q, owner_face, config);
-        const std::int64_t j = surfels.find(owner);
+        const LocalSurfel owner = local_face_surfel(g, k.q, owner_face, config);
+        const std::int64_t j = surfels.find_in_row(owner.row, owner.code);
         if (j < 0) throw Error("primal_surface_mesh: the owner of a sheet is not a surfel");
-        slot = -2 - (4 * j + corner_index(g, owner, k.q));
+        slot = -2 - (4 * j + corner_index(owner.c, owner.code, k.q));
       }
-    }
+    });
     first_vertex[std::size_t(t) + 1] = owners;
   });
   for (std::size_t t = 0; t < static_cast<std::size_t>(chunks); ++t)
     first_vertex[t + 1] += first_vertex[t];
+  reserve_populated(mesh.vertices, static_cast<std::size_t>(first_vertex.back()), threads);
   mesh.vertices.resize(static_cast<std::size_t>(first_vertex.back()));
 
   // Pass 2: the owners number their vertices (in surfel order) and place them.
   parallel_for(chunks, static_cast<unsigned>(chunks), [&](std::int64_t t) {
     const auto [b, e] = bounds(t);
     std::int64_t id = first_vertex[std::size_t(t)];
-    for (std::int64_t i = b; i < e; ++i)
+    for_each_surfel(surfels, b, e, [&](std::int64_t i, std::uint64_t code, const std::int64_t* v) {
       for (int c = 0; c < 4; ++c) {
         auto& slot = mesh.indices[std::size_t(4 * i + c)];
         if (slot != -1) continue;
-        const SurfelCorner k = surfel_corner(g, surfels.codes[std::size_t(i)], c);
+        const SurfelCorner k = surfel_corner(v, code, c);
         mesh.vertices[std::size_t(id)] =
             placement.at(double(k.q[0]) - 0.5, double(k.q[1]) - 0.5, double(k.q[2]) - 0.5);
         slot = id++;
       }
+    });
   });
 
   // Pass 3: the other corners take their owner's vertex (owner slots are >= 0 by now and are

@@ -63,6 +63,34 @@ TEST(ImageSurfels, SameSurfelsAsTheSliceScanOfDigitalSurface) {
   });
 }
 
+// for_each_surfel walks the row index instead of dividing: the indices it hands out are
+// those of the division, on any sub-range (a worker's chunk starts mid-row); find_in_row is
+// find when the row is the code's, for the codes of surfels and for codes of none.
+TEST(ImageSurfels, RowWalkAndRowSearchAgreeWithTheDivisions) {
+  zdg::test::check_property([] {
+    const SmallVolume v = *zdg::test::small_volume(6);
+    const auto s = zdg::image_surfels(zdg::test::to_image(v, 3, -2, 1), 1);
+    const auto n = s.size();
+    const auto b = *rc::gen::inRange<std::int64_t>(0, n + 1);
+    const auto e = *rc::gen::inRange<std::int64_t>(b, n + 1);
+    std::int64_t next = b;
+    zdg::for_each_surfel(s, b, e, [&](std::int64_t i, std::uint64_t code, const std::int64_t* c) {
+      RC_ASSERT(i == next++);
+      RC_ASSERT(code == s.codes[std::size_t(i)]);
+      const std::int64_t u = zdg::code_voxel(code);
+      RC_ASSERT(c[0] == u % s.grid.nx);
+      RC_ASSERT(c[1] == (u / s.grid.nx) % s.grid.ny);
+      RC_ASSERT(c[2] == u / (s.grid.nx * s.grid.ny));
+    });
+    RC_ASSERT(next == e);
+    for (std::int64_t u = 0; u < s.grid.size(); ++u)
+      for (int d = 0; d < 6; ++d) {
+        const auto code = zdg::surfel_code(u, d / 2, (d & 1) != 0);
+        RC_ASSERT(s.find_in_row(u / s.grid.nx, code) == s.find(code));
+      }
+  });
+}
+
 TEST(ImageSurfels, ThreadsDoNotChangeTheResult) {
   const auto img = zdg::test::ball_image(9, 60);
   const auto a = zdg::image_surfels(img, 1), b = zdg::image_surfels(img, 3);

@@ -119,6 +119,15 @@ TEST(PointelCycles, TableFollowersAreTheDigitalSurfaceFollowers) {
             zdg::pointel_configuration(s.grid, img.values().data(), k.q[0], k.q[1], k.q[2]);
         RC_ASSERT(zdg::local_face_code(s.grid, k.q, k.face, config) == code);
         RC_ASSERT(zdg::corner_index(s.grid, code, k.q) == n);
+        // The forms that take the inner voxel's indices (for_each_surfel's) agree.
+        const auto ix = zdg::code_indices(s.grid, code);
+        const auto kc = zdg::surfel_corner(ix.c, code, n);
+        RC_ASSERT(std::equal(kc.q, kc.q + 3, k.q) && kc.face == k.face);
+        const auto ls0 = zdg::local_face_surfel(s.grid, k.q, k.face, config);
+        RC_ASSERT(ls0.code == code && std::equal(ix.c, ix.c + 3, ls0.c));
+        RC_ASSERT(ls0.row == ix.c[2] * s.grid.ny + ix.c[1]);
+        RC_ASSERT(zdg::corner_index(ls0.c, code, k.q) == n);
+        RC_ASSERT(&zdg::pointel_stars(adj)[config] == &zdg::pointel_star(config, adj));
         // The pointel in Khalimsky coordinates of Z^3.
         const zdg::KPoint p{2 * (k.q[0] + s.grid.lower.x), 2 * (k.q[1] + s.grid.lower.y),
                             2 * (k.q[2] + s.grid.lower.z)};
