@@ -2,7 +2,8 @@
 // about 10^7 boundary surfels; set ZDG_SURFACE_BENCH_N to change it), the level set
 // { f > 0 } of a sum of 24 random plane waves of wavelength 40 to 80 voxels.
 //   build/bin/surface_bench --benchmark_counters_tabular=true
-// Steps: boundary surfels, components, closed surfaces (6,26), primal mesh, marching cubes, II mean
+// Steps: boundary surfels, components, closed surfaces (6,26), primal mesh (alone, and written
+// as a binary PLY), marching cubes, II mean
 // curvature at radius 5 voxels on the first 10^6 surfels (2 threads); peak memory (RSS) is
 // reported as a counter, with the input size and the mesh sizes (run one step per process,
 // --benchmark_filter=BM_MarchingCubes, for the peak of that step alone).
@@ -11,6 +12,7 @@
 #include <zdg/kernel/image_surfaces.hpp>
 #include <zdg/kernel/image_surfels.hpp>
 #include <zdg/kernel/marching_cubes.hpp>
+#include <zdg/kernel/mesh_io.hpp>
 #include <zdg/kernel/parallel_for.hpp>
 #include <zdg/kernel/primal_surface_mesh.hpp>
 
@@ -19,8 +21,10 @@
 #include <cmath>
 #include <complex>
 #include <cstdlib>
+#include <filesystem>
 #include <numbers>
 #include <random>
+#include <string>
 #include <sys/resource.h>
 
 namespace {
@@ -134,6 +138,25 @@ void BM_PrimalMesh(benchmark::State& state) {
   report(state);
 }
 
+// The primal mesh written as a binary PLY (in $TMPDIR, /tmp by default; removed after): the
+// "primal PLY written" step of `zdg surface -o OUT.ply --mesh primal`.
+void BM_PrimalMeshPly(benchmark::State& state) {
+  surfels();
+  const char* dir = std::getenv("TMPDIR");
+  const std::string path = std::string(dir != nullptr ? dir : "/tmp") + "/zdg_surface_bench.ply";
+  double bytes = 0;
+  for (auto _ : state) {
+    auto m = zdg::primal_surface_mesh(foam(), surfels(), kConvention,
+                                      zdg::VoxelPlacement::lattice(surfels().grid),
+                                      unsigned(state.range(0)));
+    zdg::write_ply(path, m);
+    bytes = double(std::filesystem::file_size(path));
+  }
+  std::filesystem::remove(path);
+  state.counters["ply_MB"] = bytes / 1e6;
+  report(state);
+}
+
 void BM_MarchingCubes(benchmark::State& state) {
   surfels();
   std::int64_t f = 0;
@@ -169,6 +192,7 @@ BENCHMARK(BM_Surfels)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations
 BENCHMARK(BM_Components)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_Surfaces)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_PrimalMesh)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_PrimalMeshPly)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_MarchingCubes)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_IIMean)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(1);
 

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <limits>
 #include <vector>
 
@@ -89,11 +90,35 @@ void append_int(std::string& out, std::int64_t v) {
   out.append(buf, r.ptr);
 }
 
-template <class T>
-void put(std::vector<char>& buf, T v) {
-  const auto n = buf.size();
-  buf.resize(n + sizeof(T));
-  std::memcpy(buf.data() + n, &v, sizeof(T)); // little-endian host
+// Three floats at out (little-endian host); returns the end.
+char* put(char* out, float x, float y, float z) {
+  const float v[3] = {x, y, z};
+  std::memcpy(out, v, sizeof v);
+  return out + sizeof v;
+}
+
+// Writes n records of `size` bytes each, record i made by fill(i, out), in blocks of 2^20
+// records: each block is formatted in parallel while the previous one is being written (the
+// write is the kernel's copy into the page cache, as long as the formatting).
+template <class Fill>
+void write_records(StagedFile& file, std::int64_t n, std::size_t size, unsigned threads,
+                   Fill&& fill) {
+  constexpr std::int64_t block = std::int64_t{1} << 20;
+  const auto cap = static_cast<std::size_t>(std::min(n, block)) * size;
+  std::vector<char> buf[2] = {std::vector<char>(cap), std::vector<char>(n > block ? cap : 0)};
+  std::future<void> writing;
+  for (std::int64_t b = 0, k = 0; b < n; b += block, ++k) {
+    const std::int64_t len = std::min(n - b, block);
+    char* out = buf[k % 2].data();
+    parallel_chunks(len, threads, [&](std::int64_t lo, std::int64_t hi) {
+      for (std::int64_t i = lo; i < hi; ++i) fill(b + i, out + std::size_t(i) * size);
+    });
+    if (writing.valid()) writing.get(); // rethrows a failed write
+    writing = std::async(std::launch::async, [&file, out, len, size] {
+      file.write(out, static_cast<std::size_t>(len) * size);
+    });
+  }
+  if (writing.valid()) writing.get();
 }
 
 } // namespace
@@ -117,7 +142,7 @@ MeshFormat mesh_format_of(const std::string& path) {
   throw IoError(path + ": unknown mesh format '" + e + "' (.ply, .obj or .off)");
 }
 
-void write_ply(const std::string& path, const PolygonMesh& mesh) {
+void write_ply(const std::string& path, const PolygonMesh& mesh, unsigned threads) {
   mesh.validate();
   const std::int64_t nv = mesh.vertex_count(), nf = mesh.face_count();
   if (static_cast<std::uint64_t>(nv) > std::numeric_limits<std::uint32_t>::max())
@@ -157,48 +182,37 @@ void write_ply(const std::string& path, const PolygonMesh& mesh) {
   h += "end_header\n";
   StagedFile file(path);
   file.write(h);
-  std::vector<char> buf;
-  buf.reserve(static_cast<std::size_t>(kBlock) * 24);
-  for (std::int64_t b = 0; b < nv; b += kBlock) {
-    buf.clear();
-    for (std::int64_t i = b; i < std::min(nv, b + kBlock); ++i) {
-      const auto& p = mesh.vertices[static_cast<std::size_t>(i)];
-      put(buf, static_cast<float>(p.x));
-      put(buf, static_cast<float>(p.y));
-      put(buf, static_cast<float>(p.z));
-      if (vn) {
-        const auto& n = mesh.vertex_normals[static_cast<std::size_t>(i)];
-        put(buf, static_cast<float>(n.x));
-        put(buf, static_cast<float>(n.y));
-        put(buf, static_cast<float>(n.z));
-      }
+  const std::size_t vrec = vn ? 24 : 12;
+  write_records(file, nv, vrec, threads, [&](std::int64_t i, char* out) {
+    const auto& p = mesh.vertices[static_cast<std::size_t>(i)];
+    out = put(out, static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+    if (vn) {
+      const auto& n = mesh.vertex_normals[static_cast<std::size_t>(i)];
+      put(out, static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z));
     }
-    file.write(buf.data(), buf.size());
-  }
+  });
   const auto fs = static_cast<std::size_t>(mesh.face_size);
-  for (std::int64_t b = 0; b < nf; b += kBlock) {
-    buf.clear();
-    for (std::int64_t f = b; f < std::min(nf, b + kBlock); ++f) {
-      put(buf, static_cast<std::uint8_t>(mesh.face_size));
-      const std::int64_t* idx = mesh.indices.data() + static_cast<std::size_t>(f) * fs;
-      for (std::size_t k = 0; k < fs; ++k) {
-        if (wide) {
-          put(buf, static_cast<std::uint32_t>(idx[k]));
-        } else {
-          put(buf, static_cast<std::int32_t>(idx[k]));
-        }
-      }
-      if (fnorm) {
-        const auto& n = mesh.face_normals[static_cast<std::size_t>(f)];
-        put(buf, static_cast<float>(n.x));
-        put(buf, static_cast<float>(n.y));
-        put(buf, static_cast<float>(n.z));
-      }
-      for (const auto& [name, values] : mesh.face_scalars)
-        put(buf, static_cast<float>(values[static_cast<std::size_t>(f)]));
+  const std::size_t frec = 1 + 4 * fs + (fnorm ? 12 : 0) + 4 * mesh.face_scalars.size();
+  write_records(file, nf, frec, threads, [&](std::int64_t f, char* out) {
+    *out++ = static_cast<char>(static_cast<std::uint8_t>(fs));
+    const std::int64_t* idx = mesh.indices.data() + static_cast<std::size_t>(f) * fs;
+    for (std::size_t k = 0; k < fs; ++k) {
+      // validate() put every index in [0, nv), and nv < 2^32: the low 32 bits are the index,
+      // read as int32 or uint32 (wide) alike.
+      const auto v = static_cast<std::uint32_t>(idx[k]);
+      std::memcpy(out, &v, 4);
+      out += 4;
     }
-    file.write(buf.data(), buf.size());
-  }
+    if (fnorm) {
+      const auto& n = mesh.face_normals[static_cast<std::size_t>(f)];
+      out = put(out, static_cast<float>(n.x), static_cast<float>(n.y), static_cast<float>(n.z));
+    }
+    for (const auto& [name, values] : mesh.face_scalars) {
+      const auto v = static_cast<float>(values[static_cast<std::size_t>(f)]);
+      std::memcpy(out, &v, 4);
+      out += 4;
+    }
+  });
   file.finish();
 }
 
@@ -280,7 +294,7 @@ void write_mesh(const std::string& path, const PolygonMesh& mesh, std::optional<
                 unsigned threads) {
   switch (format ? *format : mesh_format_of(path)) {
   case MeshFormat::ply:
-    write_ply(path, mesh);
+    write_ply(path, mesh, threads);
     return;
   case MeshFormat::obj:
     write_obj(path, mesh, threads);

@@ -16,7 +16,8 @@
 // needs at most 2^32 - 1 vertices and faces of at most 255 vertices. Files are written
 // through a staging file and renamed (kernel/output_files.hpp): an error leaves nothing.
 // Cost: O(V + F) time, memory O(V + F) only for the blocks being formatted (text formats are
-// formatted in parallel blocks of 2^18 items on `threads` threads, 0 = all cores).
+// formatted in parallel blocks of 2^18 items, PLY in blocks of 2^20 records, on `threads`
+// threads, 0 = all cores).
 #pragma once
 
 #include <zdg/kernel/mesh.hpp>
@@ -31,7 +32,7 @@ enum class MeshFormat { ply, obj, off };
 /// The format of a file name by its extension (.ply, .obj, .off; IoError otherwise).
 MeshFormat mesh_format_of(const std::string& path);
 
-void write_ply(const std::string& path, const PolygonMesh& mesh);
+void write_ply(const std::string& path, const PolygonMesh& mesh, unsigned threads = 0);
 void write_obj(const std::string& path, const PolygonMesh& mesh, unsigned threads = 0);
 void write_off(const std::string& path, const PolygonMesh& mesh, unsigned threads = 0);
 
