@@ -719,14 +719,16 @@ void run_surface(const SurfaceArgs& a) {
       fields.emplace_back("at-v", est.at_v);
     }
     std::vector<Point3<double>> normals(static_cast<std::size_t>(sf.size()));
-    for (std::int64_t i = 0; i < sf.size(); ++i) {
-      if (!est.principal.empty()) {
-        normals[std::size_t(i)] = est.principal[std::size_t(i)].normal;
-      } else {
-        const auto t = trivial_normal(sf.surfel(i));
-        normals[std::size_t(i)] = {double(t.x), double(t.y), double(t.z)};
+    parallel_chunks(sf.size(), a.threads, [&](std::int64_t b, std::int64_t e) {
+      for (std::int64_t i = b; i < e; ++i) {
+        if (!est.principal.empty()) {
+          normals[std::size_t(i)] = est.principal[std::size_t(i)].normal;
+        } else {
+          const auto t = trivial_normal(sf.surfel(i));
+          normals[std::size_t(i)] = {double(t.x), double(t.y), double(t.z)};
+        }
       }
-    }
+    });
     if (a.mesh == "primal") {
       mesh.face_scalars = std::move(fields);
       mesh.face_normals = std::move(normals);
@@ -734,16 +736,18 @@ void run_surface(const SurfaceArgs& a) {
       const std::int64_t n = sf.size();
       for (auto& [name, values] : fields) {
         std::vector<double> per_face(static_cast<std::size_t>(mesh.face_count()));
-        for (std::int64_t f = 0; f < mesh.face_count(); ++f) {
-          double s = 0;
-          int k = 0;
-          for (auto v : mesh.face(f))
-            if (v < n) {
-              s += values[std::size_t(v)];
-              ++k;
-            }
-          per_face[std::size_t(f)] = s / k;
-        }
+        parallel_chunks(mesh.face_count(), a.threads, [&](std::int64_t b, std::int64_t e) {
+          for (std::int64_t f = b; f < e; ++f) {
+            double s = 0;
+            int k = 0;
+            for (auto v : mesh.face(f))
+              if (v < n) {
+                s += values[std::size_t(v)];
+                ++k;
+              }
+            per_face[std::size_t(f)] = s / k;
+          }
+        });
         mesh.face_scalars.emplace_back(name, std::move(per_face));
       }
       // Vertex normals: the surfels' (II or elementary), the centres' the mean of their
