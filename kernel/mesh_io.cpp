@@ -97,13 +97,13 @@ char* put(char* out, float x, float y, float z) {
   return out + sizeof v;
 }
 
-// Writes n records of `size` bytes each, record i made by fill(i, out), in blocks of 2^20
+// Writes n records of `size` bytes each, record i made by fill(i, out), in blocks of 2^18
 // records: each block is formatted in parallel while the previous one is being written (the
 // write is the kernel's copy into the page cache, as long as the formatting).
 template <class Fill>
 void write_records(StagedFile& file, std::int64_t n, std::size_t size, unsigned threads,
                    Fill&& fill) {
-  constexpr std::int64_t block = std::int64_t{1} << 20;
+  constexpr std::int64_t block = std::int64_t{1} << 18;
   const auto cap = static_cast<std::size_t>(std::min(n, block)) * size;
   std::vector<char> buf[2] = {std::vector<char>(cap), std::vector<char>(n > block ? cap : 0)};
   std::future<void> writing;

@@ -618,7 +618,8 @@ void run_surface(const SurfaceArgs& a) {
   // Grey values for marching cubes: the threshold's level (positions interpolated).
   const bool grey = a.mesh == "marching-cubes" && !a.in.threshold.empty();
   Image<std::uint8_t> mask = std::move(obj.mask);
-  if (!grey) obj.volume.array.bytes = {}; // the values are not needed any more
+  // The values are not needed any more: free them (assigning {} would keep the capacity).
+  if (!grey) std::vector<unsigned char>().swap(obj.volume.array.bytes);
 
   progress.start("components");
   ComponentSelection comps = select_components(mask, pair.object, which, a.threads, a.in.path);
@@ -632,7 +633,7 @@ void run_surface(const SurfaceArgs& a) {
   const ImageSurfels sf = image_surfels(mask, a.threads);
   progress.done("surfels", str(sf.size()) + " surfels");
   progress.start("closed surfaces");
-  const ImageSurfaces ss = image_surfaces(mask, sf, conv, a.threads);
+  ImageSurfaces ss = image_surfaces(mask, sf, conv, a.threads);
   progress.done("surfaces", str(std::int64_t(ss.surfaces.size())) + " surfaces");
   if (ss.object_euler() != betti.euler)
     throw Error("internal: the surfaces give chi = " + str(ss.object_euler()) +
@@ -680,6 +681,9 @@ void run_surface(const SurfaceArgs& a) {
     }
   }
 
+  // The surface of each surfel (8 bytes per surfel) serves the CSV only from here on.
+  if (a.csv.empty()) std::vector<std::uint64_t>().swap(ss.surface_of);
+
   nlohmann::json mesh_json, picture;
   if (!a.output.empty() || !a.picture.png.empty()) {
     progress.start(a.mesh + " mesh");
@@ -698,7 +702,9 @@ void run_surface(const SurfaceArgs& a) {
       }
       mesh = marching_cubes(mask, sf, conv, place, level ? &*level : nullptr, a.threads);
       edges = 3 * mesh.face_count() / 2;
+      if (grey) std::vector<unsigned char>().swap(obj.volume.array.bytes); // the grey values
     }
+    { const Image<std::uint8_t> freed = std::move(mask); } // no later step reads the mask
     // Per-face fields: the surfel's estimates (primal: face = surfel; marching cubes: the
     // mean over the triangle's surfel vertices).
     std::vector<std::pair<std::string, std::vector<double>>> fields;
@@ -718,20 +724,24 @@ void run_surface(const SurfaceArgs& a) {
       fields.emplace_back("at-nz", std::move(c[2]));
       fields.emplace_back("at-v", est.at_v);
     }
-    std::vector<Point3<double>> normals(static_cast<std::size_t>(sf.size()));
-    parallel_chunks(sf.size(), a.threads, [&](std::int64_t b, std::int64_t e) {
-      for (std::int64_t i = b; i < e; ++i) {
-        if (!est.principal.empty()) {
-          normals[std::size_t(i)] = est.principal[std::size_t(i)].normal;
-        } else {
-          const auto t = trivial_normal(sf.surfel(i));
-          normals[std::size_t(i)] = {double(t.x), double(t.y), double(t.z)};
+    // The surfels' normals (II, or the elementary ones), written where the mesh keeps them:
+    // the face normals of the primal mesh, the first vertex normals of marching cubes.
+    auto surfel_normals = [&](Point3<double>* out) {
+      parallel_chunks(sf.size(), a.threads, [&](std::int64_t b, std::int64_t e) {
+        for (std::int64_t i = b; i < e; ++i) {
+          if (!est.principal.empty()) {
+            out[i] = est.principal[std::size_t(i)].normal;
+          } else {
+            const auto t = trivial_normal(sf.surfel(i));
+            out[i] = {double(t.x), double(t.y), double(t.z)};
+          }
         }
-      }
-    });
+      });
+    };
     if (a.mesh == "primal") {
       mesh.face_scalars = std::move(fields);
-      mesh.face_normals = std::move(normals);
+      mesh.face_normals.resize(static_cast<std::size_t>(sf.size()));
+      surfel_normals(mesh.face_normals.data());
     } else {
       const std::int64_t n = sf.size();
       for (auto& [name, values] : fields) {
@@ -750,25 +760,25 @@ void run_surface(const SurfaceArgs& a) {
         });
         mesh.face_scalars.emplace_back(name, std::move(per_face));
       }
-      // Vertex normals: the surfels' (II or elementary), the centres' the mean of their
-      // neighbours'.
-      mesh.vertex_normals.assign(mesh.vertices.size(), Point3<double>{0, 0, 0});
-      for (std::int64_t i = 0; i < n; ++i)
-        mesh.vertex_normals[std::size_t(i)] = normals[std::size_t(i)];
+      // Vertex normals: the surfels' (vertices 0 .. n - 1), the centres' the mean of their
+      // surfel neighbours' (the surfel normals are not changed while the centres sum them).
+      auto& vn = mesh.vertex_normals;
+      vn.assign(mesh.vertices.size(), Point3<double>{0, 0, 0});
+      surfel_normals(vn.data());
       for (std::int64_t f = 0; f < mesh.face_count(); ++f) {
         const auto t = mesh.face(f);
         for (std::size_t c = 0; c < 3; ++c)
           if (t[c] >= n)
             for (std::size_t d = 0; d < 3; ++d)
-              if (t[d] < n)
-                mesh.vertex_normals[std::size_t(t[c])] =
-                    mesh.vertex_normals[std::size_t(t[c])] + normals[std::size_t(t[d])];
+              if (t[d] < n) vn[std::size_t(t[c])] = vn[std::size_t(t[c])] + vn[std::size_t(t[d])];
       }
-      for (auto& v : mesh.vertex_normals) {
-        const double l = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
-        if (l > 0) v = {v.x / l, v.y / l, v.z / l};
-      }
-      std::vector<Point3<double>>().swap(normals); // 24 bytes per surfel, not needed any more
+      parallel_chunks(std::int64_t(vn.size()), a.threads, [&](std::int64_t b, std::int64_t e) {
+        for (std::int64_t i = b; i < e; ++i) {
+          auto& v = vn[std::size_t(i)];
+          const double l = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
+          if (l > 0) v = {v.x / l, v.y / l, v.z / l};
+        }
+      });
     }
     progress.done("mesh", str(mesh.face_count()) + " faces");
     mesh_json = {{"kind", a.mesh},
@@ -1010,7 +1020,7 @@ void run_contour(const ContourArgs& a) {
                           " pixels, larger than the image (" + str(vol.array.shape[1]) + " x " +
                           str(vol.array.shape[0]) + " pixels)");
   Image<std::uint8_t> mask = std::move(obj.mask);
-  obj.volume.array.bytes = {};
+  std::vector<unsigned char>().swap(obj.volume.array.bytes); // frees (= {} keeps the capacity)
 
   progress.start("components");
   ComponentSelection comps = select_components(mask, pair.object, which, a.threads, a.in.path);
