@@ -133,13 +133,7 @@ ErrorStats run_lb_cotan_mc(const RunInput& in) {
   const detail::Digitized3 d = whole_surface(in, "lb-cotan-mc");
   const TestFunction f = test_function(in, d);
   const PolygonMesh mesh = marching_cubes(d.inside, d.box, in.h, 1);
-  std::vector<std::array<std::int64_t, 3>> triangles;
-  triangles.reserve(std::size_t(mesh.face_count()));
-  for (std::int64_t t = 0; t < mesh.face_count(); ++t) {
-    const auto c = mesh.face(t);
-    triangles.push_back({c[0], c[1], c[2]});
-  }
-  const CotanLaplacian L = cotan_laplacian(mesh.vertices, triangles);
+  const CotanLaplacian L = cotan_laplacian(mesh);
   return laplacian_errors(f, mesh.vertices, L.apply(sampled(f, mesh.vertices)));
 }
 

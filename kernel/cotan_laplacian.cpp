@@ -62,6 +62,20 @@ triangulate_quads(std::span<const std::array<std::int64_t, 4>> quads) {
   return t;
 }
 
+CotanLaplacian cotan_laplacian(const PolygonMesh& mesh) {
+  if (mesh.face_size != 3 && mesh.face_size != 4)
+    throw InvalidArgument("cotan_laplacian: faces of " + std::to_string(mesh.face_size) +
+                          " vertices (triangles or quads only)");
+  std::vector<std::array<std::int64_t, 3>> t;
+  t.reserve(std::size_t(mesh.face_count() * (mesh.face_size - 2)));
+  for (std::int64_t f = 0; f < mesh.face_count(); ++f) {
+    const auto c = mesh.face(f);
+    t.push_back({c[0], c[1], c[2]});
+    if (mesh.face_size == 4) t.push_back({c[0], c[2], c[3]});
+  }
+  return cotan_laplacian(mesh.vertices, t);
+}
+
 SparseMatrix combinatorial_laplacian(const SurfelComplex& c) {
   const auto n = c.surfel_count();
   std::vector<SparseTriplet> t;

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <zdg/arith/point.hpp>
+#include <zdg/kernel/mesh.hpp>
 #include <zdg/kernel/sparse_matrix.hpp>
 #include <zdg/kernel/surfel_complex.hpp>
 
@@ -47,6 +48,10 @@ struct CotanLaplacian {
 /// for an index out of range or a degenerate triangle (zero area).
 CotanLaplacian cotan_laplacian(std::span<const Point3<double>> vertices,
                                std::span<const std::array<std::int64_t, 3>> triangles);
+
+/// The cotangent Laplacian of a mesh of triangles, or of quads split as below;
+/// InvalidArgument for other faces (and as above).
+CotanLaplacian cotan_laplacian(const PolygonMesh& mesh);
 
 /// Each quad (v0, v1, v2, v3) as the triangles (v0, v1, v2), (v0, v2, v3).
 std::vector<std::array<std::int64_t, 3>>

@@ -63,12 +63,7 @@ Operator cotan_operator(const SurfelComplex& c) {
 // the surfel centres: level 1/2 between voxel centres), at its vertices: M = lumped mass.
 Operator marching_cubes_operator(const VoxelPredicate& inside, const VoxelBox& b, double h) {
   const PolygonMesh mesh = marching_cubes(inside, b, h, 1);
-  std::vector<std::array<std::int64_t, 3>> triangles;
-  for (std::int64_t t = 0; t < mesh.face_count(); ++t) {
-    const auto c = mesh.face(t);
-    triangles.push_back({c[0], c[1], c[2]});
-  }
-  const CotanLaplacian L = cotan_laplacian(mesh.vertices, triangles);
+  const CotanLaplacian L = cotan_laplacian(mesh);
   return {L.stiffness, L.mass, mesh.vertices};
 }
 

@@ -249,6 +249,17 @@ TEST(CotanLaplacian, LinearPrecisionOnAPlanarPatchAndSymmetry) {
   EXPECT_NEAR(total, area, 1e-12);
   const std::vector<std::array<std::int64_t, 3>> flat = {{0, 1, 1}};
   EXPECT_THROW(cotan_laplacian(v, flat), InvalidArgument);
+  // The same operator from the quad mesh (split the same way), and no other face size.
+  zdg::PolygonMesh mesh;
+  mesh.vertices = v;
+  mesh.face_size = 4;
+  for (const auto& q : quads) mesh.indices.insert(mesh.indices.end(), q.begin(), q.end());
+  const CotanLaplacian m = cotan_laplacian(mesh);
+  EXPECT_EQ(m.mass, c.mass);
+  EXPECT_EQ(m.stiffness.multiply(u), su);
+  mesh.face_size = 5;
+  mesh.indices.resize(5);
+  EXPECT_THROW(cotan_laplacian(mesh), InvalidArgument);
 }
 
 // The combinatorial Laplacian of the surfel adjacency: four neighbours per surfel, L 1 = 0,
