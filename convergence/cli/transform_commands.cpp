@@ -29,8 +29,10 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include <unistd.h>
@@ -245,6 +247,31 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The narrowest unsigned dtype that holds every value up to `bound` (none past 64 bits): the
+// output type of every distance transform the command writes.
+std::optional<DType> narrowest_unsigned(const BigInt& bound) {
+  if (bound <= 255) return DType::U8;
+  if (bound <= 65535) return DType::U16;
+  if (bound <= BigInt(4294967295ULL)) return DType::U32;
+  if (bound <= BigInt(std::numeric_limits<std::uint64_t>::max())) return DType::U64;
+  return std::nullopt;
+}
+
+// fn(std::type_identity<T>{}) with T the unsigned type of the dtype (uint64 for any other).
+template <class Fn>
+void with_unsigned(DType dtype, Fn&& fn) {
+  switch (dtype) {
+  case DType::U8:
+    return fn(std::type_identity<std::uint8_t>{});
+  case DType::U16:
+    return fn(std::type_identity<std::uint16_t>{});
+  case DType::U32:
+    return fn(std::type_identity<std::uint32_t>{});
+  default:
+    return fn(std::type_identity<std::uint64_t>{});
+  }
+}
+
 template <class T>
 void run_dt_as(TransformArgs& a, const Image<std::uint8_t>& mask, const TransformOptions& opt,
                DType dtype, std::chrono::steady_clock::time_point t0) {
@@ -409,21 +436,16 @@ bool lean_dt(TransformArgs& a) {
   const Domain dom = npy_domain(a, lay);
   const auto opt = make_options(a, dom.dim());
   const BigInt bound = distance_transform_max_value(dom, opt);
-  if (bound <= 255) {
-    lean_dt_as<std::uint8_t>(a, lay, dom, opt, DType::U8);
-  } else if (bound <= 65535) {
-    lean_dt_as<std::uint16_t>(a, lay, dom, opt, DType::U16);
-  } else if (bound <= BigInt(4294967295ULL)) {
-    lean_dt_as<std::uint32_t>(a, lay, dom, opt, DType::U32);
-  } else if (bound <= BigInt(std::numeric_limits<std::uint64_t>::max())) {
-    lean_dt_as<std::uint64_t>(a, lay, dom, opt, DType::U64);
-  } else {
+  const auto dtype = narrowest_unsigned(bound);
+  if (!dtype) {
     if (a.out_of_core) {
       throw InvalidArgument("--out-of-core: values up to " + bound.str() +
                             " do not fit 64 bits; use the in-memory transform");
     }
     return false;
   }
+  with_unsigned(*dtype,
+                [&]<class T>(std::type_identity<T>) { lean_dt_as<T>(a, lay, dom, opt, *dtype); });
   return true;
 }
 
@@ -434,14 +456,9 @@ void run_dt(TransformArgs& a) {
   auto opt = make_options(a, mask.dim());
   auto t0 = std::chrono::steady_clock::now();
   BigInt bound = distance_transform_max_value(mask.domain(), opt);
-  if (bound <= 255) {
-    run_dt_as<std::uint8_t>(a, mask, opt, DType::U8, t0);
-  } else if (bound <= 65535) {
-    run_dt_as<std::uint16_t>(a, mask, opt, DType::U16, t0);
-  } else if (bound <= BigInt(4294967295ULL)) {
-    run_dt_as<std::uint32_t>(a, mask, opt, DType::U32, t0);
-  } else if (bound <= BigInt(std::numeric_limits<std::uint64_t>::max())) {
-    run_dt_as<std::uint64_t>(a, mask, opt, DType::U64, t0);
+  if (const auto dtype = narrowest_unsigned(bound)) {
+    with_unsigned(*dtype,
+                  [&]<class T>(std::type_identity<T>) { run_dt_as<T>(a, mask, opt, *dtype, t0); });
   } else {
     // Values might exceed 64 bits: compute exactly, then check what was reached.
     auto dt = distance_transform<BigInt>(mask, opt);
@@ -655,10 +672,7 @@ void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
       out_item = 8 * static_cast<std::uint64_t>(dom.dim());
     } else {
       const BigInt bound = distance_transform_max_value(dom, opt);
-      dtype = bound <= 255                     ? DType::U8
-              : bound <= 65535                 ? DType::U16
-              : bound <= BigInt(4294967295ULL) ? DType::U32
-                                               : DType::U64;
+      dtype = narrowest_unsigned(bound).value_or(DType::U64);
       out_item = dtype_size(dtype);
     }
     if (static_cast<std::uint64_t>(part.columns.size()) * out_item > INT_MAX ||
@@ -707,16 +721,9 @@ void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
     ctx.exit_code = 2;
     return;
   }
-  switch (dtype) {
-  case DType::U8:
-    return mpi_transform_as<std::uint8_t>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
-  case DType::U16:
-    return mpi_transform_as<std::uint16_t>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
-  case DType::U32:
-    return mpi_transform_as<std::uint32_t>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
-  default:
-    return mpi_transform_as<std::uint64_t>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
-  }
+  with_unsigned(dtype, [&]<class T>(std::type_identity<T>) {
+    mpi_transform_as<T>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
+  });
 }
 
 } // namespace
