@@ -15,8 +15,8 @@
 // back to that float in OBJ and OFF). The mesh is validated first (InvalidArgument); a PLY
 // needs at most 2^32 - 1 vertices and faces of at most 255 vertices. Files are written
 // through a staging file and renamed (kernel/output_files.hpp): an error leaves nothing.
-// Cost: O(V + F) time, memory O(V + F) only for the blocks being formatted (text formats are
-// formatted in parallel blocks of 2^18 items, PLY in two alternating blocks of 2^18 records, on `threads`
+// Cost: O(V + F) time, memory O(V + F) only for the blocks being formatted (text formats in
+// parallel blocks of 2^18 items, PLY in two alternating blocks of 2^18 records, on `threads`
 // threads, 0 = all cores).
 #pragma once
 
