@@ -129,11 +129,22 @@ std::vector<EstimatorParameter> half_power_law(const std::string& what) {
           {"alpha", "1/2", 0.0, 1.0, "exponent of the radius law " + what + " = k h^alpha"}};
 }
 
+// The proven rate holds for offset and kernel radii of order h^{1/4} (papers/THEORY.md):
+// R = r = k h^{1/4} on C^2 boundaries with positive reach (the registry's C^3 shapes).
 EstimatorTheory vcm_theory() {
-  return {"multigrid convergence of the digital VCM normal (Cuel, Lachaud, Thibert, DGCI 2014; "
-          "Cuel, Lachaud, Merigot, Thibert, SIAM J. Imaging Sci. 8(2), 2015); its rate is not "
-          "instantiated for this radius law: no verdict",
-          {}};
+  const std::string source =
+      "Cuel, Lachaud, Thibert, DGCI 2014; Cuel, Lachaud, Merigot, Thibert, SIAM J. Imaging "
+      "Sci. 8(2), 2015";
+  return {"O(h^{1/8}) for the digital VCM normal with R = r = k h^{1/4} on C^2 surfaces with "
+          "positive reach (" +
+              source + "); no verdict for other radius laws",
+          [=](const ShapeClass& c, const EstimatorParameters& p) -> std::optional<ProvenRate> {
+            if (c.c3 && std::abs(p.alpha - 0.25) < 1e-12) {
+              return ProvenRate{0.125, "O(h^{1/8})",
+                                "C^2 surface with positive reach, R = r = k h^{1/4}", source};
+            }
+            return std::nullopt;
+          }};
 }
 
 EstimatorTheory cnc_theory() {

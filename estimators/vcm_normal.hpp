@@ -33,8 +33,9 @@
 // Rates: the papers prove that the digital VCM converges to the VCM of the continuous surface
 // as h -> 0 (stability of the VCM under Hausdorff perturbation, d_H(K, dX) = O(h) for
 // digitizations of C^2 boundaries with positive reach) and deduce multigrid convergence of the
-// normal for radii R, r tending to zero slower than h (DGCI 2014, SIAM 2015); the registry
-// reports the fit without a verdict (papers/THEORY.md).
+// normal in O(h^{1/8}) for offset and kernel radii R, r of order h^{1/4} (DGCI 2014, SIAM 2015;
+// observed about O(h)). The registry claims that rate for R = r = k h^{1/4} and gives no
+// verdict for other radius laws (papers/THEORY.md).
 #pragma once
 
 #include <zdg/arith/point.hpp>
