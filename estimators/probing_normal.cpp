@@ -85,10 +85,42 @@ SurfelProbe probing_surfel_normal(const VoxelPredicate& inside, const VoxelBox& 
   const int sigma = s.direct ? 1 : -1;
   const Voxel outer = outer_voxel(s);
   std::optional<Start> best;
-  for (const auto& [sb, sc] :
-       {std::pair{1, 1}, std::pair{1, -1}, std::pair{-1, 1}, std::pair{-1, -1}}) {
+  constexpr std::pair<int, int> kSigns[] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
+  for (const auto& [sb, sc] : kSigns) {
     auto st = walk(in, outer, {unit(a, sigma), unit(b, sb), unit(c, sc)}, {a, b, c});
     if (st && (!best || st->moves < best->moves)) best = st;
+  }
+  // No octant: the sheared frames (u_a, u_a + s_b e_b, u_a + s_c e_c), unimodular like the
+  // octants, whose dot products with N are positive for both signs of a tangent component
+  // smaller than |N_a| (the case of the octants' failures: a tangent component near zero).
+  // The shortest walk wins; among equally short ones, the frame whose signs agree with the
+  // tangent components of a local normal (the solid's moment about the inner voxel in the
+  // 5 x 5 x 5 block: the normal points away from where X extends), then the order above.
+  bool sheared = false;
+  if (!best) {
+    const Voxel inner = outer - unit(a, sigma);
+    std::int64_t mb = 0, mc = 0;
+    for (std::int64_t dz = -2; dz <= 2; ++dz)
+      for (std::int64_t dy = -2; dy <= 2; ++dy)
+        for (std::int64_t dx = -2; dx <= 2; ++dx) {
+          const Voxel d{dx, dy, dz};
+          if (!in(inner + d)) continue;
+          mb += coord(d, b);
+          mc += coord(d, c);
+        }
+    const Voxel ua = unit(a, sigma);
+    int best_agree = -1;
+    for (const auto& [sb, sc] : kSigns) {
+      auto st = walk(in, outer, {ua, ua + unit(b, sb), ua + unit(c, sc)}, {a, b, c});
+      if (!st) continue;
+      // Agreement with the local normal's tangent signs (0, 1 or 2), the tie-break.
+      const int agree = int(mb * sb < 0) + int(mc * sc < 0);
+      if (!best || st->moves < best->moves || (st->moves == best->moves && agree > best_agree)) {
+        best = st;
+        best_agree = agree;
+      }
+    }
+    sheared = best.has_value();
   }
   SurfelProbe out;
   const auto t = trivial_normal(s);
@@ -113,6 +145,7 @@ SurfelProbe probing_surfel_normal(const VoxelPredicate& inside, const VoxelBox& 
     const double len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
     out.normal = {n.x / len, n.y / len, n.z / len};
     out.probed = true;
+    out.sheared = sheared;
     out.steps = steps;
     out.predicate_calls = calls;
   } catch (const InvalidArgument&) {
