@@ -94,31 +94,43 @@ SurfelProbe probing_surfel_normal(const VoxelPredicate& inside, const VoxelBox& 
   // octants, whose dot products with N are positive for both signs of a tangent component
   // smaller than |N_a| (the case of the octants' failures: a tangent component near zero).
   // The shortest walk wins; among equally short ones, the frame whose signs agree with the
-  // tangent components of a local normal (the solid's moment about the inner voxel in the
-  // 5 x 5 x 5 block: the normal points away from where X extends), then the order above.
+  // tangent components of a local normal m (minus the solid's moment about the inner voxel
+  // in the 5 x 5 x 5 block: the normal points away from where X extends), then the order
+  // above. Where none starts either (the surfel's axis nearly orthogonal to the normal: a
+  // riser of the staircase), the same sheared frames around the other axes a' with
+  // m_a' != 0, oriented by the sign of m_a', the larger |m_a'| first.
   bool sheared = false;
   if (!best) {
     const Voxel inner = outer - unit(a, sigma);
-    std::int64_t mb = 0, mc = 0;
+    std::int64_t m[3] = {0, 0, 0};
     for (std::int64_t dz = -2; dz <= 2; ++dz)
       for (std::int64_t dy = -2; dy <= 2; ++dy)
         for (std::int64_t dx = -2; dx <= 2; ++dx) {
           const Voxel d{dx, dy, dz};
           if (!in(inner + d)) continue;
-          mb += coord(d, b);
-          mc += coord(d, c);
+          m[0] -= dx, m[1] -= dy, m[2] -= dz;
         }
-    const Voxel ua = unit(a, sigma);
-    int best_agree = -1;
-    for (const auto& [sb, sc] : kSigns) {
-      auto st = walk(in, outer, {ua, ua + unit(b, sb), ua + unit(c, sc)}, {a, b, c});
-      if (!st) continue;
-      // Agreement with the local normal's tangent signs (0, 1 or 2), the tie-break.
-      const int agree = int(mb * sb < 0) + int(mc * sc < 0);
-      if (!best || st->moves < best->moves || (st->moves == best->moves && agree > best_agree)) {
-        best = st;
-        best_agree = agree;
+    auto sheared_frames = [&](int ax, int sg) {
+      const int bx = (ax + 1) % 3, cx = (ax + 2) % 3;
+      const Voxel ua = unit(ax, sg);
+      int best_agree = -1;
+      for (const auto& [sb, sc] : kSigns) {
+        auto st = walk(in, outer, {ua, ua + unit(bx, sb), ua + unit(cx, sc)}, {ax, bx, cx});
+        if (!st) continue;
+        // Agreement with the local normal's tangent signs (0, 1 or 2), the tie-break.
+        const int agree = int(m[bx] * sb > 0) + int(m[cx] * sc > 0);
+        if (!best || st->moves < best->moves || (st->moves == best->moves && agree > best_agree)) {
+          best = st;
+          best_agree = agree;
+        }
       }
+    };
+    sheared_frames(a, sigma);
+    int others[2] = {b, c};
+    if (std::abs(m[c]) > std::abs(m[b])) std::swap(others[0], others[1]);
+    for (const int ax : others) {
+      if (best) break;
+      if (m[ax] != 0) sheared_frames(ax, m[ax] > 0 ? 1 : -1);
     }
     sheared = best.has_value();
   }

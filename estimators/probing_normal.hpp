@@ -27,7 +27,9 @@
 //   is taken, on a tie the frame whose signs (s_b, s_c) agree with the tangent components of
 //   a local normal (from the moment of X about the inner voxel in its 5 x 5 x 5 block: the
 //   normal points away from where X extends; a rule that commutes with the 48 symmetries),
-//   then the order above.
+//   then the order above. Where none starts either (the surfel's axis nearly orthogonal to
+//   the normal: a riser of the staircase), the sheared frames around the other two axes a'
+//   with a nonzero local normal component, u_a' along its sign, the larger component first.
 // Why this start: on a digital half-space {x : N . x < c} with N primitive and three nonzero
 // components, only the octant of N can end the walk (in any other one, q - u_k climbs), and
 // the walk ends at an apex with c <= N . q < c + min |N_k|. When N . q = c (always when some
