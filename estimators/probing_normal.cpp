@@ -85,52 +85,50 @@ SurfelProbe probing_surfel_normal(const VoxelPredicate& inside, const VoxelBox& 
   const int sigma = s.direct ? 1 : -1;
   const Voxel outer = outer_voxel(s);
   std::optional<Start> best;
+  // A local normal m (minus the solid's moment about the inner voxel in the 5 x 5 x 5 block:
+  // the normal points away from where X extends), computed only when the octants fail; zero
+  // until then, so that octant ties keep the fixed order.
+  std::int64_t m[3] = {0, 0, 0};
+  // The walks in the four frames (u_a, shear u_a + s_b e_b, shear u_a + s_c e_c) around axis
+  // ax (shear 0: the octants, 1: the sheared frames); the shortest walk wins, on a tie the
+  // frame whose signs agree more with m's tangent components, then the order of kSigns.
   constexpr std::pair<int, int> kSigns[] = {{1, 1}, {1, -1}, {-1, 1}, {-1, -1}};
-  for (const auto& [sb, sc] : kSigns) {
-    auto st = walk(in, outer, {unit(a, sigma), unit(b, sb), unit(c, sc)}, {a, b, c});
-    if (st && (!best || st->moves < best->moves)) best = st;
-  }
-  // No octant: the sheared frames (u_a, u_a + s_b e_b, u_a + s_c e_c), unimodular like the
-  // octants, whose dot products with N are positive for both signs of a tangent component
-  // smaller than |N_a| (the case of the octants' failures: a tangent component near zero).
-  // The shortest walk wins; among equally short ones, the frame whose signs agree with the
-  // tangent components of a local normal m (minus the solid's moment about the inner voxel
-  // in the 5 x 5 x 5 block: the normal points away from where X extends), then the order
-  // above. Where none starts either (the surfel's axis nearly orthogonal to the normal: a
-  // riser of the staircase), the same sheared frames around the other axes a' with
-  // m_a' != 0, oriented by the sign of m_a', the larger |m_a'| first.
+  auto frames = [&](int ax, int sg, int shear) {
+    const int bx = (ax + 1) % 3, cx = (ax + 2) % 3;
+    const Voxel ua = unit(ax, sg), sh{shear * ua.x, shear * ua.y, shear * ua.z};
+    int best_agree = -1;
+    for (const auto& [sb, sc] : kSigns) {
+      auto st = walk(in, outer, {ua, sh + unit(bx, sb), sh + unit(cx, sc)}, {ax, bx, cx});
+      if (!st) continue;
+      const int agree = int(m[bx] * sb > 0) + int(m[cx] * sc > 0);
+      if (!best || st->moves < best->moves || (st->moves == best->moves && agree > best_agree)) {
+        best = st;
+        best_agree = agree;
+      }
+    }
+  };
+  frames(a, sigma, 0);
+  // No octant: the sheared frames, unimodular like the octants, whose dot products with N are
+  // positive for both signs of a tangent component smaller than |N_a| (the case of the
+  // octants' failures: a tangent component near zero). Where none starts either (the
+  // surfel's axis nearly orthogonal to the normal: a riser of the staircase), the sheared
+  // frames around the other axes a' with m_a' != 0, oriented by the sign of m_a', the larger
+  // |m_a'| first.
   bool sheared = false;
   if (!best) {
     const Voxel inner = outer - unit(a, sigma);
-    std::int64_t m[3] = {0, 0, 0};
     for (std::int64_t dz = -2; dz <= 2; ++dz)
       for (std::int64_t dy = -2; dy <= 2; ++dy)
         for (std::int64_t dx = -2; dx <= 2; ++dx) {
-          const Voxel d{dx, dy, dz};
-          if (!in(inner + d)) continue;
+          if (!in(inner + Voxel{dx, dy, dz})) continue;
           m[0] -= dx, m[1] -= dy, m[2] -= dz;
         }
-    auto sheared_frames = [&](int ax, int sg) {
-      const int bx = (ax + 1) % 3, cx = (ax + 2) % 3;
-      const Voxel ua = unit(ax, sg);
-      int best_agree = -1;
-      for (const auto& [sb, sc] : kSigns) {
-        auto st = walk(in, outer, {ua, ua + unit(bx, sb), ua + unit(cx, sc)}, {ax, bx, cx});
-        if (!st) continue;
-        // Agreement with the local normal's tangent signs (0, 1 or 2), the tie-break.
-        const int agree = int(m[bx] * sb > 0) + int(m[cx] * sc > 0);
-        if (!best || st->moves < best->moves || (st->moves == best->moves && agree > best_agree)) {
-          best = st;
-          best_agree = agree;
-        }
-      }
-    };
-    sheared_frames(a, sigma);
+    frames(a, sigma, 1);
     int others[2] = {b, c};
     if (std::abs(m[c]) > std::abs(m[b])) std::swap(others[0], others[1]);
     for (const int ax : others) {
       if (best) break;
-      if (m[ax] != 0) sheared_frames(ax, m[ax] > 0 ? 1 : -1);
+      if (m[ax] != 0) frames(ax, m[ax] > 0 ? 1 : -1, 1);
     }
     sheared = best.has_value();
   }

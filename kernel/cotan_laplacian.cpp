@@ -66,13 +66,16 @@ CotanLaplacian cotan_laplacian(const PolygonMesh& mesh) {
   if (mesh.face_size != 3 && mesh.face_size != 4)
     throw InvalidArgument("cotan_laplacian: faces of " + std::to_string(mesh.face_size) +
                           " vertices (triangles or quads only)");
-  std::vector<std::array<std::int64_t, 3>> t;
-  t.reserve(std::size_t(mesh.face_count() * (mesh.face_size - 2)));
-  for (std::int64_t f = 0; f < mesh.face_count(); ++f) {
-    const auto c = mesh.face(f);
-    t.push_back({c[0], c[1], c[2]});
-    if (mesh.face_size == 4) t.push_back({c[0], c[2], c[3]});
+  const auto nf = static_cast<std::size_t>(mesh.face_count());
+  if (mesh.face_size == 4) { // split as triangulate_quads does
+    std::vector<std::array<std::int64_t, 4>> q(nf);
+    for (std::size_t f = 0; f < nf; ++f)
+      for (std::size_t k = 0; k < 4; ++k) q[f][k] = mesh.indices[4 * f + k];
+    return cotan_laplacian(mesh.vertices, triangulate_quads(q));
   }
+  std::vector<std::array<std::int64_t, 3>> t(nf);
+  for (std::size_t f = 0; f < nf; ++f)
+    for (std::size_t k = 0; k < 3; ++k) t[f][k] = mesh.indices[3 * f + k];
   return cotan_laplacian(mesh.vertices, t);
 }
 

@@ -78,10 +78,8 @@ void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int ma
       return;
     }
     std::vector<V> f;
-    if constexpr (std::is_trivially_copyable_v<V>)
-      reserve_populated(f, static_cast<std::size_t>(dom.size()),
-                        detail::resolve_threads(opt.threads, dom.size()));
-    f.resize(static_cast<std::size_t>(dom.size()));
+    assign_populated(f, static_cast<std::size_t>(dom.size()),
+                     detail::resolve_threads(opt.threads, dom.size()));
     detail::separable_envelope_part<V>(dom, opt, mask, f.data(), inf, nullptr, mask_item_bytes,
                                        whole);
     const V* fp = f.data();
@@ -97,10 +95,8 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
   // The output's pages are mapped by all the workers (the fill itself is then a memset at
   // memory speed instead of one page fault per 4 KiB on one thread).
   std::vector<T> values;
-  if constexpr (std::is_trivially_copyable_v<T>)
-    reserve_populated(values, static_cast<std::size_t>(shape.size()),
-                      detail::resolve_threads(opt.threads, shape.size()));
-  values.resize(static_cast<std::size_t>(shape.size()));
+  assign_populated(values, static_cast<std::size_t>(shape.size()),
+                   detail::resolve_threads(opt.threads, shape.size()));
   Image<T> out(shape.domain(), std::move(values));
   distance_transform_into<T>(shape.domain(), shape.values().data(), 1, opt, out.values().data());
   return out;

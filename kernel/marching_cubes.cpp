@@ -69,10 +69,8 @@ PolygonMesh marching_cubes(const Image<std::uint8_t>& image, const ImageSurfels&
     first_triangle[t + 1] += first_triangle[t];
     first_centre[t + 1] += first_centre[t];
   }
-  reserve_populated(mesh.indices, static_cast<std::size_t>(3 * first_triangle.back()), threads);
-  mesh.indices.resize(static_cast<std::size_t>(3 * first_triangle.back()));
-  reserve_populated(mesh.vertices, static_cast<std::size_t>(n + first_centre.back()), threads);
-  mesh.vertices.resize(static_cast<std::size_t>(n + first_centre.back()));
+  assign_populated(mesh.indices, static_cast<std::size_t>(3 * first_triangle.back()), threads);
+  assign_populated(mesh.vertices, static_cast<std::size_t>(n + first_centre.back()), threads);
 
   // The surfel vertices: on the cut edge from the inner to the outer voxel centre.
   parallel_chunks(n, static_cast<unsigned>(chunks), [&](std::int64_t b, std::int64_t e) {

@@ -150,21 +150,6 @@ inline SurfelCorner surfel_corner(const std::int64_t c[3], std::uint64_t code, i
   return {{c[0] + k.dq[0], c[1] + k.dq[1], c[2] + k.dq[2]}, k.face};
 }
 
-/// The grid indices (i, j, k) of the inner voxel of the surfel of code `code`.
-struct GridIndex {
-  std::int64_t c[3];
-};
-inline GridIndex code_indices(const VoxelGrid& g, std::uint64_t code) {
-  const std::int64_t v = code_voxel(code);
-  return {{v % g.nx, (v / g.nx) % g.ny, v / (g.nx * g.ny)}};
-}
-
-/// Corner n (0..3) of the surfel of code c, in the counterclockwise order seen from outside
-/// of surfel_pointels().
-inline SurfelCorner surfel_corner(const VoxelGrid& g, std::uint64_t code, int n) {
-  return surfel_corner(code_indices(g, code).c, code, n);
-}
-
 /// Which corner (0..3) of the surfel of code `code`, inner voxel of grid indices c, is the
 /// pointel q (which must be one of them).
 inline int corner_index(const std::int64_t c[3], std::uint64_t code, const std::int64_t q[3]) {
@@ -172,11 +157,6 @@ inline int corner_index(const std::int64_t c[3], std::uint64_t code, const std::
   const bool ub = q[b] > c[b], uc = q[cc] > c[cc];
   const int jn = ub ? (uc ? 2 : 1) : (uc ? 3 : 0);
   return code_positive(code) ? jn : 3 - jn;
-}
-
-/// Which corner (0..3) of the surfel of code c is the pointel q (which must be one of them).
-inline int corner_index(const VoxelGrid& g, std::uint64_t code, const std::int64_t q[3]) {
-  return corner_index(code_indices(g, code).c, code, q);
 }
 
 /// The boundary surfel of local face f at the pointel q, for the configuration byte of q (f
@@ -200,13 +180,6 @@ inline LocalSurfel local_face_surfel(const VoxelGrid& g, const std::int64_t q[3]
   s.row = s.c[2] * g.ny + s.c[1];
   s.code = surfel_code(s.row * g.nx + s.c[0], a, low_inside);
   return s;
-}
-
-/// The code of the boundary surfel of local face f at the pointel q, for the configuration
-/// byte of q (f must be a boundary face of it).
-inline std::uint64_t local_face_code(const VoxelGrid& g, const std::int64_t q[3], int f,
-                                     std::uint8_t configuration) {
-  return local_face_surfel(g, q, f, configuration).code;
 }
 
 } // namespace zdg

@@ -2,15 +2,17 @@
 //
 // A buffer of hundreds of megabytes (a mesh's indices and vertices) first touched by one
 // thread costs one page fault per 4 KiB page: 70,000 faults for 283 MB, about as long as the
-// work that fills it, and serial (std::vector's value-initialization). reserve_populated()
-// reserves the capacity of a vector (untouched: the allocator maps fresh zero pages) and has
-// the kernel map its pages in `threads` parallel ranges (madvise(MADV_POPULATE_WRITE), Linux
-// 5.14 and later), so that the fill that follows finds them mapped. Where the call is not
-// offered it only reserves. The contents never depend on it. (Huge pages were measured too:
-// the first fault of a fresh process may then stall in memory compaction, 0.4 s for 300 MB.)
+// work that fills it, and serial (std::vector's value-initialization). assign_populated()
+// reserves the capacity of a vector (untouched: the allocator maps fresh zero pages), has the
+// kernel map its pages in `threads` parallel ranges (madvise(MADV_POPULATE_WRITE), Linux 5.14
+// and later), then fills it, so that the fill finds them mapped. Where the call is not
+// offered (or for element types that are not trivially copyable) it only assigns. The contents
+// never depend on it. (Huge pages were measured too: the first fault of a fresh process may then
+// stall in memory compaction, 0.4 s for 300 MB.)
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace zdg {
@@ -19,12 +21,17 @@ namespace zdg {
 /// cores); nothing under 4 MiB or where unsupported. Never fails.
 void populate_pages(void* p, std::size_t bytes, unsigned threads) noexcept;
 
-/// v.reserve(n), with the new storage mapped in parallel.
+/// v.assign(n, value), the new storage's pages mapped by `threads` workers first.
 template <class T>
-void reserve_populated(std::vector<T>& v, std::size_t n, unsigned threads) {
-  if (v.capacity() >= n) return;
-  v.reserve(n);
-  populate_pages(v.data(), n * sizeof(T), threads);
+void assign_populated(std::vector<T>& v, std::size_t n, unsigned threads, const T& value = T{}) {
+  if constexpr (std::is_trivially_copyable_v<T>) {
+    if (v.capacity() < n) {
+      std::vector<T>().swap(v);
+      v.reserve(n);
+      populate_pages(v.data(), n * sizeof(T), threads);
+    }
+  }
+  v.assign(n, value);
 }
 
 } // namespace zdg

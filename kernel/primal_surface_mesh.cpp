@@ -21,8 +21,7 @@ PolygonMesh primal_surface_mesh(const Image<std::uint8_t>& image, const ImageSur
   const PointelStar* stars = pointel_stars(convention.linels);
   PolygonMesh mesh;
   mesh.face_size = 4;
-  reserve_populated(mesh.indices, static_cast<std::size_t>(4 * n), threads);
-  mesh.indices.assign(static_cast<std::size_t>(4 * n), -1);
+  assign_populated<std::int64_t>(mesh.indices, static_cast<std::size_t>(4 * n), threads, -1);
 
   const std::int64_t chunks = worker_count(threads, n);
   auto bounds = [&](std::int64_t t) {
@@ -58,8 +57,7 @@ PolygonMesh primal_surface_mesh(const Image<std::uint8_t>& image, const ImageSur
   });
   for (std::size_t t = 0; t < static_cast<std::size_t>(chunks); ++t)
     first_vertex[t + 1] += first_vertex[t];
-  reserve_populated(mesh.vertices, static_cast<std::size_t>(first_vertex.back()), threads);
-  mesh.vertices.resize(static_cast<std::size_t>(first_vertex.back()));
+  assign_populated(mesh.vertices, static_cast<std::size_t>(first_vertex.back()), threads);
 
   // Pass 2: the owners number their vertices (in surfel order) and place them.
   parallel_for(chunks, static_cast<unsigned>(chunks), [&](std::int64_t t) {
