@@ -61,9 +61,12 @@ void reduce(Point4<I>& p, int d) {
 template <class I>
 class Seidel {
 public:
-  /// Feasibility of rows[0..m) at depth 0 (dimension 4); the rows are used in the given order.
-  std::optional<Point4<I>> solve(std::vector<Row<I>> rows) {
-    levels_[0] = std::move(rows);
+  /// The depth-0 rows of the next solve, to be filled in place (their buffer is kept between
+  /// solves).
+  std::vector<Row<I>>& input() { return levels_[0]; }
+
+  /// Feasibility of the rows of input() at depth 0 (dimension 4), used in their order.
+  std::optional<Point4<I>> solve() {
     violated_.clear();
     Point4<I> out;
     if (!solve_level(0, levels_[0].size(), I(1), out)) return std::nullopt;
@@ -158,14 +161,27 @@ private:
         if (l == piv) continue;
         s -= ri[static_cast<std::size_t>(l)] * y.x[static_cast<std::size_t>(t++)];
       }
+      // x_piv = s / (p y.den). When the pivot divides s (the usual case: y.den is then a common
+      // denominator of x, e.g. the determinant of the tight rows by Cramer's rule), x = (y, s / p)
+      // / y.den keeps y's denominator and needs no gcd; otherwise scale by |p| and reduce.
       t = 0;
-      for (int l = 0; l < d; ++l) {
-        if (l == piv) continue;
-        x.x[static_cast<std::size_t>(l)] = y.x[static_cast<std::size_t>(t++)] * ap;
+      if (s % ap == 0) {
+        const I q = s / ap;
+        for (int l = 0; l < d; ++l) {
+          if (l == piv) continue;
+          x.x[static_cast<std::size_t>(l)] = y.x[static_cast<std::size_t>(t++)];
+        }
+        x.x[static_cast<std::size_t>(piv)] = sp > 0 ? q : I(-q);
+        x.den = y.den;
+      } else {
+        for (int l = 0; l < d; ++l) {
+          if (l == piv) continue;
+          x.x[static_cast<std::size_t>(l)] = y.x[static_cast<std::size_t>(t++)] * ap;
+        }
+        x.x[static_cast<std::size_t>(piv)] = sp > 0 ? s : I(-s);
+        x.den = ap * y.den;
+        reduce(x, d);
       }
-      x.x[static_cast<std::size_t>(piv)] = sp > 0 ? s : I(-s);
-      x.den = ap * y.den;
-      reduce(x, d);
     }
     out = x;
     return true;
@@ -173,6 +189,9 @@ private:
 
   std::array<std::vector<Row<I>>, 4> levels_;
   std::vector<std::size_t> violated_;
+
+public:
+  std::vector<std::size_t> scratch_idx, scratch_pos; // separate()'s order, kept between solves
 };
 
 // A fixed pseudo-random permutation (xorshift), identical on every run and platform.
@@ -230,7 +249,10 @@ std::optional<LocalCircle<I>> separate(Seidel<I>& lp, std::span<const Pixel> inn
                                        std::span<const std::size_t> first,
                                        std::vector<std::size_t>* violated = nullptr) {
   const std::size_t m = inner.size() + outer.size();
-  std::vector<std::size_t> idx(m), pos(m);
+  std::vector<std::size_t>& idx = lp.scratch_idx;
+  std::vector<std::size_t>& pos = lp.scratch_pos;
+  idx.resize(m);
+  pos.resize(m);
   for (std::size_t k = 0; k < m; ++k) idx[k] = pos[k] = k;
   std::size_t head = 0;
   for (std::size_t k : first) {
@@ -241,13 +263,14 @@ std::optional<LocalCircle<I>> separate(Seidel<I>& lp, std::span<const Pixel> inn
     pos[k] = head++;
   }
   shuffle_tail(idx, head, m);
-  std::vector<Row<I>> rows;
-  rows.reserve(m);
-  for (std::size_t k : idx) {
-    rows.push_back(k < inner.size() ? lifted_row<I>(inner[k], origin, true)
-                                    : lifted_row<I>(outer[k - inner.size()], origin, false));
+  std::vector<Row<I>>& rows = lp.input();
+  rows.resize(m);
+  for (std::size_t t = 0; t < m; ++t) {
+    const std::size_t k = idx[t];
+    rows[t] = k < inner.size() ? lifted_row<I>(inner[k], origin, true)
+                               : lifted_row<I>(outer[k - inner.size()], origin, false);
   }
-  auto sol = lp.solve(std::move(rows));
+  auto sol = lp.solve();
   if (violated) {
     violated->clear();
     for (std::size_t r : lp.violated()) violated->push_back(idx[r]);
@@ -338,7 +361,26 @@ public:
       first_.push_back(static_cast<std::size_t>(g - lo));
       first_.push_back(len + static_cast<std::size_t>(g - lo));
     }
-    auto c = separate<I>(lp_, buf_in_, buf_out_, buf_in_[0], first_, &violated_);
+    std::optional<LocalCircle<I>> c;
+    bool solved = false;
+    if constexpr (!std::same_as<I, Int64>) {
+      // A run of small extent is solved on Int64 (the same exact steps, so the same circle);
+      // Int64's overflow check still guards it, and I takes over when it fires.
+      if (small_extent(buf_in_[0])) {
+        try {
+          auto c64 = separate<Int64>(lp64_, buf_in_, buf_out_, buf_in_[0], first_, &violated_);
+          if (c64) {
+            LocalCircle<I> w;
+            for (std::size_t l = 0; l < 4; ++l) w.w[l] = I(static_cast<std::int64_t>(c64->w[l]));
+            w.origin = c64->origin;
+            c = w;
+          }
+          solved = true;
+        } catch (const OverflowError&) {
+        }
+      }
+    }
+    if (!solved) c = separate<I>(lp_, buf_in_, buf_out_, buf_in_[0], first_, &violated_);
     hint_.clear();
     for (std::size_t r : violated_) hint_.push_back(lo + static_cast<std::int64_t>(r % len));
     if (!c) return false;
@@ -348,8 +390,22 @@ public:
 
   std::span<const Pixel> in_, out_;
   std::int64_t n_;
+  // True when the run's points lie within 2^9 of `origin` on both axes (Int64 then serves: see
+  // the header's width note).
+  bool small_extent(const Pixel& origin) const {
+    constexpr std::int64_t kLimit = std::int64_t(1) << 9;
+    auto near = [&](const Pixel& p) {
+      const int128_t dx = static_cast<int128_t>(p.x) - origin.x;
+      const int128_t dy = static_cast<int128_t>(p.y) - origin.y;
+      return dx < kLimit && dx > -kLimit && dy < kLimit && dy > -kLimit;
+    };
+    return std::all_of(buf_in_.begin(), buf_in_.end(), near) &&
+           std::all_of(buf_out_.begin(), buf_out_.end(), near);
+  }
+
   LocalCircle<I> witness_;
   Seidel<I> lp_;
+  Seidel<Int64> lp64_;
   std::vector<Pixel> buf_in_, buf_out_;
   std::vector<std::size_t> first_, violated_;
   std::vector<std::int64_t> hint_; // unwrapped pair indices (move-to-front)
