@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -258,6 +259,40 @@ TYPED_TEST(CircularArcTest, CoverIsTheSameOnEveryType) {
     EXPECT_EQ(ref[q].length, got[q].length);
     EXPECT_EQ(ref[q].circle, got[q].circle);
   }
+}
+
+// A cover on a wide type solves the runs of small extent on Int64 and the others on its own type:
+// a digital ellipse of half-axes 1100 and 50 has both (its flat sides give arcs over 2^9 pixels
+// long, its ends short ones), and the two wide types, which take the same steps, give the same
+// arcs and circles; every circle separates its run (checked exactly, on BigInt).
+TEST(CircularArc, WideAndNarrowSolvesAgree) {
+  auto c = contour_of(
+      [](const Pixel& z) {
+        return z.x * z.x * 2500 + z.y * z.y * 1210000 <= std::int64_t(1210000) * 2500;
+      },
+      1104);
+  auto pairs = zdg::linel_pairs(c);
+  const auto a128 = zdg::maximal_circular_arcs<zdg::Int128>(pairs.inner, pairs.outer, true);
+  const auto abig = zdg::maximal_circular_arcs<zdg::BigInt>(pairs.inner, pairs.outer, true);
+  ASSERT_EQ(a128.size(), abig.size());
+  std::int64_t widest = 0, narrowest = std::numeric_limits<std::int64_t>::max();
+  for (std::size_t q = 0; q < a128.size(); ++q) {
+    EXPECT_EQ(a128[q].begin, abig[q].begin);
+    EXPECT_EQ(a128[q].length, abig[q].length);
+    EXPECT_EQ(a128[q].circle, abig[q].circle);
+    auto in = run(pairs.inner, a128[q].begin, a128[q].length);
+    auto out = run(pairs.outer, a128[q].begin, a128[q].length);
+    EXPECT_TRUE(a128[q].circle.separates(in, out)) << "arc " << q;
+    // The extent of the run from its first inner point, as the cover measures it.
+    std::int64_t extent = 0;
+    for (const auto* side : {&in, &out})
+      for (const Pixel& p : *side)
+        extent = std::max({extent, std::abs(p.x - in[0].x), std::abs(p.y - in[0].y)});
+    widest = std::max(widest, extent);
+    narrowest = std::min(narrowest, extent);
+  }
+  EXPECT_GE(widest, 512);    // runs beyond the 2^9 extent of the Int64 solves
+  EXPECT_LT(narrowest, 512); // and runs within it
 }
 
 // A digital disc is one digital circular arc: a closed contour gives a single arc covering it,
