@@ -11,7 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
+#include <filesystem>
 #include <random>
+#include <stdexcept>
+#include <system_error>
 
 namespace zdg {
 namespace {
@@ -30,10 +33,17 @@ struct Files {
 
 // `mpiexec -np P zdg ARGS` through the shell, stdout and stderr captured. OpenMPI refuses to
 // run as root (CI containers) unless told, and more ranks than cores unless oversubscribed;
-// under the sanitizers, OpenMPI's own allocations left at exit are not zdg's leaks.
+// under the sanitizers, OpenMPI's own allocations left at exit are not zdg's leaks. Each
+// launch gets its own session directory: OpenMPI 4 puts every job of a user under
+// $TMPDIR/ompi.HOST.UID, and two launches creating it at once (two tests in parallel under
+// ctest -j) fail with "mkdir ... File exists" (seen in CI). The path is short, as the
+// launcher's sockets live below it.
 test::CliResult run_mpi(int ranks, const std::string& args, const Files& f) {
+  char session[] = "/tmp/zdg-ompi-XXXXXX";
+  if (::mkdtemp(session) == nullptr) throw std::runtime_error("run_mpi: mkdtemp failed");
   std::string env = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
                     "OMPI_MCA_rmaps_base_oversubscribe=1 ";
+  env += std::string("TMPDIR=") + session + " OMPI_MCA_orte_tmpdir_base=" + session + " ";
   if (std::getenv("ZDG_SANITIZE") != nullptr) {
     env += "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ";
   }
@@ -42,6 +52,8 @@ test::CliResult run_mpi(int ranks, const std::string& args, const Files& f) {
                           args + " <" + f("stdin") + " >" + f("stdout") + " 2>" + f("stderr");
   { std::ofstream(f.path("stdin")); }
   const int raw = std::system(cmd.c_str());
+  std::error_code ec;
+  std::filesystem::remove_all(session, ec);
   test::CliResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
   r.out = test::read_file(f.path("stdout"));
