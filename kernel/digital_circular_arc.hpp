@@ -43,7 +43,9 @@
 //
 // Complexity: one recognition costs O(m) per pass of the recursion, O(m) expected in Seidel's
 // analysis (which assumes an objective with a unique optimum; this feasibility variant keeps any
-// feasible point, so that bound is heuristic here, the answer exact either way); the cover costs
+// feasible point, so that bound is heuristic here, the answer exact either way: on the
+// untranslated accelerated flower (20, 5, 5) at h = 0.003, about 100 solves do O(m^2) work and
+// the cover takes 40-51 s, against 5-9 s for a translated digitization); the cover costs
 // O(n) witness checks plus O(L) per solve, one solve each time the witness fails and
 // O(log L) per new maximal arc (arcs of length L). Measured: 1.8-2.3 s for the 278,372 linels
 // of the flower (20, 7, 6) at h = 0.001 (3,528 arcs of mean length 584; 41,656 solves). Width:
