@@ -164,24 +164,18 @@ private:
       // x_piv = s / (p y.den). When the pivot divides s (the usual case: y.den is then a common
       // denominator of x, e.g. the determinant of the tight rows by Cramer's rule), x = (y, s / p)
       // / y.den keeps y's denominator and needs no gcd; otherwise scale by |p| and reduce.
+      const I q = s / ap;
+      const bool divides = q * ap == s; // |q ap| <= |s|: no overflow
       t = 0;
-      if (s % ap == 0) {
-        const I q = s / ap;
-        for (int l = 0; l < d; ++l) {
-          if (l == piv) continue;
-          x.x[static_cast<std::size_t>(l)] = y.x[static_cast<std::size_t>(t++)];
-        }
-        x.x[static_cast<std::size_t>(piv)] = sp > 0 ? q : I(-q);
-        x.den = y.den;
-      } else {
-        for (int l = 0; l < d; ++l) {
-          if (l == piv) continue;
-          x.x[static_cast<std::size_t>(l)] = y.x[static_cast<std::size_t>(t++)] * ap;
-        }
-        x.x[static_cast<std::size_t>(piv)] = sp > 0 ? s : I(-s);
-        x.den = ap * y.den;
-        reduce(x, d);
+      for (int l = 0; l < d; ++l) {
+        if (l == piv) continue;
+        const I& yl = y.x[static_cast<std::size_t>(t++)];
+        x.x[static_cast<std::size_t>(l)] = divides ? yl : I(yl * ap);
       }
+      const I& num = divides ? q : s;
+      x.x[static_cast<std::size_t>(piv)] = sp > 0 ? num : I(-num);
+      x.den = divides ? y.den : I(ap * y.den);
+      if (!divides) reduce(x, d);
     }
     out = x;
     return true;
@@ -371,7 +365,7 @@ public:
           auto c64 = separate<Int64>(lp64_, buf_in_, buf_out_, buf_in_[0], first_, &violated_);
           if (c64) {
             LocalCircle<I> w;
-            for (std::size_t l = 0; l < 4; ++l) w.w[l] = I(static_cast<std::int64_t>(c64->w[l]));
+            for (std::size_t l = 0; l < 4; ++l) w.w[l] = int_cast<I>(c64->w[l]);
             w.origin = c64->origin;
             c = w;
           }
