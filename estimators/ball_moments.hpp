@@ -58,6 +58,7 @@ struct ColumnMomentsStats {
   std::size_t evaluations = 0;    ///< predicate evaluations (voxels of the needed blocks)
   std::size_t region_voxels = 0;  ///< voxels of the bounding box of the balls
   int layers = 0;                 ///< most runs in one column
+  bool simd = false;              ///< the AVX-512 form computed the sums
 };
 
 struct ColumnMoments {
@@ -67,9 +68,19 @@ struct ColumnMoments {
 
 /// The moments of X in the ball of squared radius r2 around every centre, by column runs
 /// (above). threads: 0 = hardware concurrency. With second_order false only m0 is computed
-/// (m1, m2 are left zero).
+/// (m1, m2 are left zero). On a CPU with AVX-512F the second-order sums of radius <= 100
+/// run in a hand-vectorized form (about 1.5x faster per ball on AMD Zen 5), same integers.
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
                                       std::span<const Voxel> centres, std::int64_t r2,
                                       int threads = 1, bool second_order = true);
+
+namespace detail {
+/// ball_moments_by_columns with the AVX-512 form allowed or not (tests compare the two).
+ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
+                                      std::span<const Voxel> centres, std::int64_t r2, int threads,
+                                      bool second_order, bool allow_simd);
+/// Whether this CPU runs the AVX-512 form.
+bool ball_moments_simd_available();
+} // namespace detail
 
 } // namespace zdg

@@ -37,10 +37,10 @@ ColumnRuns::deeper_range(int layer, std::int64_t y, std::int64_t x0, std::int64_
   const std::int64_t i0 = x0 - region.lo.x, i1 = x1 - region.lo.x;
   const std::int32_t before = d[i0], total = d[i1 + 1];
   if (before == total) return {x1 + 1, x1};
-  // first: the smallest i with d[i + 1] > before; last: the smallest i with d[i + 1] == total.
-  const std::int32_t* first = std::upper_bound(d + i0 + 1, d + i1 + 2, before);
-  const std::int32_t* last = std::lower_bound(d + i0 + 1, d + i1 + 2, total);
-  return {region.lo.x + (first - d) - 1, region.lo.x + (last - d) - 1};
+  // The columns of ranks before and total - 1 among the row's deeper columns.
+  const std::int32_t* xs = deeper_x[std::size_t(layer - 1)].data() +
+                           deeper_start[std::size_t(layer - 1)][std::size_t(y - region.lo.y)];
+  return {region.lo.x + xs[before], region.lo.x + xs[total - 1]};
 }
 
 ColumnRuns column_runs(const VoxelPredicate& inside, const VoxelBox& box, const VoxelBox& region,
@@ -121,6 +121,8 @@ ColumnRuns column_runs(const VoxelPredicate& inside, const VoxelBox& box, const 
   out.end.assign(std::size_t(layers), std::vector<std::int32_t>(ncol, ColumnRuns::kEmptyEnd));
   out.deeper.assign(std::size_t(std::max(0, layers - 1)),
                     std::vector<std::int32_t>(std::size_t(out.ny * (out.nx + 1)), 0));
+  out.deeper_x.assign(out.deeper.size(), {});
+  out.deeper_start.assign(out.deeper.size(), std::vector<std::int64_t>(std::size_t(out.ny), 0));
   for (std::int64_t j = 0; j < out.ny; ++j) {
     const auto& row = rows[std::size_t(j)];
     std::size_t k = 0;
@@ -136,9 +138,13 @@ ColumnRuns column_runs(const VoxelPredicate& inside, const VoxelBox& box, const 
         out.deeper[l - 1][std::size_t(j * (out.nx + 1) + row[k].x + 1)] = 1;
       k = m;
     }
-    for (auto& d : out.deeper) {
-      std::int32_t* p = d.data() + j * (out.nx + 1);
-      for (std::int64_t i = 1; i <= out.nx; ++i) p[i] += p[i - 1];
+    for (std::size_t l = 0; l < out.deeper.size(); ++l) {
+      std::int32_t* p = out.deeper[l].data() + j * (out.nx + 1);
+      out.deeper_start[l][std::size_t(j)] = std::int64_t(out.deeper_x[l].size());
+      for (std::int64_t i = 1; i <= out.nx; ++i) {
+        if (p[i]) out.deeper_x[l].push_back(std::int32_t(i - 1));
+        p[i] += p[i - 1];
+      }
     }
   }
   return out;

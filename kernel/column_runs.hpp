@@ -9,7 +9,8 @@
 // (kEmptyBegin, kEmptyEnd) there. layers() is the largest number of runs of a column.
 // covering(k, y, x0, x1) says in O(1) whether some column of row y with x0 <= x <= x1 has
 // more than k runs (prefix counts per row), and deeper_range gives the first and the last
-// such column, so a consumer reads layer k only there.
+// such column (their ranks in the list of such columns), so a consumer reads layer k only
+// there.
 //
 // Which voxels are evaluated: every voxel of region, or, when a `needed` mask of
 // blocks is given, only the voxels of the needed blocks (blocks of kBlock^3 voxels aligned
@@ -20,9 +21,9 @@
 //
 // Cost: one predicate evaluation per evaluated voxel (threads share the columns, rows of y
 // handed out dynamically); memory 8 bytes per column and layer plus 4 per column and
-// layer > 0 for the prefix counts. Requirements: region non-empty with fewer than 2^28
-// voxels along z and 2^31 columns; coordinates within kMaxVoxelCoordinate; the predicate
-// callable from several threads at once. InvalidArgument otherwise.
+// layer > 0 for the prefix counts and the lists of deeper columns. Requirements: region non-empty
+// with fewer than 2^28 voxels along z and 2^31 columns; coordinates within kMaxVoxelCoordinate; the
+// predicate callable from several threads at once. InvalidArgument otherwise.
 #pragma once
 
 #include <zdg/kernel/digital_surface.hpp>
@@ -44,6 +45,10 @@ struct ColumnRuns {
   std::vector<std::vector<std::int32_t>> begin, end; ///< [layer][column]
   /// [layer - 1][y * (nx + 1) + x + 1]: columns x' <= x of row y with more than `layer` runs.
   std::vector<std::vector<std::int32_t>> deeper;
+  /// [layer - 1]: the x (relative to region.lo.x) of the columns with more than `layer` runs,
+  /// row after row; deeper_start[layer - 1][y] is the index of row y's first one.
+  std::vector<std::vector<std::int32_t>> deeper_x;
+  std::vector<std::vector<std::int64_t>> deeper_start;
   std::size_t evaluations = 0; ///< predicate evaluations made to build the runs
 
   int layers() const { return int(begin.size()); }
@@ -60,7 +65,7 @@ struct ColumnRuns {
   }
   /// The first and the last x in [x0, x1] (absolute, inside the region) of row y whose
   /// column has more than `layer` runs (layer >= 1); first > last when there is none.
-  /// O(log(x1 - x0)) by binary search on the prefix counts.
+  /// O(1): the prefix counts give the ranks of the first and the last one in deeper_x.
   std::pair<std::int64_t, std::int64_t> deeper_range(int layer, std::int64_t y, std::int64_t x0,
                                                      std::int64_t x1) const;
   /// The runs of column (x, y) in absolute z (for tests and diagnostics).

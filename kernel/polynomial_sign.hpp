@@ -12,9 +12,11 @@
 // Numerical Algorithms, 2nd ed., ch. 3: gamma_n = n u / (1 - n u) per product chain of n
 // roundings and per sum of n terms; the perturbation |p~ - p| enters as
 // |prod (p~_i)^e_i - prod p_i^e_i| <= deg max_i(|p~_i - p_i|) X^(m - 1), covered by the
-// factor 8), and slack = #ops 2^-1074 max(1, X)^deg for the absolute error of gradual
-// underflow. |F~| > bound certifies sign(F(p)) = sign(F~); otherwise (or when a value is
-// not finite) the sign is F(p) evaluated in Rational<BigInt> (exact, Polynomial::sign_exact).
+// factor 8), and slack = #ops 2^-1022 max(1, X)^deg for the absolute error of gradual
+// underflow (at most #ops 2^-1074 max(1, X)^deg; the smallest normal keeps the bound's
+// arithmetic out of subnormals). |F~| > bound certifies sign(F(p)) = sign(F~); otherwise (or when a
+// value is not finite) the sign is F(p) evaluated in Rational<BigInt> (exact,
+// Polynomial::sign_exact).
 //
 // Grid points. The digitization G_h(X + t) = { z in Z^d : h z - t in X } asks for the sign at
 // p = h z - t with h, t doubles (exact dyadic rationals) and z integer: GridFrame gives

@@ -109,6 +109,57 @@ TEST(BallMoments, FarCentresUseTiles) {
   EXPECT_LT(m.stats.evaluations, 3u * 48 * 48 * 48);
 }
 
+// The AVX-512 form of the sums (used on CPUs that have it, r <= 100) and the portable form
+// give the same integers: random sets with several runs per column, random radii up to the
+// int32 limit of the line sums, centres anywhere (the tails of the lines: every line length
+// mod 16). Where the CPU lacks AVX-512 both calls run the portable form.
+TEST(BallMoments, VectorizedAndPortableSumsAgree) {
+  zdg::test::check_property([] {
+    const auto in =
+        mixed(*rc::gen::inRange<std::int64_t>(0, 400), *rc::gen::inRange<std::int64_t>(0, 400),
+              *rc::gen::arbitrary<std::uint32_t>());
+    const VoxelBox box{{-30, -25, -28}, {27, 29, 26}};
+    const auto r2 = *rc::gen::inRange<std::int64_t>(0, 600);
+    std::vector<Voxel> centres;
+    for (int i = 0; i < 8; ++i)
+      centres.push_back({*rc::gen::inRange<std::int64_t>(-32, 32),
+                         *rc::gen::inRange<std::int64_t>(-32, 32),
+                         *rc::gen::inRange<std::int64_t>(-32, 32)});
+    const auto fast = zdg::detail::ball_moments_by_columns(in, box, centres, r2, 1, true, true);
+    const auto slow = zdg::detail::ball_moments_by_columns(in, box, centres, r2, 1, true, false);
+    RC_ASSERT(fast.stats.simd == zdg::detail::ball_moments_simd_available());
+    RC_ASSERT(!slow.stats.simd);
+    RC_ASSERT(fast.moments == slow.moments);
+    RC_ASSERT(fast.moments[0] == zdg::direct_ball_moments(in, box, centres[0], r2));
+  });
+}
+
+// The largest radius of the int32 line sums (r = 100) on a full box, every moment at its
+// largest: the vectorized and portable forms equal the closed forms of the full ball
+// (m1 = 0, the three diagonal second moments equal, no cross moments).
+TEST(BallMoments, LargestInt32RadiusOnAFullBox) {
+  const zdg::VoxelPredicate all = [](const Voxel&) { return true; };
+  const VoxelBox box{{-101, -101, -101}, {101, 101, 101}};
+  const std::vector<Voxel> c{{0, 0, 0}, {1, -1, 0}};
+  const std::int64_t r2 = 100 * 100;
+  std::int64_t count = 0, sxx = 0;
+  for (std::int64_t x = -100; x <= 100; ++x)
+    for (std::int64_t y = -100; y <= 100; ++y)
+      for (std::int64_t z = -100; z <= 100; ++z)
+        if (x * x + y * y + z * z <= r2) {
+          ++count;
+          sxx += x * x;
+        }
+  for (const bool simd : {true, false}) {
+    const auto m = zdg::detail::ball_moments_by_columns(all, box, c, r2, 1, true, simd);
+    for (const auto& b : m.moments) {
+      EXPECT_EQ(b.m0, count) << simd;
+      EXPECT_EQ(b.m1, (std::array<std::int64_t, 3>{0, 0, 0})) << simd;
+      EXPECT_EQ(b.m2, (std::array<std::int64_t, 6>{sxx, sxx, sxx, 0, 0, 0})) << simd;
+    }
+  }
+}
+
 TEST(BallMoments, WorkedExamplesAndErrors) {
   // The full ball of radius 1 (7 voxels): m0 = 7, m1 = 0, m2 = diag(2, 2, 2).
   const zdg::VoxelPredicate all = [](const Voxel&) { return true; };
