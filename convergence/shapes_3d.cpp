@@ -61,12 +61,8 @@ public:
   // Exact membership of h z - t in { F <= 0 } (kernel/polynomial_sign.hpp). The predicate
   // shares the polynomial, so it may outlive the shape.
   VoxelPredicate digitize(double h, P3 t) const override {
-    auto f = sign_;
-    auto frame = std::make_shared<const GridFrame>(h, std::array<double, 3>{t.x, t.y, t.z});
-    return [f, frame](const Voxel& z) {
-      const std::int64_t zz[3] = {z.x, z.y, z.z};
-      return frame->sign(*f, zz) <= 0;
-    };
+    const std::array<double, 3> tt{t.x, t.y, t.z};
+    return PolynomialDigitization(sign_, h, tt);
   }
   bool contains(P3 p) const override {
     const double q[3] = {p.x, p.y, p.z};

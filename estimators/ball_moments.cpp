@@ -270,25 +270,28 @@ line512(const std::int32_t* a, const std::int32_t* b, const std::int32_t* w, std
     const __m512i wj = _mm512_maskz_loadu_epi32(m, w + j);
     const __m512i aj = _mm512_maskz_loadu_epi32(m, a + j);
     const __m512i bj = _mm512_maskz_loadu_epi32(m, b + j);
-    __m512i lo = _mm512_maskz_max_epi32(all, _mm512_sub_epi32(aj, vzc), _mm512_sub_epi32(zero, wj));
-    __m512i hi = _mm512_maskz_min_epi32(all, _mm512_sub_epi32(bj, vzc), wj);
-    lo = _mm512_maskz_min_epi32(all, lo, _mm512_add_epi32(wj, one));
-    const __m512i lm = _mm512_sub_epi32(lo, one);
-    hi = _mm512_maskz_max_epi32(all, hi, lm);
-    const __m512i cnt = _mm512_maskz_sub_epi32(m, hi, lm);
-    const __m512i t1 = _mm512_mullo_epi32(_mm512_add_epi32(lo, hi), cnt);
-    // hi (hi + 1)(2 hi + 1) - (lo - 1) lo (2 lo - 1)
-    const __m512i ph = _mm512_mullo_epi32(_mm512_mullo_epi32(hi, _mm512_add_epi32(hi, one)),
-                                          _mm512_add_epi32(_mm512_add_epi32(hi, hi), one));
-    const __m512i pl = _mm512_mullo_epi32(_mm512_mullo_epi32(lm, lo),
-                                          _mm512_sub_epi32(_mm512_add_epi32(lo, lo), one));
+    // lo = max(a - zc, -w) (kept <= w + 1), hi = min(b - zc, w), cnt = max(hi - lo + 1, 0);
+    // t1 = 2 sum t = (lo + hi) cnt and t2 = 6 sum t^2 = cnt (2 (s^2 - lo hi) + hi - lo),
+    // s = lo + hi: both vanish with cnt, so lanes with an empty intersection (whatever lo and
+    // hi are there) and the masked-off lanes contribute zero.
+    const __m512i w1 = _mm512_add_epi32(wj, one);
+    const __m512i lo = _mm512_maskz_min_epi32(
+        all, _mm512_maskz_max_epi32(all, _mm512_sub_epi32(aj, vzc), _mm512_sub_epi32(zero, wj)),
+        w1);
+    const __m512i hi = _mm512_maskz_min_epi32(all, _mm512_sub_epi32(bj, vzc), wj);
+    const __m512i d = _mm512_sub_epi32(hi, lo); // cnt - 1 where the intersection is not empty
+    const __m512i cnt = _mm512_maskz_max_epi32(m, _mm512_add_epi32(d, one), zero);
+    const __m512i sum = _mm512_add_epi32(lo, hi);
+    const __m512i t1 = _mm512_mullo_epi32(sum, cnt);
+    const __m512i q = _mm512_sub_epi32(_mm512_mullo_epi32(sum, sum), _mm512_mullo_epi32(lo, hi));
+    const __m512i t2 = _mm512_mullo_epi32(_mm512_add_epi32(_mm512_add_epi32(q, q), d), cnt);
     const __m512i ucnt = _mm512_mullo_epi32(u, cnt);
     n = _mm512_add_epi32(n, cnt);
     nu = _mm512_add_epi32(nu, ucnt);
     nuu = _mm512_add_epi32(nuu, _mm512_mullo_epi32(u, ucnt));
     s1 = _mm512_add_epi32(s1, t1);
     s1u = _mm512_add_epi32(s1u, _mm512_mullo_epi32(u, t1));
-    s2 = _mm512_mask_add_epi32(s2, m, s2, _mm512_sub_epi32(ph, pl));
+    s2 = _mm512_add_epi32(s2, t2);
     u = _mm512_add_epi32(u, sixteen);
   }
   const __m512i V = _mm512_set1_epi64(v), VV = _mm512_set1_epi64(v * v);

@@ -2,6 +2,7 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/polynomial_sign.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -73,6 +74,10 @@ ColumnRuns column_runs(const VoxelPredicate& inside, const VoxelBox& box, const 
     if (y < box.lo.y || y > box.hi.y || z0 > z1) return;
     std::vector<RowRun>& row = rows[std::size_t(j)];
     std::size_t evals = 0;
+    // A polynomial digitization answers whole stretches of a column at once (the x and y
+    // parts of F once per column: the same answers, a third of the time per voxel).
+    const auto* column = inside.target<PolynomialDigitization>();
+    std::vector<std::uint8_t> status(column ? std::size_t(B) : 0);
     for (std::int64_t i = 0; i < out.nx; ++i) {
       const std::int64_t x = region.lo.x + i;
       if (x < box.lo.x || x > box.hi.x) continue;
@@ -86,9 +91,10 @@ ColumnRuns column_runs(const VoxelPredicate& inside, const VoxelBox& box, const 
           z = block_end + 1; // unneeded: the status of the last evaluated voxel continues
           continue;
         }
-        for (; z <= block_end; ++z) {
+        if (column) column->column(x, y, z, block_end, status.data());
+        for (const std::int64_t zb = z; z <= block_end; ++z) {
           ++evals;
-          const bool v = inside(Voxel{x, y, z});
+          const bool v = column ? status[std::size_t(z - zb)] != 0 : inside(Voxel{x, y, z});
           if (v != in) {
             if (v) {
               start = z;

@@ -17,6 +17,7 @@ double magnitude_of(double c) {
 }
 
 constexpr int kPowerTable = 16;
+constexpr std::size_t kColumnTerms = 64;
 
 double pow_int(double b, int e) {
   double r = 1.0;
@@ -129,6 +130,78 @@ double PolynomialSign::value_and_bound(const double* p, const double* magnitude,
   }
   bound = gamma_ * mag + underflow_slack(magnitude);
   return v;
+}
+
+void PolynomialSign::column_inside(const GridFrame& frame, std::int64_t x, std::int64_t y,
+                                   std::int64_t z0, std::int64_t z1, std::uint8_t* out) const {
+  if (f_.nvars() != 3 || frame.dimension() != 3)
+    throw InvalidArgument("polynomial sign: column_inside needs three variables");
+  const int deg = f_.degree();
+  const std::size_t nt = abs_.size();
+  if (deg >= kPowerTable || nt > kColumnTerms) {
+    for (std::int64_t z = z0; z <= z1; ++z) {
+      const std::int64_t p[3] = {x, y, z};
+      out[z - z0] = frame.sign(*this, p) <= 0;
+    }
+    return;
+  }
+  // The x and y parts of the approximate point and of the magnitudes (GridFrame::approximate).
+  double p[3], mag[3];
+  {
+    const std::int64_t q[3] = {x, y, z0};
+    frame.approximate(q, p, mag);
+  }
+  // Each term's chain as in value_and_bound: coefficient * x^e0 * y^e1 (here, once), then
+  // * z^e2 (per point): the same products in the same order.
+  double pp[2][kPowerTable], pm[2][kPowerTable];
+  for (int i = 0; i < 2; ++i) {
+    pp[i][0] = pm[i][0] = 1.0;
+    for (int e = 1; e <= deg; ++e) {
+      pp[i][e] = pp[i][e - 1] * p[i];
+      pm[i][e] = pm[i][e - 1] * mag[i];
+    }
+  }
+  double txy[kColumnTerms], axy[kColumnTerms];
+  int ez[kColumnTerms];
+  for (std::size_t k = 0; k < nt; ++k) {
+    const auto& m = f_.terms()[k];
+    txy[k] = m.coefficient_double * pp[0][m.exponent[0]] * pp[1][m.exponent[1]];
+    axy[k] = abs_[k] * pm[0][m.exponent[0]] * pm[1][m.exponent[1]];
+    ez[k] = m.exponent[2];
+  }
+  for (std::int64_t z = z0; z <= z1; ++z) {
+    const std::int64_t q[3] = {x, y, z};
+    frame.approximate(q, p, mag); // p[2], mag[2]: z's part (x and y as above)
+    double pz[kPowerTable], mz[kPowerTable];
+    pz[0] = mz[0] = 1.0;
+    for (int e = 1; e <= deg; ++e) {
+      pz[e] = pz[e - 1] * p[2];
+      mz[e] = mz[e - 1] * mag[2];
+    }
+    double v = 0.0, a = 0.0;
+    for (std::size_t k = 0; k < nt; ++k) {
+      v += txy[k] * pz[ez[k]];
+      a += axy[k] * mz[ez[k]];
+    }
+    const double bound = gamma_ * a + underflow_slack(mag);
+    int sgn;
+    if (std::isfinite(v) && std::isfinite(bound) && (v > bound || v < -bound)) {
+      sgn = v > bound ? 1 : -1;
+    } else {
+      const auto e = frame.exact(q);
+      sgn = f_.sign_exact(e.data());
+    }
+    out[z - z0] = sgn <= 0;
+  }
+}
+
+void PolynomialDigitization::column(std::int64_t x, std::int64_t y, std::int64_t z0,
+                                    std::int64_t z1, std::uint8_t* out) const {
+  if (f_->nvars() == 3 && frame_->dimension() == 3) {
+    f_->column_inside(*frame_, x, y, z0, z1, out);
+    return;
+  }
+  for (std::int64_t z = z0; z <= z1; ++z) out[z - z0] = (*this)({x, y, z});
 }
 
 GridFrame::GridFrame(double h, std::span<const double> t)

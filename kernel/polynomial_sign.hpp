@@ -30,15 +30,19 @@
 // immutable after construction: safe to share between threads.
 #pragma once
 
+#include <zdg/arith/point.hpp>
 #include <zdg/kernel/polynomial.hpp>
 
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
 namespace zdg {
+
+class GridFrame;
 
 class PolynomialSign {
 public:
@@ -71,6 +75,13 @@ public:
     const auto q = exact();
     return f_.sign_exact(q.data());
   }
+
+  /// The signs of F at the grid points h (x, y, z) - t of one column, z = z0..z1 (three
+  /// variables): out[z - z0] = sign(F) <= 0. The same doubles as sign() at each point (the x
+  /// and y factors of every term are the first products of its chain, computed once per
+  /// column), the same exact fallback, so the same answers. Requires nvars() == 3.
+  void column_inside(const GridFrame& frame, std::int64_t x, std::int64_t y, std::int64_t z0,
+                     std::int64_t z1, std::uint8_t* out) const;
 
 private:
   Polynomial f_;
@@ -115,6 +126,29 @@ private:
   std::array<double, 3> t_{};
   BigRational hx_;
   std::array<BigRational, 3> tx_;
+};
+
+/// The digitization { z : F(h z - t) <= 0 } as a voxel predicate (the named 3D shapes of
+/// convergence/): a named type, so that a consumer holding it in a VoxelPredicate can ask
+/// for whole columns (kernel/column_runs.cpp: std::function::target). Shares F and the frame,
+/// so it may outlive the shape; safe to call from several threads at once.
+class PolynomialDigitization {
+public:
+  PolynomialDigitization(std::shared_ptr<const PolynomialSign> f, double h,
+                         std::span<const double> t)
+      : f_(std::move(f)), frame_(std::make_shared<const GridFrame>(h, t)) {}
+  bool operator()(const Point3<std::int64_t>& z) const {
+    const std::int64_t zz[3] = {z.x, z.y, z.z};
+    return frame_->sign(*f_, zz) <= 0;
+  }
+  /// out[z - z0] = operator()({x, y, z}) for z = z0..z1, F's x and y factors once per column
+  /// (three variables; the voxel-by-voxel answers otherwise).
+  void column(std::int64_t x, std::int64_t y, std::int64_t z0, std::int64_t z1,
+              std::uint8_t* out) const;
+
+private:
+  std::shared_ptr<const PolynomialSign> f_;
+  std::shared_ptr<const GridFrame> frame_;
 };
 
 } // namespace zdg
