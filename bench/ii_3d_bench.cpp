@@ -11,6 +11,8 @@
 //  * the same shapes, whole surfaces (every boundary surfel, as in a run of the paper's
 //    sweep, translation (0.1, 0.2, 0.3)), one thread, one iteration: the per-surfel cost of
 //    the sweep, old counter against new (Surface/...).
+//  * the ball sums of a whole surface (goursat, i = 26), the AVX-512 form against the
+//    portable loop (BallSums/...).
 //   build/bin/ii_3d_bench --benchmark_counters_tabular=true
 #include <zdg/convergence/shapes_3d.hpp>
 #include <zdg/estimators/ii_3d.hpp>
@@ -20,6 +22,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <unordered_set>
 
 namespace {
 
@@ -184,7 +187,40 @@ void BM_SurfaceWalk(benchmark::State& state, const std::string& shape) {
   BM_WholeSurface<false>(state, shape);
 }
 
+// The ball moments at the inner and outer voxels of a whole surface, the AVX-512 form of
+// the sums against the portable loop (BallSums/simd_goursat/..., BallSums/portable_goursat/...;
+// where the CPU lacks AVX-512 both run the portable loop: the counter `simd` says which ran).
+void BM_BallSums(benchmark::State& state, const std::string& shape, bool simd) {
+  const WholeSurface w = whole_surface(shape, int(state.range(0)));
+  const auto r2 = zdg::ii_digital_radius2(w.R, w.h);
+  std::vector<zdg::Voxel> centres;
+  {
+    std::unordered_set<zdg::Voxel, zdg::KPointHash> seen;
+    for (const auto& s : w.surfels)
+      for (const auto& v : {zdg::inner_voxel(s), zdg::outer_voxel(s)})
+        if (seen.insert(v).second) centres.push_back(v);
+  }
+  zdg::ColumnMoments m;
+  for (auto _ : state) {
+    m = zdg::detail::ball_moments_by_columns(w.inside, w.box, centres, r2, 1, true, simd);
+    benchmark::DoNotOptimize(m.moments.data());
+  }
+  const double segments = double(m.stats.segments + m.stats.layer_segments);
+  state.counters["centres"] = double(centres.size());
+  state.counters["simd"] = m.stats.simd ? 1 : 0;
+  state.counters["ns/segment"] = benchmark::Counter(
+      segments * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 BENCHMARK(BM_TrackSurface)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BallSums, simd_goursat, std::string("goursat"), true)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BallSums, portable_goursat, std::string("goursat"), false)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Sphere1Moments<true>)
     ->Name("Sphere1/columns")
     ->Arg(1)
