@@ -1,4 +1,5 @@
 #include <zdg/kernel/column_runs.hpp>
+#include <zdg/kernel/polynomial_sign.hpp>
 
 #include "tests/support/tower.hpp"
 
@@ -6,7 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdint>
+#include <memory>
+#include <string>
 
 namespace {
 
@@ -104,6 +109,38 @@ TEST(ColumnRuns, MaskedRunsAreExactOnNeededBlocks) {
           RC_ASSERT(member == (box.contains(p) && in(p)));
         }
     RC_ASSERT(runs.evaluations == needed_voxels);
+  });
+}
+
+// A polynomial digitization is read by columns (PolynomialDigitization::column): the runs,
+// the deeper-column lists and the evaluation count equal those of the same predicate read
+// voxel by voxel (wrapped in a lambda, which column_runs cannot see through), with a mask.
+TEST(ColumnRuns, PolynomialColumnsEqualVoxelByVoxel) {
+  zdg::test::check_property([] {
+    // A Goursat-like quartic with a cavity: several runs per column.
+    const auto f = std::make_shared<const zdg::PolynomialSign>(zdg::Polynomial::parse(
+        "x^4+y^4+z^4-8*(x^2+y^2+z^2)+" + std::to_string(*rc::gen::inRange(10, 31)), 3));
+    const double h = 1.0 / double(*rc::gen::inRange(3, 9));
+    const std::array<double, 3> t{std::ldexp(*rc::gen::inRange(-8, 9), -4), 0.25,
+                                  std::ldexp(*rc::gen::inRange(-8, 9), -5)};
+    const zdg::VoxelPredicate by_column = zdg::PolynomialDigitization(f, h, t);
+    const zdg::VoxelPredicate by_voxel = [by_column](const Voxel& z) { return by_column(z); };
+    const VoxelBox box{{-30, -30, -30}, {30, 30, 30}};
+    const VoxelBox region{{-31, -29, -33}, {27, 30, 31}};
+    const std::int64_t B = ColumnRuns::kBlock;
+    zdg::BlockMask mask;
+    mask.bx = (region.hi.x - region.lo.x + B) / B;
+    mask.by = (region.hi.y - region.lo.y + B) / B;
+    mask.bz = (region.hi.z - region.lo.z + B) / B;
+    for (std::int64_t i = 0; i < mask.bx * mask.by * mask.bz; ++i)
+      mask.needed.push_back(*rc::gen::inRange(0, 4) != 3 ? 1 : 0);
+    const ColumnRuns a = zdg::column_runs(by_column, box, region, 2, &mask);
+    const ColumnRuns b = zdg::column_runs(by_voxel, box, region, 2, &mask);
+    RC_ASSERT(a.begin == b.begin);
+    RC_ASSERT(a.end == b.end);
+    RC_ASSERT(a.deeper == b.deeper);
+    RC_ASSERT(a.deeper_x == b.deeper_x);
+    RC_ASSERT(a.evaluations == b.evaluations);
   });
 }
 

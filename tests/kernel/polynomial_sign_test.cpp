@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace {
@@ -87,6 +88,42 @@ TEST(PolynomialSign, AgreesWithRationalEvaluationNearTheZeroSet2d) {
 
 TEST(PolynomialSign, AgreesWithRationalEvaluationNearTheZeroSet3d) {
   near_zero_set_property(3);
+}
+
+// Theorem checked: PolynomialDigitization::column gives, at every point of a column, the
+// exact sign test F(h z - t) <= 0 (Rational<BigInt> evaluation), the answer of the voxel
+// predicate: random polynomials of three variables made to vanish at one grid point of the
+// column (so that the exact fallback decides there), random steps and translations, columns
+// of 1 to 40 points.
+TEST(PolynomialSign, ColumnAnswersEqualPointAnswers) {
+  zdg::test::check_property([] {
+    Polynomial g = random_polynomial(3);
+    const double h = std::ldexp(static_cast<double>(*rc::gen::inRange(1, 1 << 20)), -20);
+    const std::array<double, 3> t{std::ldexp(*rc::gen::inRange(-8, 9), -4),
+                                  std::ldexp(*rc::gen::inRange(-8, 9), -4),
+                                  std::ldexp(*rc::gen::inRange(-8, 9), -4)};
+    const std::int64_t x = *rc::gen::inRange<std::int64_t>(-300, 301);
+    const std::int64_t y = *rc::gen::inRange<std::int64_t>(-300, 301);
+    const std::int64_t z0 = *rc::gen::inRange<std::int64_t>(-300, 301);
+    const std::int64_t n = *rc::gen::inRange<std::int64_t>(1, 41);
+    const std::int64_t zero_at = z0 + *rc::gen::inRange<std::int64_t>(0, n);
+    GridFrame frame(h, t);
+    const std::int64_t q[3] = {x, y, zero_at};
+    const auto a = frame.exact(q);
+    const Polynomial f = g - Polynomial::constant(g.value_exact(a.data()), 3);
+    const auto sign = std::make_shared<const PolynomialSign>(f);
+    const zdg::PolynomialDigitization dig(sign, h, t);
+    std::vector<std::uint8_t> out(std::size_t(n), 7);
+    dig.column(x, y, z0, z0 + n - 1, out.data());
+    for (std::int64_t k = 0; k < n; ++k) {
+      const std::int64_t p[3] = {x, y, z0 + k};
+      const auto e = frame.exact(p);
+      const bool inside = exact_sign(f.value_exact(e.data())) <= 0;
+      RC_ASSERT(out[std::size_t(k)] == (inside ? 1 : 0));
+      RC_ASSERT(dig({x, y, z0 + k}) == inside);
+    }
+    RC_ASSERT(out[std::size_t(zero_at - z0)] == 1); // F = 0 there: inside
+  });
 }
 
 // Theorem checked (the filter itself, Higham's forward bound): for doubles p and X = 2 |p|,
