@@ -11,8 +11,8 @@
 //  * the same shapes, whole surfaces (every boundary surfel, as in a run of the paper's
 //    sweep, translation (0.1, 0.2, 0.3)), one thread, one iteration: the per-surfel cost of
 //    the sweep, old counter against new (Surface/...).
-//  * the ball sums of a whole surface (goursat, i = 26), the AVX-512 form against the
-//    portable loop (BallSums/...).
+//  * the ball sums of a whole surface (goursat, i = 26), the AVX-512 and AVX2 forms against
+//    the portable loop (BallSums/...).
 //   build/bin/ii_3d_bench --benchmark_counters_tabular=true
 #include <zdg/convergence/shapes_3d.hpp>
 #include <zdg/estimators/ii_3d.hpp>
@@ -187,10 +187,11 @@ void BM_SurfaceWalk(benchmark::State& state, const std::string& shape) {
   BM_WholeSurface<false>(state, shape);
 }
 
-// The ball moments at the inner and outer voxels of a whole surface, the AVX-512 form of
-// the sums against the portable loop (BallSums/simd_goursat/..., BallSums/portable_goursat/...;
-// where the CPU lacks AVX-512 both run the portable loop: the counter `simd` says which ran).
-void BM_BallSums(benchmark::State& state, const std::string& shape, bool simd) {
+// The ball moments at the inner and outer voxels of a whole surface, the AVX-512 and AVX2
+// forms of the sums against the portable loop (BallSums/avx512_goursat/..., avx2_goursat,
+// portable_goursat; where the CPU lacks a form the next narrower one runs: the counter
+// `lanes` says which ran).
+void BM_BallSums(benchmark::State& state, const std::string& shape, int lanes) {
   const WholeSurface w = whole_surface(shape, int(state.range(0)));
   const auto r2 = zdg::ii_digital_radius2(w.R, w.h);
   std::vector<zdg::Voxel> centres;
@@ -202,22 +203,26 @@ void BM_BallSums(benchmark::State& state, const std::string& shape, bool simd) {
   }
   zdg::ColumnMoments m;
   for (auto _ : state) {
-    m = zdg::detail::ball_moments_by_columns(w.inside, w.box, centres, r2, 1, true, simd);
+    m = zdg::detail::ball_moments_by_columns(w.inside, w.box, centres, r2, 1, true, lanes);
     benchmark::DoNotOptimize(m.moments.data());
   }
   const double segments = double(m.stats.segments + m.stats.layer_segments);
   state.counters["centres"] = double(centres.size());
-  state.counters["simd"] = m.stats.simd ? 1 : 0;
+  state.counters["lanes"] = m.stats.simd_lanes;
   state.counters["ns/segment"] = benchmark::Counter(
       segments * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 BENCHMARK(BM_TrackSurface)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BallSums, simd_goursat, std::string("goursat"), true)
+BENCHMARK_CAPTURE(BM_BallSums, avx512_goursat, std::string("goursat"), 16)
     ->Arg(26)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_BallSums, portable_goursat, std::string("goursat"), false)
+BENCHMARK_CAPTURE(BM_BallSums, avx2_goursat, std::string("goursat"), 8)
+    ->Arg(26)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_BallSums, portable_goursat, std::string("goursat"), 0)
     ->Arg(26)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);

@@ -342,13 +342,114 @@ __attribute__((target("avx512f"))) BallMoments ball_from_runs_avx512(const Colum
 }
 #endif
 
-/// Whether ball_from_runs_avx512 runs here (decided once).
-bool use_avx512() {
 #ifdef ZDG_BALL_AVX512
-  static const bool yes = __builtin_cpu_supports("avx512f");
-  return yes;
+// The same for AVX2 (8 columns per step, the tail by vpmaskmovd, the line's lanes folded to
+// 4 and widened into int64 accumulators of 4 lanes): CPUs without AVX-512.
+
+struct Acc256 {
+  __m256i m0, mx, my, mz2, mxx, myy, mzz6, mxy, mxz2, myz2;
+};
+
+__attribute__((target("avx2"), always_inline)) inline __m256i widen_fold256(__m256i x) {
+  return _mm256_cvtepi32_epi64(
+      _mm_add_epi32(_mm256_castsi256_si128(x), _mm256_extracti128_si256(x, 1)));
+}
+
+__attribute__((target("avx2"), always_inline)) inline std::int64_t hsum256(__m256i x) {
+  alignas(32) std::int64_t lane[4];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lane), x);
+  return (lane[0] + lane[1]) + (lane[2] + lane[3]);
+}
+
+__attribute__((target("avx2"), always_inline)) inline void
+line256(const std::int32_t* a, const std::int32_t* b, const std::int32_t* w, std::int32_t len,
+        std::int32_t zc, std::int32_t U, std::int64_t v, Acc256& acc) {
+  const __m256i vzc = _mm256_set1_epi32(zc), one = _mm256_set1_epi32(1);
+  const __m256i eight = _mm256_set1_epi32(8), zero = _mm256_setzero_si256();
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  __m256i u = _mm256_sub_epi32(lane, _mm256_set1_epi32(U));
+  __m256i n = zero, nu = zero, nuu = zero, s1 = zero, s1u = zero, s2 = zero;
+  for (std::int32_t j = 0; j < len; j += 8) {
+    const __m256i m = _mm256_cmpgt_epi32(_mm256_set1_epi32(len - j), lane);
+    const __m256i wj = _mm256_maskload_epi32(w + j, m);
+    const __m256i aj = _mm256_maskload_epi32(a + j, m);
+    const __m256i bj = _mm256_maskload_epi32(b + j, m);
+    const __m256i lo =
+        _mm256_min_epi32(_mm256_max_epi32(_mm256_sub_epi32(aj, vzc), _mm256_sub_epi32(zero, wj)),
+                         _mm256_add_epi32(wj, one));
+    const __m256i hi = _mm256_min_epi32(_mm256_sub_epi32(bj, vzc), wj);
+    const __m256i d = _mm256_sub_epi32(hi, lo);
+    const __m256i cnt = _mm256_and_si256(m, _mm256_max_epi32(_mm256_add_epi32(d, one), zero));
+    const __m256i sum = _mm256_add_epi32(lo, hi);
+    const __m256i t1 = _mm256_mullo_epi32(sum, cnt);
+    const __m256i q = _mm256_sub_epi32(_mm256_mullo_epi32(sum, sum), _mm256_mullo_epi32(lo, hi));
+    const __m256i t2 = _mm256_mullo_epi32(_mm256_add_epi32(_mm256_add_epi32(q, q), d), cnt);
+    const __m256i ucnt = _mm256_mullo_epi32(u, cnt);
+    n = _mm256_add_epi32(n, cnt);
+    nu = _mm256_add_epi32(nu, ucnt);
+    nuu = _mm256_add_epi32(nuu, _mm256_mullo_epi32(u, ucnt));
+    s1 = _mm256_add_epi32(s1, t1);
+    s1u = _mm256_add_epi32(s1u, _mm256_mullo_epi32(u, t1));
+    s2 = _mm256_add_epi32(s2, t2);
+    u = _mm256_add_epi32(u, eight);
+  }
+  const __m256i V = _mm256_set1_epi64x(v), VV = _mm256_set1_epi64x(v * v);
+  const __m256i N = widen_fold256(n), NU = widen_fold256(nu), S1 = widen_fold256(s1);
+  acc.m0 = _mm256_add_epi64(acc.m0, N);
+  acc.mx = _mm256_add_epi64(acc.mx, NU);
+  acc.my = _mm256_add_epi64(acc.my, _mm256_mul_epi32(N, V));
+  acc.mz2 = _mm256_add_epi64(acc.mz2, S1);
+  acc.mxx = _mm256_add_epi64(acc.mxx, widen_fold256(nuu));
+  acc.myy = _mm256_add_epi64(acc.myy, _mm256_mul_epi32(N, VV));
+  acc.mzz6 = _mm256_add_epi64(acc.mzz6, widen_fold256(s2));
+  acc.mxy = _mm256_add_epi64(acc.mxy, _mm256_mul_epi32(NU, V));
+  acc.mxz2 = _mm256_add_epi64(acc.mxz2, widen_fold256(s1u));
+  acc.myz2 = _mm256_add_epi64(acc.myz2, _mm256_mul_epi32(S1, V));
+}
+
+__attribute__((target("avx2"))) BallMoments ball_from_runs_avx2(const ColumnRuns& runs,
+                                                                const Disc& disc, const Voxel& c,
+                                                                std::size_t& layer_segments) {
+  const std::int32_t zc = std::int32_t(c.z - runs.region.lo.z);
+  const std::int64_t r = disc.r;
+  const __m256i zero = _mm256_setzero_si256();
+  Acc256 acc{zero, zero, zero, zero, zero, zero, zero, zero, zero, zero};
+  for (std::int64_t v = -r; v <= r; ++v) {
+    const std::int32_t U = disc.half[std::size_t(v + r)];
+    const std::int32_t* w = disc.w.data() + disc.offset[std::size_t(v + r)];
+    const std::int32_t len = 2 * U + 1;
+    const std::int64_t y = c.y + v, x0 = c.x - U;
+    const std::size_t col = runs.column(x0, y);
+    line256(runs.begin[0].data() + col, runs.end[0].data() + col, w, len, zc, U, v, acc);
+    for (int k = 1; k < runs.layers(); ++k) {
+      const auto [first, last] = runs.deeper_range(k, y, x0, x0 + 2 * U);
+      if (first > last) break;
+      const std::int32_t j0 = std::int32_t(first - x0), j1 = std::int32_t(last - x0);
+      layer_segments += std::size_t(j1 - j0 + 1);
+      line256(runs.begin[std::size_t(k)].data() + col + std::size_t(j0),
+              runs.end[std::size_t(k)].data() + col + std::size_t(j0), w + j0, j1 - j0 + 1, zc,
+              U - j0, v, acc);
+    }
+  }
+  BallMoments out;
+  out.m0 = hsum256(acc.m0);
+  out.m1 = {hsum256(acc.mx), hsum256(acc.my), hsum256(acc.mz2) / 2};
+  out.m2 = {hsum256(acc.mxx), hsum256(acc.myy),      hsum256(acc.mzz6) / 6,
+            hsum256(acc.mxy), hsum256(acc.mxz2) / 2, hsum256(acc.myz2) / 2};
+  return out;
+}
+#endif
+
+/// The lanes of the widest vectorized form this CPU runs: 16 (AVX-512F), 8 (AVX2) or 0
+/// (the portable loop); decided once.
+int simd_lanes() {
+#ifdef ZDG_BALL_AVX512
+  static const int lanes = __builtin_cpu_supports("avx512f") ? 16
+                           : __builtin_cpu_supports("avx2")  ? 8
+                                                             : 0;
+  return lanes;
 #else
-  return false;
+  return 0;
 #endif
 }
 
@@ -384,16 +485,16 @@ BallMoments direct_ball_moments(const VoxelPredicate& inside, const VoxelBox& bo
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
                                       std::span<const Voxel> centres, std::int64_t r2, int threads,
                                       bool second_order) {
-  return detail::ball_moments_by_columns(inside, box, centres, r2, threads, second_order, true);
+  return detail::ball_moments_by_columns(inside, box, centres, r2, threads, second_order, 16);
 }
 
-bool detail::ball_moments_simd_available() {
-  return use_avx512();
+int detail::ball_moments_simd_lanes() {
+  return simd_lanes();
 }
 
 ColumnMoments detail::ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
                                               std::span<const Voxel> centres, std::int64_t r2,
-                                              int threads, bool second_order, bool allow_simd) {
+                                              int threads, bool second_order, int max_lanes) {
   check_voxel_box(box);
   if (r2 < 0 || r2 > kMaxRadius * kMaxRadius)
     throw InvalidArgument("ball moments: squared digital radius " + std::to_string(r2) +
@@ -453,8 +554,13 @@ ColumnMoments detail::ball_moments_by_columns(const VoxelPredicate& inside, cons
   }
 
   const unsigned workers = unsigned(threads);
-  const bool fast = allow_simd && second_order && use_avx512() && r <= kInt32LineRadius;
-  out.stats.simd = fast;
+  // The vectorized forms: second order, r <= kInt32LineRadius (their int32 line sums).
+  const int lanes = second_order && r <= kInt32LineRadius ? std::min(max_lanes >= 16  ? 16
+                                                                     : max_lanes >= 8 ? 8
+                                                                                      : 0,
+                                                                     simd_lanes())
+                                                          : 0;
+  out.stats.simd_lanes = lanes;
   std::atomic<std::size_t> layer_segments{0};
   for (const Tile& tile : tiles) {
     const BlockMask mask = needed_blocks(tile.region, centres, tile.ids, r2);
@@ -471,8 +577,12 @@ ColumnMoments detail::ball_moments_by_columns(const VoxelPredicate& inside, cons
       for (std::int64_t i = batch * kBatch; i < e; ++i) {
         const auto id = tile.ids[std::size_t(i)];
 #ifdef ZDG_BALL_AVX512
-        if (fast) {
+        if (lanes == 16) {
           out.moments[id] = ball_from_runs_avx512(runs, disc, centres[id], extra);
+          continue;
+        }
+        if (lanes == 8) {
+          out.moments[id] = ball_from_runs_avx2(runs, disc, centres[id], extra);
           continue;
         }
 #endif

@@ -18,7 +18,8 @@
 // the centres). The integers equal those of the brute-force count (direct_ball_moments) and
 // of the incremental walk (estimators/ii_3d.hpp), tested.
 //
-// Vectorized form (CPUs with AVX-512F, r <= 100, second order): 16 columns per step, the
+// Vectorized forms (CPUs with AVX-512F, or AVX2 with 8 lanes; r <= 100, second order): 16
+// columns per step, the
 // tail of a line by a masked load, 6 sum t^2 = cnt (2 (s^2 - lo hi) + hi - lo) with
 // s = lo + hi (each term carries the count, so empty intersections need no clamp), the six
 // int32 lane sums of a line folded into ten int64 vector accumulators of the ball (no
@@ -65,7 +66,7 @@ struct ColumnMomentsStats {
   std::size_t evaluations = 0;    ///< predicate evaluations (voxels of the needed blocks)
   std::size_t region_voxels = 0;  ///< voxels of the bounding box of the balls
   int layers = 0;                 ///< most runs in one column
-  bool simd = false;              ///< the AVX-512 form computed the sums
+  int simd_lanes = 0;             ///< 16: the AVX-512 form computed the sums, 8: AVX2, 0: portable
 };
 
 struct ColumnMoments {
@@ -75,19 +76,21 @@ struct ColumnMoments {
 
 /// The moments of X in the ball of squared radius r2 around every centre, by column runs
 /// (above). threads: 0 = hardware concurrency. With second_order false only m0 is computed
-/// (m1, m2 are left zero). On a CPU with AVX-512F the second-order sums of radius <= 100
-/// run in a hand-vectorized form (about 1.5x faster per ball on AMD Zen 5), same integers.
+/// (m1, m2 are left zero). The second-order sums of radius <= 100 run in a hand-vectorized
+/// form on CPUs with AVX-512F (16 columns per step; about 1.5x the portable loop on an AMD
+/// EPYC with AVX-512) or AVX2 (8), same integers.
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
                                       std::span<const Voxel> centres, std::int64_t r2,
                                       int threads = 1, bool second_order = true);
 
 namespace detail {
-/// ball_moments_by_columns with the AVX-512 form allowed or not (tests compare the two).
+/// ball_moments_by_columns with vectorized forms of at most max_lanes lanes (16: AVX-512 or
+/// AVX2, 8: AVX2 at most, 0: the portable loop), for tests that compare them.
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
                                       std::span<const Voxel> centres, std::int64_t r2, int threads,
-                                      bool second_order, bool allow_simd);
-/// Whether this CPU runs the AVX-512 form.
-bool ball_moments_simd_available();
+                                      bool second_order, int max_lanes);
+/// The lanes of the widest vectorized form this CPU runs (16, 8 or 0).
+int ball_moments_simd_lanes();
 } // namespace detail
 
 } // namespace zdg

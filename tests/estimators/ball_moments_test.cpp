@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -109,10 +110,10 @@ TEST(BallMoments, FarCentresUseTiles) {
   EXPECT_LT(m.stats.evaluations, 3u * 48 * 48 * 48);
 }
 
-// The AVX-512 form of the sums (used on CPUs that have it, r <= 100) and the portable form
-// give the same integers: random sets with several runs per column, random radii up to the
-// int32 limit of the line sums, centres anywhere (the tails of the lines: every line length
-// mod 16). Where the CPU lacks AVX-512 both calls run the portable form.
+// The AVX-512 and AVX2 forms of the sums (used on CPUs that have them, r <= 100) and the
+// portable form give the same integers: random sets with several runs per column, random
+// radii, centres anywhere (the tails of the lines: every line length mod 16). Where the CPU
+// lacks a form, the next narrower one runs.
 TEST(BallMoments, VectorizedAndPortableSumsAgree) {
   zdg::test::check_property([] {
     const auto in =
@@ -125,12 +126,15 @@ TEST(BallMoments, VectorizedAndPortableSumsAgree) {
       centres.push_back({*rc::gen::inRange<std::int64_t>(-32, 32),
                          *rc::gen::inRange<std::int64_t>(-32, 32),
                          *rc::gen::inRange<std::int64_t>(-32, 32)});
-    const auto fast = zdg::detail::ball_moments_by_columns(in, box, centres, r2, 1, true, true);
-    const auto slow = zdg::detail::ball_moments_by_columns(in, box, centres, r2, 1, true, false);
-    RC_ASSERT(fast.stats.simd == zdg::detail::ball_moments_simd_available());
-    RC_ASSERT(!slow.stats.simd);
-    RC_ASSERT(fast.moments == slow.moments);
-    RC_ASSERT(fast.moments[0] == zdg::direct_ball_moments(in, box, centres[0], r2));
+    const int widest = zdg::detail::ball_moments_simd_lanes();
+    const auto slow = zdg::detail::ball_moments_by_columns(in, box, centres, r2, 1, true, 0);
+    RC_ASSERT(slow.stats.simd_lanes == 0);
+    for (const int lanes : {8, 16}) {
+      const auto fast = zdg::detail::ball_moments_by_columns(in, box, centres, r2, 1, true, lanes);
+      RC_ASSERT(fast.stats.simd_lanes == std::min(lanes, widest));
+      RC_ASSERT(fast.moments == slow.moments);
+    }
+    RC_ASSERT(slow.moments[0] == zdg::direct_ball_moments(in, box, centres[0], r2));
   });
 }
 
@@ -150,7 +154,7 @@ TEST(BallMoments, LargestInt32RadiusOnAFullBox) {
           ++count;
           sxx += x * x;
         }
-  for (const bool simd : {true, false}) {
+  for (const int simd : {16, 8, 0}) {
     const auto m = zdg::detail::ball_moments_by_columns(all, box, c, r2, 1, true, simd);
     for (const auto& b : m.moments) {
       EXPECT_EQ(b.m0, count) << simd;
