@@ -308,37 +308,43 @@ line512(const std::int32_t* a, const std::int32_t* b, const std::int32_t* w, std
   acc.myz2 = _mm512_add_epi64(acc.myz2, _mm512_maskz_mul_epi32(0xff, S1, V));
 }
 
+// The lines of the ball (and the stretches of deeper layers within them) fed to LINE with
+// the accumulators of type ACC, summed at the end by HSUM: the body of both vectorized
+// routines below, which differ only in these (and in their target).
+#define ZDG_BALL_BY_LINES(LINE, ACC, HSUM, VEC, SETZERO)                                           \
+  const std::int32_t zc = std::int32_t(c.z - runs.region.lo.z);                                    \
+  const std::int64_t r = disc.r;                                                                   \
+  const VEC zero = SETZERO();                                                                      \
+  ACC acc{zero, zero, zero, zero, zero, zero, zero, zero, zero, zero};                             \
+  for (std::int64_t v = -r; v <= r; ++v) {                                                         \
+    const std::int32_t U = disc.half[std::size_t(v + r)];                                          \
+    const std::int32_t* w = disc.w.data() + disc.offset[std::size_t(v + r)];                       \
+    const std::int32_t len = 2 * U + 1;                                                            \
+    const std::int64_t y = c.y + v, x0 = c.x - U;                                                  \
+    const std::size_t col = runs.column(x0, y);                                                    \
+    LINE(runs.begin[0].data() + col, runs.end[0].data() + col, w, len, zc, U, v, acc);             \
+    for (int k = 1; k < runs.layers(); ++k) {                                                      \
+      const auto [first, last] = runs.deeper_range(k, y, x0, x0 + 2 * U);                          \
+      if (first > last) break;                                                                     \
+      const std::int32_t j0 = std::int32_t(first - x0), j1 = std::int32_t(last - x0);              \
+      layer_segments += std::size_t(j1 - j0 + 1);                                                  \
+      LINE(runs.begin[std::size_t(k)].data() + col + std::size_t(j0),                              \
+           runs.end[std::size_t(k)].data() + col + std::size_t(j0), w + j0, j1 - j0 + 1, zc,       \
+           U - j0, v, acc);                                                                        \
+    }                                                                                              \
+  }                                                                                                \
+  BallMoments out;                                                                                 \
+  out.m0 = HSUM(acc.m0);                                                                           \
+  out.m1 = {HSUM(acc.mx), HSUM(acc.my), HSUM(acc.mz2) / 2};                                        \
+  out.m2 = {HSUM(acc.mxx), HSUM(acc.myy),      HSUM(acc.mzz6) / 6,                                 \
+            HSUM(acc.mxy), HSUM(acc.mxz2) / 2, HSUM(acc.myz2) / 2};                                \
+  return out;
+
 __attribute__((target("avx512f"))) BallMoments ball_from_runs_avx512(const ColumnRuns& runs,
                                                                      const Disc& disc,
                                                                      const Voxel& c,
                                                                      std::size_t& layer_segments) {
-  const std::int32_t zc = std::int32_t(c.z - runs.region.lo.z);
-  const std::int64_t r = disc.r;
-  const __m512i zero = _mm512_setzero_si512();
-  Acc512 acc{zero, zero, zero, zero, zero, zero, zero, zero, zero, zero};
-  for (std::int64_t v = -r; v <= r; ++v) {
-    const std::int32_t U = disc.half[std::size_t(v + r)];
-    const std::int32_t* w = disc.w.data() + disc.offset[std::size_t(v + r)];
-    const std::int32_t len = 2 * U + 1;
-    const std::int64_t y = c.y + v, x0 = c.x - U;
-    const std::size_t col = runs.column(x0, y);
-    line512(runs.begin[0].data() + col, runs.end[0].data() + col, w, len, zc, U, v, acc);
-    for (int k = 1; k < runs.layers(); ++k) {
-      const auto [first, last] = runs.deeper_range(k, y, x0, x0 + 2 * U);
-      if (first > last) break;
-      const std::int32_t j0 = std::int32_t(first - x0), j1 = std::int32_t(last - x0);
-      layer_segments += std::size_t(j1 - j0 + 1);
-      line512(runs.begin[std::size_t(k)].data() + col + std::size_t(j0),
-              runs.end[std::size_t(k)].data() + col + std::size_t(j0), w + j0, j1 - j0 + 1, zc,
-              U - j0, v, acc);
-    }
-  }
-  BallMoments out;
-  out.m0 = hsum64(acc.m0);
-  out.m1 = {hsum64(acc.mx), hsum64(acc.my), hsum64(acc.mz2) / 2};
-  out.m2 = {hsum64(acc.mxx), hsum64(acc.myy),      hsum64(acc.mzz6) / 6,
-            hsum64(acc.mxy), hsum64(acc.mxz2) / 2, hsum64(acc.myz2) / 2};
-  return out;
+  ZDG_BALL_BY_LINES(line512, Acc512, hsum64, __m512i, _mm512_setzero_si512)
 }
 #endif
 
@@ -410,35 +416,11 @@ line256(const std::int32_t* a, const std::int32_t* b, const std::int32_t* w, std
 __attribute__((target("avx2"))) BallMoments ball_from_runs_avx2(const ColumnRuns& runs,
                                                                 const Disc& disc, const Voxel& c,
                                                                 std::size_t& layer_segments) {
-  const std::int32_t zc = std::int32_t(c.z - runs.region.lo.z);
-  const std::int64_t r = disc.r;
-  const __m256i zero = _mm256_setzero_si256();
-  Acc256 acc{zero, zero, zero, zero, zero, zero, zero, zero, zero, zero};
-  for (std::int64_t v = -r; v <= r; ++v) {
-    const std::int32_t U = disc.half[std::size_t(v + r)];
-    const std::int32_t* w = disc.w.data() + disc.offset[std::size_t(v + r)];
-    const std::int32_t len = 2 * U + 1;
-    const std::int64_t y = c.y + v, x0 = c.x - U;
-    const std::size_t col = runs.column(x0, y);
-    line256(runs.begin[0].data() + col, runs.end[0].data() + col, w, len, zc, U, v, acc);
-    for (int k = 1; k < runs.layers(); ++k) {
-      const auto [first, last] = runs.deeper_range(k, y, x0, x0 + 2 * U);
-      if (first > last) break;
-      const std::int32_t j0 = std::int32_t(first - x0), j1 = std::int32_t(last - x0);
-      layer_segments += std::size_t(j1 - j0 + 1);
-      line256(runs.begin[std::size_t(k)].data() + col + std::size_t(j0),
-              runs.end[std::size_t(k)].data() + col + std::size_t(j0), w + j0, j1 - j0 + 1, zc,
-              U - j0, v, acc);
-    }
-  }
-  BallMoments out;
-  out.m0 = hsum256(acc.m0);
-  out.m1 = {hsum256(acc.mx), hsum256(acc.my), hsum256(acc.mz2) / 2};
-  out.m2 = {hsum256(acc.mxx), hsum256(acc.myy),      hsum256(acc.mzz6) / 6,
-            hsum256(acc.mxy), hsum256(acc.mxz2) / 2, hsum256(acc.myz2) / 2};
-  return out;
+  ZDG_BALL_BY_LINES(line256, Acc256, hsum256, __m256i, _mm256_setzero_si256)
 }
 #endif
+
+#undef ZDG_BALL_BY_LINES
 
 /// The lanes of the widest vectorized form this CPU runs: 16 (AVX-512F), 8 (AVX2) or 0
 /// (the portable loop); decided once.

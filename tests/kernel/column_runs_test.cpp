@@ -81,6 +81,21 @@ TEST(ColumnRuns, RunsAreTheSetColumnByColumn) {
   });
 }
 
+// A random mask of the blocks of region: with k > 0 a block is needed with probability 1/k,
+// with k < 0 with probability 1 - 1/|k| (the shrunk value 0 of the generator: needed).
+zdg::BlockMask random_mask(const VoxelBox& region, int k) {
+  const std::int64_t B = ColumnRuns::kBlock;
+  zdg::BlockMask mask;
+  mask.bx = (region.hi.x - region.lo.x + B) / B;
+  mask.by = (region.hi.y - region.lo.y + B) / B;
+  mask.bz = (region.hi.z - region.lo.z + B) / B;
+  for (std::int64_t i = 0; i < mask.bx * mask.by * mask.bz; ++i) {
+    const int g = *rc::gen::inRange(0, k > 0 ? k : -k);
+    mask.needed.push_back(k > 0 ? (g == 0 ? 1 : 0) : (g != -k - 1 ? 1 : 0));
+  }
+  return mask;
+}
+
 // With a block mask, only the voxels of needed blocks are evaluated and the runs are exact
 // there.
 TEST(ColumnRuns, MaskedRunsAreExactOnNeededBlocks) {
@@ -89,12 +104,7 @@ TEST(ColumnRuns, MaskedRunsAreExactOnNeededBlocks) {
     const VoxelBox box{{-20, -20, -20}, {20, 20, 20}};
     const VoxelBox region{{-19, -18, -21}, {14, 17, 22}};
     const std::int64_t B = ColumnRuns::kBlock;
-    zdg::BlockMask mask;
-    mask.bx = (region.hi.x - region.lo.x + B) / B;
-    mask.by = (region.hi.y - region.lo.y + B) / B;
-    mask.bz = (region.hi.z - region.lo.z + B) / B;
-    for (std::int64_t i = 0; i < mask.bx * mask.by * mask.bz; ++i)
-      mask.needed.push_back(*rc::gen::inRange(0, 3) == 0 ? 1 : 0);
+    const zdg::BlockMask mask = random_mask(region, 3);
     const ColumnRuns runs = zdg::column_runs(in, box, region, 2, &mask);
     std::size_t needed_voxels = 0;
     for (std::int64_t z = region.lo.z; z <= region.hi.z; ++z)
@@ -127,13 +137,7 @@ TEST(ColumnRuns, PolynomialColumnsEqualVoxelByVoxel) {
     const zdg::VoxelPredicate by_voxel = [by_column](const Voxel& z) { return by_column(z); };
     const VoxelBox box{{-30, -30, -30}, {30, 30, 30}};
     const VoxelBox region{{-31, -29, -33}, {27, 30, 31}};
-    const std::int64_t B = ColumnRuns::kBlock;
-    zdg::BlockMask mask;
-    mask.bx = (region.hi.x - region.lo.x + B) / B;
-    mask.by = (region.hi.y - region.lo.y + B) / B;
-    mask.bz = (region.hi.z - region.lo.z + B) / B;
-    for (std::int64_t i = 0; i < mask.bx * mask.by * mask.bz; ++i)
-      mask.needed.push_back(*rc::gen::inRange(0, 4) != 3 ? 1 : 0);
+    const zdg::BlockMask mask = random_mask(region, -4);
     const ColumnRuns a = zdg::column_runs(by_column, box, region, 2, &mask);
     const ColumnRuns b = zdg::column_runs(by_voxel, box, region, 2, &mask);
     RC_ASSERT(a.begin == b.begin);
