@@ -17,6 +17,12 @@ void populate_pages(void* p, std::size_t bytes, unsigned threads) noexcept {
   const auto begin = reinterpret_cast<std::uintptr_t>(p);
   const std::uintptr_t lo = (begin + page - 1) & ~(page - 1), hi = (begin + bytes) & ~(page - 1);
   const auto pages = static_cast<std::int64_t>((hi - lo) / page);
+#if defined(MADV_HUGEPAGE)
+  // Transparent huge pages where the system offers them on request (the common "madvise"
+  // setting): one fault per 2 MiB instead of per 4 KiB, and fewer TLB misses for the passes
+  // that stride across the buffer. Advice only, like the population below.
+  ::madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_HUGEPAGE);
+#endif
   try {
     parallel_chunks(pages, threads, [&](std::int64_t b, std::int64_t e) {
       // Advice only: an old kernel answers EINVAL and the pages fault in on first touch.

@@ -1,9 +1,15 @@
 #include <zdg/kernel/separable_engine.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
 
 namespace zdg::detail {
 
@@ -189,6 +195,394 @@ void envelope_line(const LineMetric<K, V>& m, V* f, std::int64_t len, std::int64
   }
 }
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#define ZDG_ENVELOPE_AVX512 1
+
+// Halves of a vector of 16 int32 and back (vector extensions: GCC 12's cast and extract
+// intrinsics warn -Wmaybe-uninitialized).
+typedef std::int32_t I32x8 __attribute__((vector_size(32)));
+typedef std::int32_t I32x16 __attribute__((vector_size(64)));
+template <int H>
+__attribute__((target("avx512f"), always_inline)) inline __m256i half(__m512i v) {
+  const auto x = reinterpret_cast<I32x16>(v);
+  if constexpr (H == 0) {
+    return reinterpret_cast<__m256i>(__builtin_shufflevector(x, x, 0, 1, 2, 3, 4, 5, 6, 7));
+  } else {
+    return reinterpret_cast<__m256i>(__builtin_shufflevector(x, x, 8, 9, 10, 11, 12, 13, 14, 15));
+  }
+}
+__attribute__((target("avx512f"), always_inline)) inline __m512i join(__m256i a, __m256i b) {
+  return reinterpret_cast<__m512i>(
+      __builtin_shufflevector(reinterpret_cast<I32x8>(a), reinterpret_cast<I32x8>(b), 0, 1, 2, 3, 4,
+                              5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+}
+
+// g + metric length of dx (LineMetric::eval) in 16 lanes; |dx|^p by p - 1 products (the
+// int32 engine holds L^p, so p is small: p <= 30, and p <= 3 for lines of 1,000 points).
+template <int K>
+__attribute__((target("avx512f"), always_inline)) inline __m512i eval16(__m512i f, __m512i dx,
+                                                                        int p) {
+  const __mmask16 all = 0xFFFF;
+  if constexpr (K == kL2) {
+    (void)p;
+    return _mm512_add_epi32(f, _mm512_mullo_epi32(dx, dx));
+  } else {
+    const __m512i a = _mm512_maskz_abs_epi32(all, dx);
+    if constexpr (K == kL1) {
+      (void)p;
+      return _mm512_add_epi32(f, a);
+    } else if constexpr (K == kLinf) {
+      (void)p;
+      return _mm512_maskz_max_epi32(all, f, a);
+    } else {
+      __m512i r = a;
+      for (int k = 1; k < p; ++k) r = _mm512_mullo_epi32(r, a);
+      return _mm512_add_epi32(f, r);
+    }
+  }
+}
+
+// The separator r (LineMetric::sep before its clamp to [t_top, end - 1]; `far`: lanes where
+// u never wins) of the tops (ts, tf) and u (fu) in the lanes of `full`; for l_p, the clamped
+// one, by bisection over [tt, hi).
+template <int K>
+__attribute__((target("avx512f"), always_inline)) inline __m512i
+separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i vhi, int p,
+            __mmask16 full, __mmask16& far) {
+  const __mmask16 all = 0xFFFF;
+  const __m512i one = _mm512_set1_epi32(1);
+  far = 0;
+  if constexpr (K == kL2) {
+    (void)tt;
+    (void)vhi;
+    (void)p;
+    (void)full;
+    const __m512i diff = _mm512_sub_epi32(vu, ts);
+    const __m512i num = _mm512_add_epi32(_mm512_mullo_epi32(diff, _mm512_add_epi32(vu, ts)),
+                                         _mm512_sub_epi32(fu, tf));
+    const __m512i den = _mm512_add_epi32(diff, diff);
+    // floor(num / den) in two halves of 8 doubles (exact, see envelope_block_avx512)
+    const __m512d nlo = _mm512_maskz_cvtepi32_pd(0xFF, half<0>(num));
+    const __m512d nhi = _mm512_maskz_cvtepi32_pd(0xFF, half<1>(num));
+    const __m512d dlo = _mm512_maskz_cvtepi32_pd(0xFF, half<0>(den));
+    const __m512d dhi = _mm512_maskz_cvtepi32_pd(0xFF, half<1>(den));
+    const __m256i qlo8 = _mm512_maskz_cvt_roundpd_epi32(0xFF, _mm512_div_pd(nlo, dlo),
+                                                        _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+    const __m256i qhi8 = _mm512_maskz_cvt_roundpd_epi32(0xFF, _mm512_div_pd(nhi, dhi),
+                                                        _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+    return join(qlo8, qhi8);
+  } else if constexpr (K == kL1) {
+    (void)tt;
+    (void)vhi;
+    (void)p;
+    const __m512i df = _mm512_sub_epi32(fu, tf);
+    far = full & _mm512_cmpge_epi32_mask(df, _mm512_sub_epi32(vu, ts));
+    return _mm512_maskz_srai_epi32(all, _mm512_add_epi32(df, _mm512_add_epi32(vu, ts)), 1);
+  } else if constexpr (K == kLinf) {
+    (void)tt;
+    (void)vhi;
+    (void)p;
+    (void)full;
+    const __m512i mid = _mm512_maskz_srai_epi32(all, _mm512_add_epi32(vu, ts), 1);
+    const __mmask16 le = _mm512_cmple_epi32_mask(tf, fu);
+    const __m512i a_le = _mm512_add_epi32(ts, fu), a_gt = _mm512_sub_epi32(vu, tf);
+    return _mm512_mask_mov_epi32(_mm512_maskz_min_epi32(all, a_gt, mid), le,
+                                 _mm512_maskz_max_epi32(all, a_le, mid));
+  } else {
+    // Where the top and u are equally high (f_u = f_s), the separator is at the midpoint:
+    // two exact tests at x0 = the midpoint and x0 + 1 settle those lanes, a gallop from there
+    // brackets the others (Newton steps in float toward the root of f_u - f_s + |t - u|^p -
+    // |t - s|^p were measured: slower on the ball, their divisions cost more than they save),
+    // then bisection: the top wins at lo, u wins at hi (or hi is the end of the line).
+    __m512i x0 = _mm512_maskz_srai_epi32(all, _mm512_add_epi32(ts, vu), 1);
+    x0 = _mm512_maskz_min_epi32(all, _mm512_maskz_max_epi32(all, x0, tt),
+                                _mm512_sub_epi32(vhi, one));
+    const __m512i x1 = _mm512_add_epi32(x0, one);
+    const __mmask16 top0 =
+        full & ~_mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(x0, vu), p),
+                                        eval16<K>(tf, _mm512_sub_epi32(x0, ts), p));
+    const __mmask16 in1 = _mm512_cmplt_epi32_mask(x1, vhi);
+    const __mmask16 top1 =
+        in1 & ~_mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(x1, vu), p),
+                                       eval16<K>(tf, _mm512_sub_epi32(x1, ts), p));
+    __m512i lo = _mm512_mask_mov_epi32(tt, top0, x0);
+    lo = _mm512_mask_mov_epi32(lo, top0 & top1, x1);
+    __m512i hi = _mm512_mask_mov_epi32(vhi, full & ~top0, x0);
+    hi = _mm512_mask_mov_epi32(hi, top0 & in1 & ~top1, x1);
+    // Gallop from the guess (the guess is off by a few points where it is off at all): up
+    // where the top still wins at x0 + 1, down where u already wins at x0.
+    __mmask16 up = top0 & top1, down = full & ~top0;
+    for (__m512i step = one; up != 0; step = _mm512_add_epi32(step, step)) {
+      const __m512i y = _mm512_add_epi32(lo, step);
+      const __mmask16 test = up & _mm512_cmplt_epi32_mask(y, vhi);
+      const __mmask16 tw =
+          test & ~_mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(y, vu), p),
+                                          eval16<K>(tf, _mm512_sub_epi32(y, ts), p));
+      lo = _mm512_mask_mov_epi32(lo, tw, y);
+      hi = _mm512_mask_mov_epi32(hi, test & ~tw, y);
+      up = tw;
+    }
+    for (__m512i step = one; down != 0; step = _mm512_add_epi32(step, step)) {
+      const __m512i y = _mm512_sub_epi32(hi, step);
+      const __mmask16 test = down & _mm512_cmpgt_epi32_mask(y, tt);
+      const __mmask16 tw =
+          test & ~_mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(y, vu), p),
+                                          eval16<K>(tf, _mm512_sub_epi32(y, ts), p));
+      lo = _mm512_mask_mov_epi32(lo, tw, y);
+      hi = _mm512_mask_mov_epi32(hi, test & ~tw, y);
+      down = test & ~tw;
+    }
+    for (;;) {
+      const __mmask16 open = full & _mm512_cmpgt_epi32_mask(_mm512_sub_epi32(hi, lo), one);
+      if (open == 0) break;
+      const __m512i mid =
+          _mm512_add_epi32(lo, _mm512_maskz_srai_epi32(all, _mm512_sub_epi32(hi, lo), 1));
+      const __m512i gu = eval16<K>(fu, _mm512_sub_epi32(mid, vu), p);
+      const __m512i gi = eval16<K>(tf, _mm512_sub_epi32(mid, ts), p);
+      const __mmask16 uw = _mm512_mask_cmplt_epi32_mask(open, gu, gi);
+      hi = _mm512_mask_mov_epi32(hi, uw, mid);
+      lo = _mm512_mask_mov_epi32(lo, open & static_cast<__mmask16>(~uw), mid);
+    }
+    return lo;
+  }
+}
+
+// The envelopes of NB blocks of 16 adjacent lines in int32, one line per lane of an AVX-512
+// vector (the lines' rows are contiguous in memory, so a row of a block is one vector load: no
+// transpose). It is the stack sweep of envelope_line<false, ZeroRuns> run in lockstep, with
+// the stack of each lane kept as a list linked through positions: pushing u stores, in row u
+// of two position-indexed tables, the site below it and the start of its segment (plain vector
+// stores: every lane writes row u), popping follows the link (a gather), so no scatter is
+// needed. The queries walk each lane's list from the top, x from the end of the line down.
+// The NB blocks advance together (each pop round gathers for all of them): their dependency
+// chains of gathers overlap, and a row of the NB blocks is NB adjacent cache lines.
+// Separators (LineMetric::sep, the same integers):
+// - l2: floor(((u - s)(u + s) + f_u - f_s) / (2 (u - s))) computed in double: the numerator
+//   is below 2^31 in magnitude and the denominator below 2^17, so the rounded quotient is
+//   within 2^-22 of the exact one, closer than any non-integer quotient is to an integer
+//   (1 / den), and the floor of the rounded quotient is the exact floor;
+// - l1 and linf: their closed forms (a shift is the floor of a halving);
+// - l_p: the last t in [t_top, end) where the top still wins, by bisection in every lane at
+//   once (the predicate is monotone, so it is the same t as the scalar gallop from a guess).
+// Every other operation is the int32 arithmetic of the scalar loop (bounded by `need`,
+// separable_engine.hpp), so the values are the same to the bit.
+//
+// src: the first block's first value, rows st values apart, bw lanes used in all (the first
+// bw of the 16 NB columns); written in place. tables: 3 NB len 16 int32, 64-byte aligned.
+template <int K, int NB>
+__attribute__((target("avx512f"))) void
+envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n, bool periodic,
+                      bool zero_runs, std::int32_t inf, int p, std::int32_t* tables) {
+  const std::int64_t len = periodic ? 3 * n : n, qlo = periodic ? n : 0, qhi = qlo + n;
+  const __m512i vinf = _mm512_set1_epi32(inf), zero = _mm512_setzero_si512();
+  const __m512i one = _mm512_set1_epi32(1);
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  // (the maskz_ forms with every lane: GCC 12's plain forms warn -Wmaybe-uninitialized)
+  const __mmask16 all = 0xFFFF;
+  __mmask16 used[NB];
+  std::int32_t *F[NB], *B[NB], *T[NB];
+  for (int b = 0; b < NB; ++b) {
+    const int w = std::clamp(bw - 16 * b, 0, 16);
+    used[b] = static_cast<__mmask16>((1u << w) - 1u);
+    F[b] = tables + 3 * b * len * 16;
+    B[b] = F[b] + len * 16;
+    T[b] = B[b] + len * 16;
+  }
+  // The rows, copied once (three times on a torus); unused lanes hold inf (no function).
+  constexpr std::int64_t kAhead = 16;
+  for (std::int64_t x = 0; x < n; ++x) {
+    if (st > 16 * NB && x + kAhead < n) {
+      for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (x + kAhead) * st + 16 * b);
+    }
+    for (int b = 0; b < NB; ++b) {
+      const __m512i row = _mm512_mask_loadu_epi32(vinf, used[b], src + x * st + 16 * b);
+      _mm512_store_si512(F[b] + (qlo + x) * 16, row);
+      if (periodic) {
+        _mm512_store_si512(F[b] + x * 16, row);
+        _mm512_store_si512(F[b] + (2 * n + x) * 16, row);
+      }
+    }
+  }
+  // Stack tops per lane: site s (-1: empty), segment start t, value f.
+  __m512i ts[NB], tt[NB], tf[NB];
+  for (int b = 0; b < NB; ++b) {
+    ts[b] = _mm512_set1_epi32(-1);
+    tt[b] = _mm512_set1_epi32(std::numeric_limits<std::int32_t>::min());
+    tf[b] = zero;
+  }
+  const __m512i vhi = _mm512_set1_epi32(static_cast<std::int32_t>(qhi));
+  const __m512i vhi1 = _mm512_set1_epi32(static_cast<std::int32_t>(qhi - 1));
+  const __m512i vqlo = _mm512_set1_epi32(static_cast<std::int32_t>(qlo));
+  for (std::int64_t u = 0; u < len; ++u) {
+    const __m512i vu = _mm512_set1_epi32(static_cast<std::int32_t>(u));
+    __m512i fu[NB];
+    __mmask16 active[NB], pop[NB];
+    bool any = false;
+    for (int b = 0; b < NB; ++b) {
+      fu[b] = _mm512_load_si512(F[b] + u * 16);
+      active[b] = _mm512_cmpneq_epi32_mask(fu[b], vinf);
+      if (zero_runs && u > 0 && u + 1 < len) {
+        const __mmask16 run =
+            _mm512_cmpeq_epi32_mask(fu[b], zero) &
+            _mm512_cmpeq_epi32_mask(_mm512_load_si512(F[b] + (u - 1) * 16), zero) &
+            _mm512_cmpeq_epi32_mask(_mm512_load_si512(F[b] + (u + 1) * 16), zero);
+        active[b] &= static_cast<__mmask16>(~run);
+      }
+      any |= active[b] != 0;
+    }
+    if (!any) continue;
+    for (;;) {
+      // Pop where the top's value at its segment start exceeds u's there.
+      bool popped = false;
+      for (int b = 0; b < NB; ++b) {
+        const __mmask16 cand = active[b] & _mm512_cmpge_epi32_mask(ts[b], zero);
+        const __m512i gtop = eval16<K>(tf[b], _mm512_sub_epi32(tt[b], ts[b]), p);
+        const __m512i gu = eval16<K>(fu[b], _mm512_sub_epi32(tt[b], vu), p);
+        pop[b] = _mm512_mask_cmpgt_epi32_mask(cand, gtop, gu);
+        popped |= pop[b] != 0;
+      }
+      if (!popped) break;
+      for (int b = 0; b < NB; ++b) {
+        const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts[b], 4), lane);
+        ts[b] = _mm512_mask_i32gather_epi32(ts[b], pop[b], at, B[b], 4);
+        const __mmask16 live = pop[b] & _mm512_cmpge_epi32_mask(ts[b], zero);
+        const __m512i at2 = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts[b], 4), lane);
+        tt[b] = _mm512_mask_i32gather_epi32(tt[b], live, at2, T[b], 4);
+        tf[b] = _mm512_mask_i32gather_epi32(tf[b], live, at2, F[b], 4);
+      }
+    }
+    for (int b = 0; b < NB; ++b) {
+      if (active[b] == 0) continue;
+      const __mmask16 empty = active[b] & _mm512_cmplt_epi32_mask(ts[b], zero);
+      const __mmask16 full = active[b] & static_cast<__mmask16>(~empty);
+      __m512i w = vqlo;
+      __mmask16 push = empty;
+      if (full != 0) {
+        __mmask16 far = 0;
+        __m512i r = separator16<K>(vu, fu[b], ts[b], tt[b], tf[b], vhi, p, full, far);
+        if constexpr (K != kLp) {
+          r = _mm512_maskz_min_epi32(all, _mm512_maskz_max_epi32(all, r, tt[b]), vhi1);
+          r = _mm512_mask_mov_epi32(r, far, vhi1);
+        }
+        push |= full & _mm512_cmplt_epi32_mask(r, vhi1);
+        w = _mm512_mask_mov_epi32(w, full, _mm512_add_epi32(r, one));
+      }
+      if (push == 0) continue;
+      // Row u of the tables: the site below u and u's segment start (rows of lanes that do not
+      // push u are never read: u is not on their lists).
+      _mm512_store_si512(B[b] + u * 16, ts[b]);
+      _mm512_store_si512(T[b] + u * 16, w);
+      ts[b] = _mm512_mask_mov_epi32(ts[b], push, vu);
+      tt[b] = _mm512_mask_mov_epi32(tt[b], push, w);
+      tf[b] = _mm512_mask_mov_epi32(tf[b], push, fu[b]);
+    }
+  }
+  // Queries, from the end of the line: the segment of x is the first one from the top whose
+  // start is <= x.
+  for (std::int64_t x = qhi; x-- > qlo;) {
+    if (st > 16 * NB && x - kAhead >= qlo) {
+      for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (x - kAhead - qlo) * st + 16 * b, 1);
+    }
+    const __m512i vx = _mm512_set1_epi32(static_cast<std::int32_t>(x));
+    for (;;) {
+      __mmask16 down[NB];
+      bool moved = false;
+      for (int b = 0; b < NB; ++b) {
+        down[b] = _mm512_cmpgt_epi32_mask(tt[b], vx) & _mm512_cmpge_epi32_mask(ts[b], zero);
+        moved |= down[b] != 0;
+      }
+      if (!moved) break;
+      for (int b = 0; b < NB; ++b) {
+        const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts[b], 4), lane);
+        ts[b] = _mm512_mask_i32gather_epi32(ts[b], down[b], at, B[b], 4);
+        const __mmask16 live = down[b] & _mm512_cmpge_epi32_mask(ts[b], zero);
+        const __m512i at2 = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts[b], 4), lane);
+        tt[b] = _mm512_mask_i32gather_epi32(tt[b], live, at2, T[b], 4);
+        tf[b] = _mm512_mask_i32gather_epi32(tf[b], live, at2, F[b], 4);
+      }
+    }
+    for (int b = 0; b < NB; ++b) {
+      const __mmask16 some = _mm512_cmpge_epi32_mask(ts[b], zero);
+      __m512i g = eval16<K>(tf[b], _mm512_sub_epi32(vx, ts[b]), p);
+      g = _mm512_mask_mov_epi32(vinf, some, g);
+      if (zero_runs) {
+        g = _mm512_mask_mov_epi32(
+            g, _mm512_cmpeq_epi32_mask(_mm512_load_si512(F[b] + x * 16), zero), zero);
+      }
+      _mm512_mask_storeu_epi32(src + (x - qlo) * st + 16 * b, used[b], g);
+    }
+  }
+}
+
+// 16 bytes from p, or the `left` < 16 there and zeros (AVX-512F has no masked byte load).
+__attribute__((always_inline)) inline __m128i load16(const std::uint8_t* p, std::int64_t left) {
+  if (left >= 16) return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+  alignas(16) std::uint8_t tail[16] = {};
+  std::memcpy(tail, p, static_cast<std::size_t>(left));
+  return _mm_load_si128(reinterpret_cast<const __m128i*>(tail));
+}
+
+template <int K>
+__attribute__((target("avx512f"))) void mask_line_avx512(const std::uint8_t* mk, std::int32_t* out,
+                                                         std::int64_t n, const std::int32_t* pw,
+                                                         std::int32_t inf) {
+  const __mmask16 all = 0xFFFF;
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  const auto nn = static_cast<std::int32_t>(n);
+  const __m512i none_before = _mm512_set1_epi32(-2 * nn), none_after = _mm512_set1_epi32(3 * nn);
+  const __m512i zero = _mm512_setzero_si512();
+  __m512i carry = none_before;
+  for (std::int64_t x0 = 0; x0 < n; x0 += 16) {
+    const __mmask16 valid = n - x0 >= 16 ? all : static_cast<__mmask16>((1u << (n - x0)) - 1u);
+    const __m512i v = _mm512_maskz_cvtepu8_epi32(all, load16(mk + x0, n - x0));
+    const __m512i pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
+    const __mmask16 site = valid & _mm512_cmpeq_epi32_mask(v, zero);
+    __m512i c = _mm512_mask_mov_epi32(none_before, site, pos);
+    c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 15));
+    c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 14));
+    c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 12));
+    c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 8));
+    c = _mm512_maskz_max_epi32(all, c, carry);
+    carry = _mm512_maskz_permutexvar_epi32(all, _mm512_set1_epi32(15), c);
+    _mm512_mask_storeu_epi32(out + x0, valid, _mm512_sub_epi32(pos, c));
+  }
+  if (_mm512_cmplt_epi32_mask(carry, zero) != 0) { // no site on the line
+    for (std::int64_t x = 0; x < n; ++x) out[x] = inf;
+    return;
+  }
+  carry = none_after;
+  for (std::int64_t x0 = (n - 1) / 16 * 16; x0 >= 0; x0 -= 16) {
+    const __mmask16 valid = n - x0 >= 16 ? all : static_cast<__mmask16>((1u << (n - x0)) - 1u);
+    const __m512i v = _mm512_maskz_cvtepu8_epi32(all, load16(mk + x0, n - x0));
+    const __m512i pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
+    const __mmask16 site = valid & _mm512_cmpeq_epi32_mask(v, zero);
+    __m512i c = _mm512_mask_mov_epi32(none_after, site, pos);
+    c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 1));
+    c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 2));
+    c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 4));
+    c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 8));
+    c = _mm512_maskz_min_epi32(all, c, carry);
+    carry = _mm512_maskz_permutexvar_epi32(all, zero, c);
+    const __m512i fwd = _mm512_maskz_loadu_epi32(valid, out + x0);
+    const __m512i d = _mm512_maskz_min_epi32(all, fwd, _mm512_sub_epi32(c, pos));
+    __m512i g = d;
+    if constexpr (K == kL2) {
+      g = _mm512_mullo_epi32(d, d);
+    } else if constexpr (K == kLp) {
+      g = _mm512_mask_i32gather_epi32(zero, valid, d, pw, 4);
+    }
+    _mm512_mask_storeu_epi32(out + x0, valid, g);
+  }
+}
+
+bool envelope_avx512_supported() {
+  static const bool ok = __builtin_cpu_supports("avx512f");
+  return ok;
+}
+#endif
+
+std::atomic<bool> g_envelope_simd{true};
+
 template <class V>
 struct Scratch {
   std::vector<V> buf, fs;
@@ -212,6 +606,41 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
   const std::int64_t len = periodic ? 3 * n : n, qlo = periodic ? n : 0;
   V* fp = f;
   std::int64_t* sp = sites != nullptr ? sites->data() : nullptr;
+#if defined(ZDG_ENVELOPE_AVX512)
+  if constexpr (std::is_same_v<V, std::int32_t>) {
+    if (sp == nullptr && st > 1 && g_envelope_simd.load(std::memory_order_relaxed) &&
+        envelope_avx512_supported()) {
+      // Units of kNB blocks of 16 columns starting on 64-byte boundaries (a narrower first
+      // unit up to the first boundary): a row of a block is then one cache line, not two,
+      // when the stride is a multiple of 16.
+      constexpr int kNB = 2;
+      constexpr std::int64_t kWide = 16 * kNB;
+      const auto addr = reinterpret_cast<std::uintptr_t>(fp + jb) / sizeof(V);
+      const std::int64_t lead = std::min<std::int64_t>(je - jb, (16 - addr % 16) % 16);
+      const std::int64_t lead_units = lead > 0 ? 1 : 0;
+      const std::int64_t per_outer = lead_units + (je - jb - lead + kWide - 1) / kWide;
+      parallel_chunks(outer * per_outer, threads, [&](std::int64_t begin, std::int64_t end) {
+        std::vector<std::int32_t> scratch(static_cast<std::size_t>(3 * kNB * len * 16 + 16));
+        std::int32_t* tables = scratch.data();
+        tables += (16 - (reinterpret_cast<std::uintptr_t>(tables) / 4) % 16) % 16;
+        for (std::int64_t unit = begin; unit < end; ++unit) {
+          const std::int64_t o = unit / per_outer, k = unit % per_outer;
+          const std::int64_t j0 = k < lead_units ? jb : jb + lead + (k - lead_units) * kWide;
+          const std::int64_t bw = k < lead_units ? lead : std::min(kWide, je - j0);
+          std::int32_t* block = fp + o * n * st + j0;
+          if (bw <= 16) {
+            envelope_block_avx512<K, 1>(block, st, static_cast<int>(bw), n, periodic, nonnegative,
+                                        inf, m.p, tables);
+          } else {
+            envelope_block_avx512<K, kNB>(block, st, static_cast<int>(bw), n, periodic, nonnegative,
+                                          inf, m.p, tables);
+          }
+        }
+      });
+      return;
+    }
+  }
+#endif
   parallel_chunks(outer * nblocks, threads, [&](std::int64_t begin, std::int64_t end) {
     Scratch<V> sc;
     const auto ub = static_cast<std::size_t>(bw_max);
@@ -357,7 +786,46 @@ void mask_pass(const Domain& dom, bool periodic, const LineMetric<K, V>& m,
       }
     });
   };
-  if (item == 1) {
+#if defined(ZDG_ENVELOPE_AVX512)
+  if constexpr (std::is_same_v<V, std::int32_t>) {
+    if (item == 1 && !periodic && sp == nullptr && n < (std::int64_t{1} << 28) &&
+        g_envelope_simd.load(std::memory_order_relaxed) && envelope_avx512_supported()) {
+      parallel_chunks(lines, threads, [&](std::int64_t begin, std::int64_t end) {
+        for (std::int64_t line = begin; line < end; ++line) {
+          mask_line_avx512<K>(mask + line * n, fp + line * n, n, m.pw, inf);
+        }
+      });
+      return;
+    }
+  }
+#endif
+  if (item == 1 && !periodic && sp == nullptr) {
+    // The common case (one-byte mask, no torus, no sites) in two branch-free scans over the
+    // output line itself: forward, the distance to the last site at or before x (n + x when
+    // there is none: every true distance is below n); backward, the distance to the next site,
+    // the smaller of the two turned into its metric length. A line without a site is inf.
+    parallel_chunks(lines, threads, [&](std::int64_t begin, std::int64_t end) {
+      for (std::int64_t line = begin; line < end; ++line) {
+        const std::uint8_t* mk = mask + line * n;
+        V* out = fp + line * n;
+        std::int64_t d = n;
+        for (std::int64_t x = 0; x < n; ++x) {
+          d = mk[x] == 0 ? 0 : d + 1;
+          out[x] = small<V>(d);
+        }
+        if (d >= n) { // no site: d = 2n at the end
+          std::fill(out, out + n, inf);
+          continue;
+        }
+        d = n;
+        for (std::int64_t x = n; x-- > 0;) {
+          d = mk[x] == 0 ? 0 : d + 1;
+          const std::int64_t fwd = static_cast<std::int64_t>(out[x]);
+          out[x] = m.eval(zero, fwd < d ? fwd : d);
+        }
+      }
+    });
+  } else if (item == 1) {
     lines_with([](const std::uint8_t* mk, std::int64_t x) { return mk[x] == 0; });
   } else {
     lines_with([item](const std::uint8_t* mk, std::int64_t x) {
@@ -403,6 +871,18 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
   }
 }
 } // namespace
+
+bool set_envelope_simd(bool allowed) {
+  return g_envelope_simd.exchange(allowed);
+}
+
+bool envelope_simd_available() {
+#if defined(ZDG_ENVELOPE_AVX512)
+  return envelope_avx512_supported();
+#else
+  return false;
+#endif
+}
 
 unsigned resolve_threads(unsigned requested, std::int64_t n) {
   // Below 2^15 points a thread costs more than it saves.

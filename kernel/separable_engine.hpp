@@ -20,6 +20,9 @@
 // Cost: O(N d) per transform for l_1, l_2, l_inf and O(N d log n) for other p, N points.
 // Lines of non-contiguous axes are processed in blocks of adjacent lines (gathered into a
 // small buffer) so that every cache line read is used; passes split their lines over threads.
+// On CPUs with AVX-512F the int32 engine without sites runs vectorized (separable_engine.cpp):
+// the mask pass by prefix scans, 16 points per step, and the envelopes of the other axes 16
+// lines per vector (32 at once), every metric; the same integers, so the same values.
 //
 // Width: every value and intermediate is bounded at entry by
 //     need = 2 (sum_k m_k^p + w_max + L^p) + 2 L
@@ -62,6 +65,15 @@ void require_output_fits(const EnvelopeBounds& b, const TransformOptions& opt,
 
 /// Throws InvalidArgument unless mask items have 1, 2, 4 or 8 bytes.
 void require_mask_item_bytes(int mask_item_bytes, const char* who);
+
+/// Allows (the default) or forbids the vectorized passes (AVX-512F, the int32 engine without
+/// sites: the first pass of a one-byte mask, and the envelopes of lines of non-contiguous
+/// axes, 16 lines per vector); returns the previous setting. The results are the same either
+/// way: the tests compare both.
+bool set_envelope_simd(bool allowed);
+
+/// Whether this CPU runs the vectorized envelope (AVX-512F).
+bool envelope_simd_available();
 
 /// Worker threads actually used for n points.
 unsigned resolve_threads(unsigned requested, std::int64_t n);

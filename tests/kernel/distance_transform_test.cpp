@@ -1,4 +1,5 @@
 #include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/separable_engine.hpp>
 
 #include "tests/support/check_registry.hpp"
 #include "tests/support/tower.hpp"
@@ -8,6 +9,7 @@
 #include <rapidcheck.h>
 
 #include <algorithm>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -173,6 +175,56 @@ TEST(DistanceTransform, Errors) {
   EXPECT_THROW(parse_metric("l2.5"), InvalidArgument);
   EXPECT_EQ(parse_metric("l7").p, 7);
   EXPECT_TRUE(parse_metric("linf").is_inf());
+}
+
+// The vectorized passes (kernel/separable_engine.cpp: the mask pass by prefix scans, the
+// envelopes 16 lines per AVX-512 vector) run the scalar sweep lane by lane: the same values to
+// the bit for every metric (l1, l2, l3, l4, linf), in mask mode (distance transforms, zero runs
+// skipped) and in value mode (weighted sites, inf where none), on blocks of 16 columns and
+// narrower ones, and torus axes (lines of three copies). Oracle: the portable loop of the same
+// engine.
+TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
+  if (!detail::envelope_simd_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  struct Restore {
+    ~Restore() { detail::set_envelope_simd(true); }
+  } restore;
+  test::check_property([] {
+    std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
+    auto pick = [&](int lo, int hi) {
+      return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1));
+    };
+    const int d = pick(2, 3);
+    std::vector<std::int64_t> ext;
+    for (int k = 0; k < d; ++k) ext.push_back(pick(1, d == 2 ? 70 : 37));
+    Domain dom(ext);
+    TransformOptions opt;
+    opt.metric = Metric{pick(0, 4)};
+    for (int k = 0; k < d; ++k) opt.torus.push_back(pick(0, 2) == 0);
+    opt.threads = static_cast<unsigned>(pick(1, 2));
+    const int density = pick(0, 100);
+    std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+    for (auto& x : v) x = pick(0, 99) < density ? 1 : 0;
+    v[rng() % v.size()] = 0;
+    Image<std::uint8_t> shape(dom, v);
+    detail::set_envelope_simd(false);
+    auto ref = distance_transform<std::uint32_t>(shape, opt);
+    detail::set_envelope_simd(true);
+    RC_ASSERT(distance_transform<std::uint32_t>(shape, opt) == ref);
+
+    RC_TAG(opt.metric.name());
+    // Value mode: weights in [0, 1000] or no site, on the int32 engine.
+    const auto bounds = detail::envelope_bounds(dom, opt, BigInt(1000));
+    RC_PRE(bounds.width == detail::ValueWidth::I32);
+    const auto inf = detail::envelope_infinity<std::int32_t>(bounds);
+    std::vector<std::int32_t> f0(v.size());
+    for (auto& x : f0) x = pick(0, 3) == 0 ? pick(0, 1000) : inf;
+    std::vector<std::int32_t> a = f0, b = f0;
+    detail::set_envelope_simd(false);
+    detail::separable_envelope<std::int32_t>(dom, opt, nullptr, a.data(), inf, nullptr);
+    detail::set_envelope_simd(true);
+    detail::separable_envelope<std::int32_t>(dom, opt, nullptr, b.data(), inf, nullptr);
+    RC_ASSERT(a == b);
+  });
 }
 
 } // namespace
