@@ -347,13 +347,35 @@ separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i 
   }
 }
 
+// Pops the lanes of `go`: the element below the top (its site, segment start and value), from
+// row ts of the tables. Packed: site + 1 and start in the high and low 16 bits of one table.
+template <bool Packed>
+__attribute__((target("avx512f"), always_inline)) inline void
+below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* B,
+      const std::int32_t* BT, const std::int32_t* BF) {
+  const __mmask16 all = 0xFFFF;
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts, 4), lane);
+  if constexpr (Packed) {
+    (void)BT;
+    const __m512i pk = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), go, at, B, 4);
+    ts = _mm512_mask_sub_epi32(ts, go, _mm512_maskz_srai_epi32(all, pk, 16), _mm512_set1_epi32(1));
+    tt = _mm512_mask_and_epi32(tt, go, pk, _mm512_set1_epi32(0xFFFF));
+  } else {
+    ts = _mm512_mask_i32gather_epi32(ts, go, at, B, 4);
+    tt = _mm512_mask_i32gather_epi32(tt, go, at, BT, 4);
+  }
+  tf = _mm512_mask_i32gather_epi32(tf, go, at, BF, 4);
+}
+
 // The envelopes of NB blocks of 16 adjacent lines in int32, one line per lane of an AVX-512
 // vector (the lines' rows are contiguous in memory, so a row of a block is one vector load: no
 // transpose). It is the stack sweep of envelope_line<false, ZeroRuns> run in lockstep, with
 // the stack of each lane kept as a list linked through positions: pushing u stores, in row u
-// of two position-indexed tables, the site below it and the start of its segment (plain vector
-// stores: every lane writes row u), popping follows the link (a gather), so no scatter is
-// needed. The queries walk each lane's list from the top, x from the end of the line down.
+// of three position-indexed tables, the element below it (its site, segment start and value;
+// plain vector stores: every lane writes row u), and popping u reads them back (three
+// gathers from the same index, so a pop costs one gather latency), so no scatter is needed.
+// The queries walk each lane's list from the top, x from the end of the line down.
 // The NB blocks advance together (each pop round gathers for all of them): their dependency
 // chains of gathers overlap, and a row of the NB blocks is NB adjacent cache lines.
 // Separators (LineMetric::sep, the same integers):
@@ -362,31 +384,31 @@ separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i 
 //   within 2^-22 of the exact one, closer than any non-integer quotient is to an integer
 //   (1 / den), and the floor of the rounded quotient is the exact floor;
 // - l1 and linf: their closed forms (a shift is the floor of a halving);
-// - l_p: the last t in [t_top, end) where the top still wins, by bisection in every lane at
+// - l_p: the last t in [t_top, end) where the top still wins, by exact tests in every lane at
 //   once (the predicate is monotone, so it is the same t as the scalar gallop from a guess).
 // Every other operation is the int32 arithmetic of the scalar loop (bounded by `need`,
 // separable_engine.hpp), so the values are the same to the bit.
 //
 // src: the first block's first value, rows st values apart, bw lanes used in all (the first
-// bw of the 16 NB columns); written in place. tables: 3 NB len 16 int32, 64-byte aligned.
-template <int K, int NB>
+// bw of the 16 NB columns); written in place. tables: 4 NB len 16 int32, 64-byte aligned.
+template <int K, int NB, bool Packed>
 __attribute__((target("avx512f"))) void
 envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n, bool periodic,
                       bool zero_runs, std::int32_t inf, int p, std::int32_t* tables) {
   const std::int64_t len = periodic ? 3 * n : n, qlo = periodic ? n : 0, qhi = qlo + n;
   const __m512i vinf = _mm512_set1_epi32(inf), zero = _mm512_setzero_si512();
   const __m512i one = _mm512_set1_epi32(1);
-  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   // (the maskz_ forms with every lane: GCC 12's plain forms warn -Wmaybe-uninitialized)
   const __mmask16 all = 0xFFFF;
   __mmask16 used[NB];
-  std::int32_t *F[NB], *B[NB], *T[NB];
+  std::int32_t *F[NB], *B[NB], *BT[NB], *BF[NB];
   for (int b = 0; b < NB; ++b) {
     const int w = std::clamp(bw - 16 * b, 0, 16);
     used[b] = static_cast<__mmask16>((1u << w) - 1u);
-    F[b] = tables + 3 * b * len * 16;
+    F[b] = tables + 4 * b * len * 16;
     B[b] = F[b] + len * 16;
-    T[b] = B[b] + len * 16;
+    BT[b] = B[b] + len * 16; // unused when Packed
+    BF[b] = BT[b] + len * 16;
   }
   // The rows, copied once (three times on a torus); unused lanes hold inf (no function).
   constexpr std::int64_t kAhead = 16;
@@ -413,6 +435,7 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
   const __m512i vhi = _mm512_set1_epi32(static_cast<std::int32_t>(qhi));
   const __m512i vhi1 = _mm512_set1_epi32(static_cast<std::int32_t>(qhi - 1));
   const __m512i vqlo = _mm512_set1_epi32(static_cast<std::int32_t>(qlo));
+  const __m512i low16 = _mm512_set1_epi32(0xFFFF);
   for (std::int64_t u = 0; u < len; ++u) {
     const __m512i vu = _mm512_set1_epi32(static_cast<std::int32_t>(u));
     __m512i fu[NB];
@@ -443,12 +466,7 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       }
       if (!popped) break;
       for (int b = 0; b < NB; ++b) {
-        const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts[b], 4), lane);
-        ts[b] = _mm512_mask_i32gather_epi32(ts[b], pop[b], at, B[b], 4);
-        const __mmask16 live = pop[b] & _mm512_cmpge_epi32_mask(ts[b], zero);
-        const __m512i at2 = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts[b], 4), lane);
-        tt[b] = _mm512_mask_i32gather_epi32(tt[b], live, at2, T[b], 4);
-        tf[b] = _mm512_mask_i32gather_epi32(tf[b], live, at2, F[b], 4);
+        below<Packed>(ts[b], tt[b], tf[b], pop[b], B[b], BT[b], BF[b]);
       }
     }
     for (int b = 0; b < NB; ++b) {
@@ -468,10 +486,18 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
         w = _mm512_mask_mov_epi32(w, full, _mm512_add_epi32(r, one));
       }
       if (push == 0) continue;
-      // Row u of the tables: the site below u and u's segment start (rows of lanes that do not
-      // push u are never read: u is not on their lists).
-      _mm512_store_si512(B[b] + u * 16, ts[b]);
-      _mm512_store_si512(T[b] + u * 16, w);
+      // Row u of the tables: the element below u (rows of lanes that do not push u are never
+      // read: u is not on their lists).
+      if constexpr (Packed) {
+        _mm512_store_si512(
+            B[b] + u * 16,
+            _mm512_or_si512(_mm512_maskz_slli_epi32(all, _mm512_add_epi32(ts[b], one), 16),
+                            _mm512_and_si512(tt[b], low16)));
+      } else {
+        _mm512_store_si512(B[b] + u * 16, ts[b]);
+        _mm512_store_si512(BT[b] + u * 16, tt[b]);
+      }
+      _mm512_store_si512(BF[b] + u * 16, tf[b]);
       ts[b] = _mm512_mask_mov_epi32(ts[b], push, vu);
       tt[b] = _mm512_mask_mov_epi32(tt[b], push, w);
       tf[b] = _mm512_mask_mov_epi32(tf[b], push, fu[b]);
@@ -493,12 +519,7 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       }
       if (!moved) break;
       for (int b = 0; b < NB; ++b) {
-        const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts[b], 4), lane);
-        ts[b] = _mm512_mask_i32gather_epi32(ts[b], down[b], at, B[b], 4);
-        const __mmask16 live = down[b] & _mm512_cmpge_epi32_mask(ts[b], zero);
-        const __m512i at2 = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts[b], 4), lane);
-        tt[b] = _mm512_mask_i32gather_epi32(tt[b], live, at2, T[b], 4);
-        tf[b] = _mm512_mask_i32gather_epi32(tf[b], live, at2, F[b], 4);
+        below<Packed>(ts[b], tt[b], tf[b], down[b], B[b], BT[b], BF[b]);
       }
     }
     for (int b = 0; b < NB; ++b) {
@@ -583,6 +604,88 @@ bool envelope_avx512_supported() {
 
 std::atomic<bool> g_envelope_simd{true};
 
+#if defined(ZDG_ENVELOPE_AVX512)
+constexpr int kSimdBlocks = 4; // blocks of 16 lines advancing together
+
+// Scratch of envelope_columns_avx512 for lines of len points (64-byte aligned).
+struct SimdTables {
+  std::vector<std::int32_t> buf;
+  std::int32_t* get(std::int64_t len) {
+    const auto need = static_cast<std::size_t>(4 * kSimdBlocks * len * 16 + 16);
+    if (buf.size() < need) buf.assign(need, 0);
+    std::int32_t* q = buf.data();
+    return q + (16 - (reinterpret_cast<std::uintptr_t>(q) / 4) % 16) % 16;
+  }
+};
+
+template <int K, int NB>
+void envelope_block_dispatch(std::int32_t* at, std::int64_t stride, std::int64_t w, std::int64_t n,
+                             bool periodic, bool zero_runs, std::int32_t inf, int p,
+                             std::int32_t* tables) {
+  // Sites and segment starts fit 16 bits on lines under 2^15 points (always for p >= 2 on
+  // the int32 engine: L^p < 2^30), so a pop gathers two tables instead of three.
+  if ((periodic ? 3 * n : n) < (std::int64_t{1} << 15)) {
+    envelope_block_avx512<K, NB, true>(at, stride, static_cast<int>(w), n, periodic, zero_runs, inf,
+                                       p, tables);
+  } else {
+    envelope_block_avx512<K, NB, false>(at, stride, static_cast<int>(w), n, periodic, zero_runs,
+                                        inf, p, tables);
+  }
+}
+
+// The envelopes of the columns [0, cw) of lines of n points starting at base, rows `stride`
+// apart: units of kSimdBlocks blocks of 16 columns starting on 64-byte boundaries (a narrower
+// first block up to the first boundary): a row of a block is then one cache line, not two,
+// when the stride is a multiple of 16.
+template <int K>
+void envelope_columns_avx512(std::int32_t* base, std::int64_t stride, std::int64_t cw,
+                             std::int64_t n, bool periodic, bool zero_runs, std::int32_t inf, int p,
+                             std::int32_t* tables) {
+  constexpr std::int64_t kWide = 16 * kSimdBlocks;
+  const auto addr = reinterpret_cast<std::uintptr_t>(base) / sizeof(std::int32_t);
+  const std::int64_t lead = std::min<std::int64_t>(cw, (16 - addr % 16) % 16);
+  if (lead > 0) {
+    envelope_block_dispatch<K, 1>(base, stride, lead, n, periodic, zero_runs, inf, p, tables);
+  }
+  for (std::int64_t j0 = lead; j0 < cw; j0 += kWide) {
+    const std::int64_t bw = std::min(kWide, cw - j0);
+    std::int32_t* at = base + j0;
+    if (bw <= 16) {
+      envelope_block_dispatch<K, 1>(at, stride, bw, n, periodic, zero_runs, inf, p, tables);
+    } else if (bw <= 32) {
+      envelope_block_dispatch<K, 2>(at, stride, bw, n, periodic, zero_runs, inf, p, tables);
+    } else {
+      envelope_block_dispatch<K, kSimdBlocks>(at, stride, bw, n, periodic, zero_runs, inf, p,
+                                              tables);
+    }
+  }
+}
+
+// The mask pass and the envelope pass of the next axis (d - 2) fused, slice by slice: a slice
+// of the last two axes is transformed along its lines, then along its columns while it is
+// still in cache, instead of two passes over the whole volume through memory. Each line sees
+// the operations of the two passes in the same order: the same values.
+template <int K>
+void fused_mask_pass_avx512(const Domain& dom, bool periodic_columns,
+                            const LineMetric<K, std::int32_t>& m, const std::uint8_t* mask,
+                            std::int32_t* f, std::int32_t inf, unsigned threads) {
+  const int d = dom.dim();
+  const std::int64_t n = dom.extent(d - 1), rows = dom.extent(d - 2);
+  const std::int64_t slices = dom.size() / (n * rows);
+  const std::int64_t len = periodic_columns ? 3 * rows : rows;
+  parallel_chunks(slices, threads, [&](std::int64_t begin, std::int64_t end) {
+    SimdTables tables;
+    for (std::int64_t o = begin; o < end; ++o) {
+      for (std::int64_t line = o * rows; line < (o + 1) * rows; ++line) {
+        mask_line_avx512<K>(mask + line * n, f + line * n, n, m.pw, inf);
+      }
+      envelope_columns_avx512<K>(f + o * rows * n, n, n, rows, periodic_columns, true, inf, m.p,
+                                 tables.get(len));
+    }
+  });
+}
+#endif
+
 template <class V>
 struct Scratch {
   std::vector<V> buf, fs;
@@ -610,31 +713,20 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
   if constexpr (std::is_same_v<V, std::int32_t>) {
     if (sp == nullptr && st > 1 && g_envelope_simd.load(std::memory_order_relaxed) &&
         envelope_avx512_supported()) {
-      // Units of kNB blocks of 16 columns starting on 64-byte boundaries (a narrower first
-      // unit up to the first boundary): a row of a block is then one cache line, not two,
-      // when the stride is a multiple of 16.
-      constexpr int kNB = 2;
-      constexpr std::int64_t kWide = 16 * kNB;
+      // Units of up to kChunk columns of one block of lines, cut at 64-byte boundaries of
+      // the first block (the units of the others too when the block size is a multiple of 16
+      // values): only a unit's first 16-column block may be misaligned.
+      constexpr std::int64_t kChunk = 256;
       const auto addr = reinterpret_cast<std::uintptr_t>(fp + jb) / sizeof(V);
-      const std::int64_t lead = std::min<std::int64_t>(je - jb, (16 - addr % 16) % 16);
-      const std::int64_t lead_units = lead > 0 ? 1 : 0;
-      const std::int64_t per_outer = lead_units + (je - jb - lead + kWide - 1) / kWide;
+      const std::int64_t origin = jb - static_cast<std::int64_t>(addr % 16);
+      const std::int64_t per_outer = (je - origin + kChunk - 1) / kChunk;
       parallel_chunks(outer * per_outer, threads, [&](std::int64_t begin, std::int64_t end) {
-        std::vector<std::int32_t> scratch(static_cast<std::size_t>(3 * kNB * len * 16 + 16));
-        std::int32_t* tables = scratch.data();
-        tables += (16 - (reinterpret_cast<std::uintptr_t>(tables) / 4) % 16) % 16;
+        SimdTables tables;
         for (std::int64_t unit = begin; unit < end; ++unit) {
-          const std::int64_t o = unit / per_outer, k = unit % per_outer;
-          const std::int64_t j0 = k < lead_units ? jb : jb + lead + (k - lead_units) * kWide;
-          const std::int64_t bw = k < lead_units ? lead : std::min(kWide, je - j0);
-          std::int32_t* block = fp + o * n * st + j0;
-          if (bw <= 16) {
-            envelope_block_avx512<K, 1>(block, st, static_cast<int>(bw), n, periodic, nonnegative,
-                                        inf, m.p, tables);
-          } else {
-            envelope_block_avx512<K, kNB>(block, st, static_cast<int>(bw), n, periodic, nonnegative,
-                                          inf, m.p, tables);
-          }
+          const std::int64_t o = unit / per_outer, c = origin + (unit % per_outer) * kChunk;
+          const std::int64_t j0 = std::max(jb, c), j1 = std::min(je, c + kChunk);
+          envelope_columns_avx512<K>(fp + o * n * st + j0, st, j1 - j0, n, periodic, nonnegative,
+                                     inf, m.p, tables.get(len));
         }
       });
       return;
@@ -849,7 +941,21 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
   const unsigned threads = resolve_threads(opt.threads, dom.size());
   const int d = dom.dim();
   if (part.slices) {
-    if (mask != nullptr) {
+    int next = d - 2; // the next axis to run
+#if defined(ZDG_ENVELOPE_AVX512)
+    if constexpr (std::is_same_v<V, std::int32_t>) {
+      if (mask != nullptr && d >= 3 && item == 1 && !opt.periodic(d - 1) && sites == nullptr &&
+          dom.extent(d - 1) < (std::int64_t{1} << 28) &&
+          g_envelope_simd.load(std::memory_order_relaxed) && envelope_avx512_supported()) {
+        fused_mask_pass_avx512<K>(dom, opt.periodic(d - 2), m, mask, f, inf, threads);
+        if (part.after_pass) part.after_pass(d - 1);
+        next = d - 3;
+      }
+    }
+#endif
+    if (next < d - 2) {
+      // the mask pass and axis d - 2 ran fused
+    } else if (mask != nullptr) {
       mask_pass(dom, opt.periodic(d - 1), m, mask, item, f, inf, sites, threads);
     } else {
       if (sites != nullptr) {
@@ -858,8 +964,8 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
       }
       envelope_pass(dom, d - 1, opt.periodic(d - 1), false, m, f, inf, sites, threads);
     }
-    if (part.after_pass) part.after_pass(d - 1);
-    for (int a = d - 2; a >= 1; --a) {
+    if (part.after_pass) part.after_pass(next + 1);
+    for (int a = next; a >= 1; --a) {
       envelope_pass(dom, a, opt.periodic(a), mask != nullptr, m, f, inf, sites, threads);
       if (part.after_pass) part.after_pass(a);
     }

@@ -227,6 +227,31 @@ TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
   });
 }
 
+// Lines of 2^15 points or more (l1 and linf only on the int32 engine): the vectorized envelope
+// keeps sites and segment starts in separate tables instead of 16-bit halves of one.
+TEST(DistanceTransform, VectorizedEnvelopeOnLongLines) {
+  if (!detail::envelope_simd_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  struct Restore {
+    ~Restore() { detail::set_envelope_simd(true); }
+  } restore;
+  Domain dom({40000, 19});
+  std::mt19937 rng(11);
+  std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+  for (auto& x : v) x = rng() % 997 == 0 ? 0 : 1;
+  Image<std::uint8_t> shape(dom, v);
+  for (int p : {1, 0}) {
+    for (bool torus : {false, true}) {
+      TransformOptions opt;
+      opt.metric = Metric{p};
+      opt.torus = {torus, false};
+      detail::set_envelope_simd(false);
+      auto ref = distance_transform<std::uint32_t>(shape, opt);
+      detail::set_envelope_simd(true);
+      EXPECT_EQ(distance_transform<std::uint32_t>(shape, opt), ref) << p << " " << torus;
+    }
+  }
+}
+
 } // namespace
 // The registered property dt.l2.brute_force (zdg check): 2D images of side <= 12 and 3D ones of
 // side <= 6, against every pair of points.
