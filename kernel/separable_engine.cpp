@@ -289,12 +289,38 @@ separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i 
     return _mm512_mask_mov_epi32(_mm512_maskz_min_epi32(all, a_gt, mid), le,
                                  _mm512_maskz_max_epi32(all, a_le, mid));
   } else {
-    // Where the top and u are equally high (f_u = f_s), the separator is at the midpoint:
-    // two exact tests at x0 = the midpoint and x0 + 1 settle those lanes, a gallop from there
-    // brackets the others (Newton steps in float toward the root of f_u - f_s + |t - u|^p -
-    // |t - s|^p were measured: slower on the ball, their divisions cost more than they save),
-    // then bisection: the top wins at lo, u wins at hi (or hi is the end of the line).
+    // A guess x0, then two exact tests at x0 and x0 + 1 settle the lanes where it is right, a
+    // gallop from there brackets the others, then bisection: the top wins at lo, u wins at hi
+    // (or hi is the end of the line). The guess only chooses where to look. It is the
+    // midpoint (exact where f_u = f_s), and for p = 3 the root of
+    // h(t) = c + |t - u|^3 - |t - s|^3, c = f_u - f_s, D = u - s, in float where it lies
+    // outside [s, u] (the common case in a distance transform: neighbouring sites of
+    // different heights): for t >= u (c >= D^3), with a = t - u, h = c - D (3a^2 + 3aD + D^2),
+    // so a = (sqrt(12 c / D - 3 D^2) - 3D) / 6; for t <= s (c <= -D^3) the mirror image.
+    // (Newton steps from the midpoint were measured: slower, far roots need many.)
     __m512i x0 = _mm512_maskz_srai_epi32(all, _mm512_add_epi32(ts, vu), 1);
+    if (p == 3) {
+      const __m512i di = _mm512_sub_epi32(vu, ts), ci = _mm512_sub_epi32(fu, tf);
+      const __m512 dd = _mm512_maskz_cvtepi32_ps(all, di);
+      const __m512 cc = _mm512_maskz_cvtepi32_ps(all, ci);
+      const __m512 d3 = _mm512_mul_ps(_mm512_mul_ps(dd, dd), dd);
+      const __m512 ac = _mm512_abs_ps(cc);
+      const __m512 disc = _mm512_sub_ps(_mm512_div_ps(_mm512_mul_ps(_mm512_set1_ps(12.0f), ac), dd),
+                                        _mm512_mul_ps(_mm512_set1_ps(3.0f), _mm512_mul_ps(dd, dd)));
+      const __m512 a =
+          _mm512_mul_ps(_mm512_sub_ps(_mm512_maskz_sqrt_ps(
+                                          all, _mm512_maskz_max_ps(all, disc, _mm512_setzero_ps())),
+                                      _mm512_mul_ps(_mm512_set1_ps(3.0f), dd)),
+                        _mm512_set1_ps(1.0f / 6.0f));
+      const __m512i ai =
+          _mm512_maskz_cvt_roundps_epi32(all, a, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+      const __mmask16 right = _mm512_cmp_ps_mask(cc, d3, _CMP_GE_OQ);
+      const __mmask16 left =
+          _mm512_cmp_ps_mask(cc, _mm512_sub_ps(_mm512_setzero_ps(), d3), _CMP_LE_OQ);
+      x0 = _mm512_mask_mov_epi32(x0, right, _mm512_add_epi32(vu, ai));
+      // t = s - b, b = a(|c|): floor(s - b) = s - ceil(b) ~ s - floor(b) - 1
+      x0 = _mm512_mask_mov_epi32(x0, left, _mm512_sub_epi32(_mm512_sub_epi32(ts, ai), one));
+    }
     x0 = _mm512_maskz_min_epi32(all, _mm512_maskz_max_epi32(all, x0, tt),
                                 _mm512_sub_epi32(vhi, one));
     const __m512i x1 = _mm512_add_epi32(x0, one);
@@ -558,13 +584,21 @@ __attribute__((target("avx512f"))) void mask_line_avx512(const std::uint8_t* mk,
     const __m512i v = _mm512_maskz_cvtepu8_epi32(all, load16(mk + x0, n - x0));
     const __m512i pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
     const __mmask16 site = valid & _mm512_cmpeq_epi32_mask(v, zero);
-    __m512i c = _mm512_mask_mov_epi32(none_before, site, pos);
-    c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 15));
-    c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 14));
-    c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 12));
-    c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 8));
-    c = _mm512_maskz_max_epi32(all, c, carry);
-    carry = _mm512_maskz_permutexvar_epi32(all, _mm512_set1_epi32(15), c);
+    __m512i c;
+    if (site == 0) { // (runs of one kind are common: shortcuts for whole vectors)
+      c = carry;
+    } else if (site == all) {
+      c = pos;
+      carry = _mm512_set1_epi32(static_cast<std::int32_t>(x0 + 15));
+    } else {
+      c = _mm512_mask_mov_epi32(none_before, site, pos);
+      c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 15));
+      c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 14));
+      c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 12));
+      c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 8));
+      c = _mm512_maskz_max_epi32(all, c, carry);
+      carry = _mm512_maskz_permutexvar_epi32(all, _mm512_set1_epi32(15), c);
+    }
     _mm512_mask_storeu_epi32(out + x0, valid, _mm512_sub_epi32(pos, c));
   }
   if (_mm512_cmplt_epi32_mask(carry, zero) != 0) { // no site on the line
@@ -577,13 +611,21 @@ __attribute__((target("avx512f"))) void mask_line_avx512(const std::uint8_t* mk,
     const __m512i v = _mm512_maskz_cvtepu8_epi32(all, load16(mk + x0, n - x0));
     const __m512i pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
     const __mmask16 site = valid & _mm512_cmpeq_epi32_mask(v, zero);
-    __m512i c = _mm512_mask_mov_epi32(none_after, site, pos);
-    c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 1));
-    c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 2));
-    c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 4));
-    c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 8));
-    c = _mm512_maskz_min_epi32(all, c, carry);
-    carry = _mm512_maskz_permutexvar_epi32(all, zero, c);
+    __m512i c;
+    if (site == 0) {
+      c = carry;
+    } else if (site == all) {
+      c = pos;
+      carry = _mm512_set1_epi32(static_cast<std::int32_t>(x0));
+    } else {
+      c = _mm512_mask_mov_epi32(none_after, site, pos);
+      c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 1));
+      c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 2));
+      c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 4));
+      c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 8));
+      c = _mm512_maskz_min_epi32(all, c, carry);
+      carry = _mm512_maskz_permutexvar_epi32(all, zero, c);
+    }
     const __m512i fwd = _mm512_maskz_loadu_epi32(valid, out + x0);
     const __m512i d = _mm512_maskz_min_epi32(all, fwd, _mm512_sub_epi32(c, pos));
     __m512i g = d;
