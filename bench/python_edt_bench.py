@@ -90,7 +90,7 @@ def main():
     print(f"zdg.distance_transform {a.n}^3 l2, {a.threads} threads: {t_py:.3f} s (median of "
           f"{a.repeat})")
     if a.cxx:
-        name = f"Dt3d/{a.n}/2/{a.threads}"
+        name = f"Dt3dNew/{a.n}/2/{a.threads}"  # allocating its output, like the binding
         res = subprocess.run([a.cxx, f"--benchmark_filter=^{name}/", "--benchmark_format=json",
                               f"--benchmark_repetitions={a.repeat}"],
                              check=True, capture_output=True, text=True)

@@ -235,6 +235,8 @@ BENCHMARK(Dt3d)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(Dt3dNew)
+    ->Args({256, 2, 1})
+    ->Args({256, 2, 2})
     ->Args({512, 2, 1})
     ->Args({512, 2, 2})
     ->MinWarmUpTime(1.0)
