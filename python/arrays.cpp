@@ -22,6 +22,7 @@
 #include <zdg/kernel/connected_components.hpp>
 #include <zdg/kernel/critical_kernel_thinning.hpp>
 #include <zdg/kernel/distance_transform.hpp>
+#include <zdg/kernel/populate_pages.hpp>
 #include <zdg/kernel/homotopic_thinning.hpp>
 #include <zdg/kernel/image_surfaces.hpp>
 #include <zdg/kernel/image_surfels.hpp>
@@ -149,6 +150,9 @@ py::array engine_array(const MaskView& in, const Domain& dom, const TransformOpt
   V* f = out.mutable_data();
   {
     py::gil_scoped_release release;
+    // numpy's fresh buffer, mapped (huge pages where offered) by the workers before the passes
+    populate_pages(f, static_cast<std::size_t>(dom.size()) * sizeof(V),
+                   detail::resolve_threads(opt.threads, dom.size()));
     V inf = detail::envelope_infinity<V>(bounds);
     detail::separable_envelope<V>(dom, opt, in.data, f, inf, nullptr, in.item);
   }
