@@ -22,12 +22,12 @@
 #include <zdg/kernel/connected_components.hpp>
 #include <zdg/kernel/critical_kernel_thinning.hpp>
 #include <zdg/kernel/distance_transform.hpp>
-#include <zdg/kernel/populate_pages.hpp>
 #include <zdg/kernel/homotopic_thinning.hpp>
 #include <zdg/kernel/image_surfaces.hpp>
 #include <zdg/kernel/image_surfels.hpp>
 #include <zdg/kernel/marching_cubes.hpp>
 #include <zdg/kernel/output_files.hpp>
+#include <zdg/kernel/populate_pages.hpp>
 #include <zdg/kernel/power_map.hpp>
 #include <zdg/kernel/primal_surface_mesh.hpp>
 #include <zdg/kernel/reduced_medial_axis.hpp>
