@@ -51,7 +51,7 @@ def run_zdg(zdg, img, threads, repeats, metric, tmp):
     times = []
     for _ in range(repeats):
         r = subprocess.run([zdg, "transform", "dt", src, "-o", dst, "--metric", metric,
-                            "--threads", str(threads), "--json"],
+                            "--threads", str(threads), "--json", "--force"],
                            capture_output=True, text=True, check=True)
         times.append(json.loads(r.stdout)["seconds"])
     return statistics.median(times), np.load(dst)
