@@ -242,6 +242,14 @@ __attribute__((target("avx512f"), always_inline)) inline __m512i eval16(__m512i 
   }
 }
 
+// The lanes where u is strictly below the top at y (g_u(y) < g_s(y)).
+template <int K>
+__attribute__((target("avx512f"), always_inline)) inline __mmask16
+u_wins16(__m512i y, __m512i vu, __m512i fu, __m512i ts, __m512i tf, int p) {
+  return _mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(y, vu), p),
+                                 eval16<K>(tf, _mm512_sub_epi32(y, ts), p));
+}
+
 // The separator r (LineMetric::sep before its clamp to [t_top, end - 1]; `far`: lanes where
 // u never wins) of the tops (ts, tf) and u (fu) in the lanes of `full`; for l_p, the clamped
 // one, by bisection over [tt, hi).
@@ -324,13 +332,9 @@ separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i 
     x0 = _mm512_maskz_min_epi32(all, _mm512_maskz_max_epi32(all, x0, tt),
                                 _mm512_sub_epi32(vhi, one));
     const __m512i x1 = _mm512_add_epi32(x0, one);
-    const __mmask16 top0 =
-        full & ~_mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(x0, vu), p),
-                                        eval16<K>(tf, _mm512_sub_epi32(x0, ts), p));
+    const __mmask16 top0 = full & ~u_wins16<K>(x0, vu, fu, ts, tf, p);
     const __mmask16 in1 = _mm512_cmplt_epi32_mask(x1, vhi);
-    const __mmask16 top1 =
-        in1 & ~_mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(x1, vu), p),
-                                       eval16<K>(tf, _mm512_sub_epi32(x1, ts), p));
+    const __mmask16 top1 = in1 & ~u_wins16<K>(x1, vu, fu, ts, tf, p);
     __m512i lo = _mm512_mask_mov_epi32(tt, top0, x0);
     lo = _mm512_mask_mov_epi32(lo, top0 & top1, x1);
     __m512i hi = _mm512_mask_mov_epi32(vhi, full & ~top0, x0);
@@ -341,9 +345,7 @@ separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i 
     for (__m512i step = one; up != 0; step = _mm512_add_epi32(step, step)) {
       const __m512i y = _mm512_add_epi32(lo, step);
       const __mmask16 test = up & _mm512_cmplt_epi32_mask(y, vhi);
-      const __mmask16 tw =
-          test & ~_mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(y, vu), p),
-                                          eval16<K>(tf, _mm512_sub_epi32(y, ts), p));
+      const __mmask16 tw = test & ~u_wins16<K>(y, vu, fu, ts, tf, p);
       lo = _mm512_mask_mov_epi32(lo, tw, y);
       hi = _mm512_mask_mov_epi32(hi, test & ~tw, y);
       up = tw;
@@ -351,9 +353,7 @@ separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i 
     for (__m512i step = one; down != 0; step = _mm512_add_epi32(step, step)) {
       const __m512i y = _mm512_sub_epi32(hi, step);
       const __mmask16 test = down & _mm512_cmpgt_epi32_mask(y, tt);
-      const __mmask16 tw =
-          test & ~_mm512_cmplt_epi32_mask(eval16<K>(fu, _mm512_sub_epi32(y, vu), p),
-                                          eval16<K>(tf, _mm512_sub_epi32(y, ts), p));
+      const __mmask16 tw = test & ~u_wins16<K>(y, vu, fu, ts, tf, p);
       lo = _mm512_mask_mov_epi32(lo, tw, y);
       hi = _mm512_mask_mov_epi32(hi, test & ~tw, y);
       down = test & ~tw;
@@ -363,9 +363,7 @@ separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i 
       if (open == 0) break;
       const __m512i mid =
           _mm512_add_epi32(lo, _mm512_maskz_srai_epi32(all, _mm512_sub_epi32(hi, lo), 1));
-      const __m512i gu = eval16<K>(fu, _mm512_sub_epi32(mid, vu), p);
-      const __m512i gi = eval16<K>(tf, _mm512_sub_epi32(mid, ts), p);
-      const __mmask16 uw = _mm512_mask_cmplt_epi32_mask(open, gu, gi);
+      const __mmask16 uw = open & u_wins16<K>(mid, vu, fu, ts, tf, p);
       hi = _mm512_mask_mov_epi32(hi, uw, mid);
       lo = _mm512_mask_mov_epi32(lo, open & static_cast<__mmask16>(~uw), mid);
     }
