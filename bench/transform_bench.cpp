@@ -90,9 +90,14 @@ zdg::TransformOptions options(const benchmark::State& st) {
   return opt;
 }
 
+// Whether the transform's values fit uint32 (the narrowest output, as `zdg transform dt` picks).
+bool fits_uint32(const Image<std::uint8_t>& img, const zdg::TransformOptions& opt) {
+  return zdg::distance_transform_max_value(img.domain(), opt) <= zdg::BigInt(4294967295ULL);
+}
+
 // The distance transform in the narrowest output type (as `zdg transform dt` does).
 void run_dt(const Image<std::uint8_t>& img, const zdg::TransformOptions& opt) {
-  if (zdg::distance_transform_max_value(img.domain(), opt) <= zdg::BigInt(4294967295ULL)) {
+  if (fits_uint32(img, opt)) {
     benchmark::DoNotOptimize(zdg::distance_transform<std::uint32_t>(img, opt));
   } else {
     benchmark::DoNotOptimize(zdg::distance_transform<std::uint64_t>(img, opt));
@@ -168,7 +173,7 @@ void dt_into_against_bound(benchmark::State& st, const Image<std::uint8_t>& img)
 }
 
 void dt_against_bound(benchmark::State& st, const Image<std::uint8_t>& img) {
-  if (zdg::distance_transform_max_value(img.domain(), options(st)) <= zdg::BigInt(4294967295ULL)) {
+  if (fits_uint32(img, options(st))) {
     dt_into_against_bound<std::uint32_t>(st, img);
   } else {
     dt_into_against_bound<std::uint64_t>(st, img);

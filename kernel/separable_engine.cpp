@@ -567,21 +567,35 @@ __attribute__((always_inline)) inline __m128i load16(const std::uint8_t* p, std:
   return _mm_load_si128(reinterpret_cast<const __m128i*>(tail));
 }
 
+// The 16 points of a line of n one-byte items from x0: which are in the line, their
+// positions, and which are sites (item 0).
+struct MaskChunk {
+  __mmask16 valid, site;
+  __m512i pos;
+};
+__attribute__((target("avx512f"), always_inline)) inline MaskChunk
+mask_chunk(const std::uint8_t* mk, std::int64_t x0, std::int64_t n) {
+  const __mmask16 all = 0xFFFF;
+  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  MaskChunk c;
+  c.valid = n - x0 >= 16 ? all : static_cast<__mmask16>((1u << (n - x0)) - 1u);
+  c.pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
+  const __m512i v = _mm512_maskz_cvtepu8_epi32(all, load16(mk + x0, n - x0));
+  c.site = c.valid & _mm512_cmpeq_epi32_mask(v, _mm512_setzero_si512());
+  return c;
+}
+
 template <int K>
 __attribute__((target("avx512f"))) void mask_line_avx512(const std::uint8_t* mk, std::int32_t* out,
                                                          std::int64_t n, const std::int32_t* pw,
                                                          std::int32_t inf) {
   const __mmask16 all = 0xFFFF;
-  const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   const auto nn = static_cast<std::int32_t>(n);
   const __m512i none_before = _mm512_set1_epi32(-2 * nn), none_after = _mm512_set1_epi32(3 * nn);
   const __m512i zero = _mm512_setzero_si512();
   __m512i carry = none_before;
   for (std::int64_t x0 = 0; x0 < n; x0 += 16) {
-    const __mmask16 valid = n - x0 >= 16 ? all : static_cast<__mmask16>((1u << (n - x0)) - 1u);
-    const __m512i v = _mm512_maskz_cvtepu8_epi32(all, load16(mk + x0, n - x0));
-    const __m512i pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
-    const __mmask16 site = valid & _mm512_cmpeq_epi32_mask(v, zero);
+    const auto [valid, site, pos] = mask_chunk(mk, x0, n);
     __m512i c;
     if (site == 0) { // (runs of one kind are common: shortcuts for whole vectors)
       c = carry;
@@ -605,10 +619,7 @@ __attribute__((target("avx512f"))) void mask_line_avx512(const std::uint8_t* mk,
   }
   carry = none_after;
   for (std::int64_t x0 = (n - 1) / 16 * 16; x0 >= 0; x0 -= 16) {
-    const __mmask16 valid = n - x0 >= 16 ? all : static_cast<__mmask16>((1u << (n - x0)) - 1u);
-    const __m512i v = _mm512_maskz_cvtepu8_epi32(all, load16(mk + x0, n - x0));
-    const __m512i pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
-    const __mmask16 site = valid & _mm512_cmpeq_epi32_mask(v, zero);
+    const auto [valid, site, pos] = mask_chunk(mk, x0, n);
     __m512i c;
     if (site == 0) {
       c = carry;
@@ -643,6 +654,29 @@ bool envelope_avx512_supported() {
 #endif
 
 std::atomic<bool> g_envelope_simd{true};
+
+#if defined(ZDG_ENVELOPE_AVX512)
+// The vectorized passes run: allowed (set_envelope_simd) and offered by the CPU.
+bool use_simd() {
+  return g_envelope_simd.load(std::memory_order_relaxed) && envelope_avx512_supported();
+}
+
+// The vectorized mask pass takes the lines: one-byte items, no torus along them, no sites.
+bool simd_mask_lines(int item, bool periodic, const std::vector<std::int64_t>* sites,
+                     std::int64_t n) {
+  return item == 1 && !periodic && sites == nullptr && n < (std::int64_t{1} << 28) && use_simd();
+}
+
+// The mask pass of lines [begin, end) of n points (vectorized).
+template <int K>
+void mask_lines_avx512(const std::uint8_t* mask, std::int32_t* f, std::int64_t n,
+                       std::int64_t begin, std::int64_t end, const LineMetric<K, std::int32_t>& m,
+                       std::int32_t inf) {
+  for (std::int64_t line = begin; line < end; ++line) {
+    mask_line_avx512<K>(mask + line * n, f + line * n, n, m.pw, inf);
+  }
+}
+#endif
 
 #if defined(ZDG_ENVELOPE_AVX512)
 constexpr int kSimdBlocks = 4; // blocks of 16 lines advancing together
@@ -716,9 +750,7 @@ void fused_mask_pass_avx512(const Domain& dom, bool periodic_columns,
   parallel_chunks(slices, threads, [&](std::int64_t begin, std::int64_t end) {
     SimdTables tables;
     for (std::int64_t o = begin; o < end; ++o) {
-      for (std::int64_t line = o * rows; line < (o + 1) * rows; ++line) {
-        mask_line_avx512<K>(mask + line * n, f + line * n, n, m.pw, inf);
-      }
+      mask_lines_avx512<K>(mask, f, n, o * rows, (o + 1) * rows, m, inf);
       envelope_columns_avx512<K>(f + o * rows * n, n, n, rows, periodic_columns, true, inf, m.p,
                                  tables.get(len));
     }
@@ -751,8 +783,7 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
   std::int64_t* sp = sites != nullptr ? sites->data() : nullptr;
 #if defined(ZDG_ENVELOPE_AVX512)
   if constexpr (std::is_same_v<V, std::int32_t>) {
-    if (sp == nullptr && st > 1 && g_envelope_simd.load(std::memory_order_relaxed) &&
-        envelope_avx512_supported()) {
+    if (sp == nullptr && st > 1 && use_simd()) {
       // Units of up to kChunk columns of one block of lines, cut at 64-byte boundaries of
       // the first block (the units of the others too when the block size is a multiple of 16
       // values): only a unit's first 16-column block may be misaligned.
@@ -920,44 +951,15 @@ void mask_pass(const Domain& dom, bool periodic, const LineMetric<K, V>& m,
   };
 #if defined(ZDG_ENVELOPE_AVX512)
   if constexpr (std::is_same_v<V, std::int32_t>) {
-    if (item == 1 && !periodic && sp == nullptr && n < (std::int64_t{1} << 28) &&
-        g_envelope_simd.load(std::memory_order_relaxed) && envelope_avx512_supported()) {
+    if (simd_mask_lines(item, periodic, sites, n)) {
       parallel_chunks(lines, threads, [&](std::int64_t begin, std::int64_t end) {
-        for (std::int64_t line = begin; line < end; ++line) {
-          mask_line_avx512<K>(mask + line * n, fp + line * n, n, m.pw, inf);
-        }
+        mask_lines_avx512<K>(mask, fp, n, begin, end, m, inf);
       });
       return;
     }
   }
 #endif
-  if (item == 1 && !periodic && sp == nullptr) {
-    // The common case (one-byte mask, no torus, no sites) in two branch-free scans over the
-    // output line itself: forward, the distance to the last site at or before x (n + x when
-    // there is none: every true distance is below n); backward, the distance to the next site,
-    // the smaller of the two turned into its metric length. A line without a site is inf.
-    parallel_chunks(lines, threads, [&](std::int64_t begin, std::int64_t end) {
-      for (std::int64_t line = begin; line < end; ++line) {
-        const std::uint8_t* mk = mask + line * n;
-        V* out = fp + line * n;
-        std::int64_t d = n;
-        for (std::int64_t x = 0; x < n; ++x) {
-          d = mk[x] == 0 ? 0 : d + 1;
-          out[x] = small<V>(d);
-        }
-        if (d >= n) { // no site: d = 2n at the end
-          std::fill(out, out + n, inf);
-          continue;
-        }
-        d = n;
-        for (std::int64_t x = n; x-- > 0;) {
-          d = mk[x] == 0 ? 0 : d + 1;
-          const std::int64_t fwd = static_cast<std::int64_t>(out[x]);
-          out[x] = m.eval(zero, fwd < d ? fwd : d);
-        }
-      }
-    });
-  } else if (item == 1) {
+  if (item == 1) {
     lines_with([](const std::uint8_t* mk, std::int64_t x) { return mk[x] == 0; });
   } else {
     lines_with([item](const std::uint8_t* mk, std::int64_t x) {
@@ -981,31 +983,28 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
   const unsigned threads = resolve_threads(opt.threads, dom.size());
   const int d = dom.dim();
   if (part.slices) {
-    int next = d - 2; // the next axis to run
+    bool fused = false; // the mask pass and axis d - 2 in one
 #if defined(ZDG_ENVELOPE_AVX512)
     if constexpr (std::is_same_v<V, std::int32_t>) {
-      if (mask != nullptr && d >= 3 && item == 1 && !opt.periodic(d - 1) && sites == nullptr &&
-          dom.extent(d - 1) < (std::int64_t{1} << 28) &&
-          g_envelope_simd.load(std::memory_order_relaxed) && envelope_avx512_supported()) {
+      if (mask != nullptr && d >= 3 &&
+          simd_mask_lines(item, opt.periodic(d - 1), sites, dom.extent(d - 1))) {
         fused_mask_pass_avx512<K>(dom, opt.periodic(d - 2), m, mask, f, inf, threads);
-        if (part.after_pass) part.after_pass(d - 1);
-        next = d - 3;
+        fused = true;
       }
     }
 #endif
-    if (next < d - 2) {
-      // the mask pass and axis d - 2 ran fused
-    } else if (mask != nullptr) {
+    if (!fused && mask != nullptr) {
       mask_pass(dom, opt.periodic(d - 1), m, mask, item, f, inf, sites, threads);
-    } else {
+    } else if (!fused) {
       if (sites != nullptr) {
         sites->resize(static_cast<std::size_t>(dom.size()));
         for (std::int64_t i = 0; i < dom.size(); ++i) (*sites)[static_cast<std::size_t>(i)] = i;
       }
       envelope_pass(dom, d - 1, opt.periodic(d - 1), false, m, f, inf, sites, threads);
     }
-    if (part.after_pass) part.after_pass(next + 1);
-    for (int a = next; a >= 1; --a) {
+    if (part.after_pass) part.after_pass(d - 1);
+    if (fused && part.after_pass) part.after_pass(d - 2);
+    for (int a = fused ? d - 3 : d - 2; a >= 1; --a) {
       envelope_pass(dom, a, opt.periodic(a), mask != nullptr, m, f, inf, sites, threads);
       if (part.after_pass) part.after_pass(a);
     }

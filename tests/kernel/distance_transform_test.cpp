@@ -177,6 +177,12 @@ TEST(DistanceTransform, Errors) {
   EXPECT_TRUE(parse_metric("linf").is_inf());
 }
 
+// Allows the vectorized passes again when a test that compares them with the portable loop
+// ends (passes or fails).
+struct AllowSimdAtExit {
+  ~AllowSimdAtExit() { detail::set_envelope_simd(true); }
+};
+
 // The vectorized passes (kernel/separable_engine.cpp: the mask pass by prefix scans, the
 // envelopes 16 lines per AVX-512 vector) run the scalar sweep lane by lane: the same values to
 // the bit for every metric (l1, l2, l3, l4, linf), in mask mode (distance transforms, zero runs
@@ -185,9 +191,7 @@ TEST(DistanceTransform, Errors) {
 // engine.
 TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
   if (!detail::envelope_simd_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
-  struct Restore {
-    ~Restore() { detail::set_envelope_simd(true); }
-  } restore;
+  const AllowSimdAtExit allow;
   test::check_property([] {
     std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
     auto pick = [&](int lo, int hi) {
@@ -231,9 +235,7 @@ TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
 // keeps sites and segment starts in separate tables instead of 16-bit halves of one.
 TEST(DistanceTransform, VectorizedEnvelopeOnLongLines) {
   if (!detail::envelope_simd_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
-  struct Restore {
-    ~Restore() { detail::set_envelope_simd(true); }
-  } restore;
+  const AllowSimdAtExit allow;
   Domain dom({40000, 19});
   std::mt19937 rng(11);
   std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
