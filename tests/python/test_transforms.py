@@ -113,33 +113,43 @@ def test_zero_copy_input_and_output():
 
 
 def test_the_gil_is_released():
-    """While one thread is inside the transform, another runs Python code: the main thread,
-    once the worker is inside a long call (a 300^3 transform on one thread, a few tenths of a
-    second), sleeps 20 ms and runs a short loop, and is done before the call returns. With
-    the GIL held for the call, the main thread could not wake up before the call returns."""
-    image = np.ones((300, 300, 300), dtype=np.bool_)
-    image[0, 0, 0] = False
-    window = {}
-    entered = threading.Event()
+    """While one thread is inside the transform, another runs Python code. The main thread
+    samples the clock (sleeping 1 ms between samples) while the worker runs one-thread
+    transforms on growing cubes until a call lasts at least 60 ms (how large that cube is
+    depends on the machine). With the GIL held for the call, the main thread could run only
+    before the worker enters the C++ code (at most one switch interval, 5 ms) and after it
+    returns, so no sample could fall in the middle half of that call."""
+    calls = []
+    samples = []
+    done = threading.Event()
 
     def work():
-        entered.set()
-        window["start"] = time.perf_counter()
-        zdg.distance_transform(image, threads=1)
-        window["end"] = time.perf_counter()
+        try:
+            n = 160
+            while True:
+                image = np.ones((n, n, n), dtype=np.bool_)
+                image[0, 0, 0] = False
+                start = time.perf_counter()
+                zdg.distance_transform(image, threads=1)
+                calls.append((n, start, time.perf_counter()))
+                if calls[-1][2] - start >= 0.06 or n >= 640:
+                    break
+                n = min(640, int(n * 1.3))
+        finally:
+            done.set()
 
     t = threading.Thread(target=work)
     t.start()
-    entered.wait()
-    time.sleep(0.02)  # the worker enters the call
-    x = 0
-    for i in range(10000):
-        x += i
-    loop_done = time.perf_counter()
+    while not done.is_set():
+        samples.append(time.perf_counter())
+        time.sleep(0.001)
     t.join()
-    # Meaningful only when the call outlasted the sleep and the loop.
-    assert window["end"] - window["start"] > 0.1
-    assert loop_done < window["end"]
+    n, start, end = calls[-1]
+    # Meaningful only for a call long against the switch interval and the sampling step.
+    assert end - start >= 0.06, f"a {n}^3 transform took only {end - start:.3f} s"
+    quarter = (end - start) / 4
+    inside = [x for x in samples if start + quarter < x < end - quarter]
+    assert inside, f"no sample in the middle of a {end - start:.3f} s call ({n}^3)"
 
 
 def test_bad_input():
