@@ -371,25 +371,56 @@ separator16(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i 
   }
 }
 
+// Packed entries: the element below u, in row u of one table of 64-bit entries per lane (the
+// 16 lanes' entries of a row are two vectors of 8), its value in the low half and site + 1 and
+// segment start in the high and low 16 bits of the high half. A pop then gathers 16 entries
+// once: gathers cost by the entries they fetch (and are not cheaper for masked lanes), so one
+// 64-bit gather of the three fields costs half the two 32-bit gathers of two tables.
+__attribute__((target("avx512f"), always_inline)) inline void
+store_packed(std::int32_t* row, __m512i ts, __m512i tt, __m512i tf) {
+  const __mmask16 all = 0xFFFF;
+  const __m512i one = _mm512_set1_epi32(1);
+  const __m512i pk = _mm512_or_si512(_mm512_maskz_slli_epi32(all, _mm512_add_epi32(ts, one), 16),
+                                     _mm512_and_si512(tt, _mm512_set1_epi32(0xFFFF)));
+  const __m512i lo = _mm512_setr_epi32(0, 16, 1, 17, 2, 18, 3, 19, 4, 20, 5, 21, 6, 22, 7, 23);
+  const __m512i hi = _mm512_add_epi32(lo, _mm512_set1_epi32(8));
+  _mm512_store_si512(row, _mm512_maskz_permutex2var_epi32(all, tf, lo, pk));
+  _mm512_store_si512(row + 16, _mm512_maskz_permutex2var_epi32(all, tf, hi, pk));
+}
+
 // Pops the lanes of `go`: the element below the top (its site, segment start and value), from
-// row ts of the tables. Packed: site + 1 and start in the high and low 16 bits of one table.
+// row ts of the tables (Packed: of the one table of 64-bit entries, P).
 template <bool Packed>
 __attribute__((target("avx512f"), always_inline)) inline void
-below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* B,
-      const std::int32_t* BT, const std::int32_t* BF) {
+below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* P,
+      const std::int32_t* B, const std::int32_t* BT, const std::int32_t* BF) {
   const __mmask16 all = 0xFFFF;
   const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-  const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts, 4), lane);
   if constexpr (Packed) {
+    (void)B;
     (void)BT;
-    const __m512i pk = _mm512_mask_i32gather_epi32(_mm512_setzero_si512(), go, at, B, 4);
+    (void)BF;
+    // entry of lane l in row r: 64-bit word 16 r + l
+    const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts, 4), lane);
+    const auto* base = reinterpret_cast<const long long*>(P);
+    const __m512i e0 = _mm512_mask_i32gather_epi64(_mm512_setzero_si512(),
+                                                   static_cast<__mmask8>(go), half<0>(at), base, 8);
+    const __m512i e1 = _mm512_mask_i32gather_epi64(
+        _mm512_setzero_si512(), static_cast<__mmask8>(go >> 8), half<1>(at), base, 8);
+    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i f = _mm512_maskz_permutex2var_epi32(all, e0, even, e1);
+    const __m512i pk =
+        _mm512_maskz_permutex2var_epi32(all, e0, _mm512_add_epi32(even, _mm512_set1_epi32(1)), e1);
     ts = _mm512_mask_sub_epi32(ts, go, _mm512_maskz_srai_epi32(all, pk, 16), _mm512_set1_epi32(1));
     tt = _mm512_mask_and_epi32(tt, go, pk, _mm512_set1_epi32(0xFFFF));
+    tf = _mm512_mask_mov_epi32(tf, go, f);
   } else {
+    (void)P;
+    const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts, 4), lane);
     ts = _mm512_mask_i32gather_epi32(ts, go, at, B, 4);
     tt = _mm512_mask_i32gather_epi32(tt, go, at, BT, 4);
+    tf = _mm512_mask_i32gather_epi32(tf, go, at, BF, 4);
   }
-  tf = _mm512_mask_i32gather_epi32(tf, go, at, BF, 4);
 }
 
 // The envelopes of NB blocks of 16 adjacent lines in int32, one line per lane of an AVX-512
@@ -425,26 +456,32 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
   // (the maskz_ forms with every lane: GCC 12's plain forms warn -Wmaybe-uninitialized)
   const __mmask16 all = 0xFFFF;
   __mmask16 used[NB];
-  std::int32_t *F[NB], *B[NB], *BT[NB], *BF[NB];
+  std::int32_t *F[NB], *P[NB], *B[NB], *BT[NB], *BF[NB];
   for (int b = 0; b < NB; ++b) {
     const int w = std::clamp(bw - 16 * b, 0, 16);
     used[b] = static_cast<__mmask16>((1u << w) - 1u);
     F[b] = tables + 4 * b * len * 16;
-    B[b] = F[b] + len * 16;
-    BT[b] = B[b] + len * 16; // unused when Packed
+    P[b] = F[b] + len * 16; // Packed: 2 len 16 (64-bit entries)
+    B[b] = F[b] + len * 16; // not Packed: three tables
+    BT[b] = B[b] + len * 16;
     BF[b] = BT[b] + len * 16;
   }
-  // The rows, copied once (three times on a torus); unused lanes hold inf (no function).
+  // The rows: on a torus, copied three times into F (unused lanes hold inf: no function);
+  // otherwise read in place (the queries read row x before they write it).
   constexpr std::int64_t kAhead = 16;
-  for (std::int64_t x = 0; x < n; ++x) {
-    if (st > 16 * NB && x + kAhead < n) {
-      for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (x + kAhead) * st + 16 * b);
-    }
-    for (int b = 0; b < NB; ++b) {
-      const __m512i row = _mm512_mask_loadu_epi32(vinf, used[b], src + x * st + 16 * b);
-      _mm512_store_si512(F[b] + (qlo + x) * 16, row);
-      if (periodic) {
+  const bool ahead = st > 16 * NB; // rows in different cache lines: prefetch
+  const std::int32_t* R[NB];
+  const std::int64_t rs = periodic ? 16 : st;
+  for (int b = 0; b < NB; ++b) R[b] = periodic ? F[b] : src + 16 * b;
+  if (periodic) {
+    for (std::int64_t x = 0; x < n; ++x) {
+      if (ahead && x + kAhead < n) {
+        for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (x + kAhead) * st + 16 * b);
+      }
+      for (int b = 0; b < NB; ++b) {
+        const __m512i row = _mm512_mask_loadu_epi32(vinf, used[b], src + x * st + 16 * b);
         _mm512_store_si512(F[b] + x * 16, row);
+        _mm512_store_si512(F[b] + (n + x) * 16, row);
         _mm512_store_si512(F[b] + (2 * n + x) * 16, row);
       }
     }
@@ -459,20 +496,22 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
   const __m512i vhi = _mm512_set1_epi32(static_cast<std::int32_t>(qhi));
   const __m512i vhi1 = _mm512_set1_epi32(static_cast<std::int32_t>(qhi - 1));
   const __m512i vqlo = _mm512_set1_epi32(static_cast<std::int32_t>(qlo));
-  const __m512i low16 = _mm512_set1_epi32(0xFFFF);
   for (std::int64_t u = 0; u < len; ++u) {
     const __m512i vu = _mm512_set1_epi32(static_cast<std::int32_t>(u));
     __m512i fu[NB];
     __mmask16 active[NB], pop[NB];
     bool any = false;
+    if (!periodic && ahead && u + kAhead < n) {
+      for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (u + kAhead) * st + 16 * b);
+    }
     for (int b = 0; b < NB; ++b) {
-      fu[b] = _mm512_load_si512(F[b] + u * 16);
+      fu[b] = _mm512_mask_loadu_epi32(vinf, used[b], R[b] + u * rs);
       active[b] = _mm512_cmpneq_epi32_mask(fu[b], vinf);
       if (zero_runs && u > 0 && u + 1 < len) {
         const __mmask16 run =
             _mm512_cmpeq_epi32_mask(fu[b], zero) &
-            _mm512_cmpeq_epi32_mask(_mm512_load_si512(F[b] + (u - 1) * 16), zero) &
-            _mm512_cmpeq_epi32_mask(_mm512_load_si512(F[b] + (u + 1) * 16), zero);
+            _mm512_mask_cmpeq_epi32_mask(used[b], _mm512_loadu_si512(R[b] + (u - 1) * rs), zero) &
+            _mm512_mask_cmpeq_epi32_mask(used[b], _mm512_loadu_si512(R[b] + (u + 1) * rs), zero);
         active[b] &= static_cast<__mmask16>(~run);
       }
       any |= active[b] != 0;
@@ -490,7 +529,7 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       }
       if (!popped) break;
       for (int b = 0; b < NB; ++b) {
-        below<Packed>(ts[b], tt[b], tf[b], pop[b], B[b], BT[b], BF[b]);
+        below<Packed>(ts[b], tt[b], tf[b], pop[b], P[b], B[b], BT[b], BF[b]);
       }
     }
     for (int b = 0; b < NB; ++b) {
@@ -513,15 +552,12 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       // Row u of the tables: the element below u (rows of lanes that do not push u are never
       // read: u is not on their lists).
       if constexpr (Packed) {
-        _mm512_store_si512(
-            B[b] + u * 16,
-            _mm512_or_si512(_mm512_maskz_slli_epi32(all, _mm512_add_epi32(ts[b], one), 16),
-                            _mm512_and_si512(tt[b], low16)));
+        store_packed(P[b] + u * 32, ts[b], tt[b], tf[b]);
       } else {
         _mm512_store_si512(B[b] + u * 16, ts[b]);
         _mm512_store_si512(BT[b] + u * 16, tt[b]);
+        _mm512_store_si512(BF[b] + u * 16, tf[b]);
       }
-      _mm512_store_si512(BF[b] + u * 16, tf[b]);
       ts[b] = _mm512_mask_mov_epi32(ts[b], push, vu);
       tt[b] = _mm512_mask_mov_epi32(tt[b], push, w);
       tf[b] = _mm512_mask_mov_epi32(tf[b], push, fu[b]);
@@ -530,7 +566,7 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
   // Queries, from the end of the line: the segment of x is the first one from the top whose
   // start is <= x.
   for (std::int64_t x = qhi; x-- > qlo;) {
-    if (st > 16 * NB && x - kAhead >= qlo) {
+    if (ahead && x - kAhead >= qlo) {
       for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (x - kAhead - qlo) * st + 16 * b, 1);
     }
     const __m512i vx = _mm512_set1_epi32(static_cast<std::int32_t>(x));
@@ -543,7 +579,7 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       }
       if (!moved) break;
       for (int b = 0; b < NB; ++b) {
-        below<Packed>(ts[b], tt[b], tf[b], down[b], B[b], BT[b], BF[b]);
+        below<Packed>(ts[b], tt[b], tf[b], down[b], P[b], B[b], BT[b], BF[b]);
       }
     }
     for (int b = 0; b < NB; ++b) {
@@ -552,7 +588,8 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       g = _mm512_mask_mov_epi32(vinf, some, g);
       if (zero_runs) {
         g = _mm512_mask_mov_epi32(
-            g, _mm512_cmpeq_epi32_mask(_mm512_load_si512(F[b] + x * 16), zero), zero);
+            g, _mm512_mask_cmpeq_epi32_mask(used[b], _mm512_loadu_si512(R[b] + x * rs), zero),
+            zero);
       }
       _mm512_mask_storeu_epi32(src + (x - qlo) * st + 16 * b, used[b], g);
     }
