@@ -564,7 +564,10 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
     }
   }
   // Queries, from the end of the line: the segment of x is the first one from the top whose
-  // start is <= x.
+  // start is <= x. The bottom's segment starts at qlo, so a stack does not empty here: the
+  // lanes with a function (`some`) are known once.
+  __mmask16 some[NB];
+  for (int b = 0; b < NB; ++b) some[b] = _mm512_cmpge_epi32_mask(ts[b], zero);
   for (std::int64_t x = qhi; x-- > qlo;) {
     if (ahead && x - kAhead >= qlo) {
       for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (x - kAhead - qlo) * st + 16 * b, 1);
@@ -574,7 +577,7 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       __mmask16 down[NB];
       bool moved = false;
       for (int b = 0; b < NB; ++b) {
-        down[b] = _mm512_cmpgt_epi32_mask(tt[b], vx) & _mm512_cmpge_epi32_mask(ts[b], zero);
+        down[b] = _mm512_mask_cmpgt_epi32_mask(some[b], tt[b], vx);
         moved |= down[b] != 0;
       }
       if (!moved) break;
@@ -583,13 +586,13 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       }
     }
     for (int b = 0; b < NB; ++b) {
-      const __mmask16 some = _mm512_cmpge_epi32_mask(ts[b], zero);
       __m512i g = eval16<K>(tf[b], _mm512_sub_epi32(vx, ts[b]), p);
-      g = _mm512_mask_mov_epi32(vinf, some, g);
+      g = _mm512_mask_mov_epi32(vinf, some[b], g);
       if (zero_runs) {
-        g = _mm512_mask_mov_epi32(
-            g, _mm512_mask_cmpeq_epi32_mask(used[b], _mm512_loadu_si512(R[b] + x * rs), zero),
-            zero);
+        // 0 where f(x) = 0 (the points of a zero run were not pushed), else the envelope's
+        // value, which is at most f(x) (x was pushed, or beaten where it would have been):
+        // min(g, f(x)) is both, values being >= 0 here
+        g = _mm512_maskz_min_epi32(all, g, _mm512_mask_loadu_epi32(vinf, used[b], R[b] + x * rs));
       }
       _mm512_mask_storeu_epi32(src + (x - qlo) * st + 16 * b, used[b], g);
     }
