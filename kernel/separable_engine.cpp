@@ -599,84 +599,90 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
   }
 }
 
-// 16 bytes from p, or the `left` < 16 there and zeros (AVX-512F has no masked byte load).
-__attribute__((always_inline)) inline __m128i load16(const std::uint8_t* p, std::int64_t left) {
-  if (left >= 16) return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
-  alignas(16) std::uint8_t tail[16] = {};
-  std::memcpy(tail, p, static_cast<std::size_t>(left));
-  return _mm_load_si128(reinterpret_cast<const __m128i*>(tail));
+// The sites (items 0) of a line of n one-byte items as bits, 64 per word (bit x of word x / 64;
+// no bits past n).
+inline void site_bits(const std::uint8_t* mk, std::int64_t n, std::uint64_t* bits) {
+  const __m128i zero = _mm_setzero_si128();
+  const auto sites16 = [&](const std::uint8_t* p) {
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
+    return static_cast<std::uint64_t>(
+        static_cast<std::uint16_t>(_mm_movemask_epi8(_mm_cmpeq_epi8(v, zero))));
+  };
+  std::int64_t x = 0;
+  for (; x + 64 <= n; x += 64) {
+    bits[x / 64] = sites16(mk + x) | sites16(mk + x + 16) << 16 | sites16(mk + x + 32) << 32 |
+                   sites16(mk + x + 48) << 48;
+  }
+  if (x < n) {
+    std::uint64_t w = 0;
+    for (std::int64_t k = x; k < n; ++k) w |= static_cast<std::uint64_t>(mk[k] == 0) << (k - x);
+    bits[x / 64] = w;
+  }
 }
 
-// The 16 points of a line of n one-byte items from x0: which are in the line, their
-// positions, and which are sites (item 0).
-struct MaskChunk {
-  __mmask16 valid, site;
-  __m512i pos;
-};
-__attribute__((target("avx512f"), always_inline)) inline MaskChunk
-mask_chunk(const std::uint8_t* mk, std::int64_t x0, std::int64_t n) {
+// The first site at or after x (positions from the bits of site_bits), or `none`.
+inline std::int64_t next_site(const std::uint64_t* bits, std::int64_t n, std::int64_t x,
+                              std::int64_t none) {
+  if (x >= n) return none;
+  const std::int64_t words = (n + 63) / 64;
+  std::int64_t w = x / 64;
+  std::uint64_t m = bits[w] & (~std::uint64_t{0} << (x % 64));
+  while (m == 0) {
+    if (++w >= words) return none;
+    m = bits[w];
+  }
+  return w * 64 + __builtin_ctzll(m);
+}
+
+// The mask pass of one line (item 0: site), in one sweep of 16 points at a time: the sites as
+// bits first, then each vector's distance to the last site before it and to the first after
+// it (both from the bits), and inside a vector with sites a prefix max and a suffix min of the
+// site positions. bits: (n + 63) / 64 words of scratch.
+template <int K>
+__attribute__((target("avx512f"))) void
+mask_line_avx512(const std::uint8_t* mk, std::int32_t* out, std::int64_t n, const std::int32_t* pw,
+                 std::int32_t inf, std::uint64_t* bits) {
   const __mmask16 all = 0xFFFF;
   const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
-  MaskChunk c;
-  c.valid = n - x0 >= 16 ? all : static_cast<__mmask16>((1u << (n - x0)) - 1u);
-  c.pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
-  const __m512i v = _mm512_maskz_cvtepu8_epi32(all, load16(mk + x0, n - x0));
-  c.site = c.valid & _mm512_cmpeq_epi32_mask(v, _mm512_setzero_si512());
-  return c;
-}
-
-template <int K>
-__attribute__((target("avx512f"))) void mask_line_avx512(const std::uint8_t* mk, std::int32_t* out,
-                                                         std::int64_t n, const std::int32_t* pw,
-                                                         std::int32_t inf) {
-  const __mmask16 all = 0xFFFF;
   const auto nn = static_cast<std::int32_t>(n);
   const __m512i none_before = _mm512_set1_epi32(-2 * nn), none_after = _mm512_set1_epi32(3 * nn);
   const __m512i zero = _mm512_setzero_si512();
-  __m512i carry = none_before;
+  site_bits(mk, n, bits);
+  std::int64_t after = next_site(bits, n, 0, 3 * n); // the first site at or after x0 + 16
+  if (after == 3 * n) { // no site on the line
+    for (std::int64_t x = 0; x < n; ++x) out[x] = inf;
+    return;
+  }
+  std::int64_t before = -2 * n; // the last site before x0
   for (std::int64_t x0 = 0; x0 < n; x0 += 16) {
-    const auto [valid, site, pos] = mask_chunk(mk, x0, n);
-    __m512i c;
+    const __mmask16 valid = n - x0 >= 16 ? all : static_cast<__mmask16>((1u << (n - x0)) - 1u);
+    const __m512i pos = _mm512_add_epi32(lane, _mm512_set1_epi32(static_cast<std::int32_t>(x0)));
+    const auto site = static_cast<__mmask16>(bits[x0 / 64] >> (x0 % 64));
+    if (after < x0 + 16) after = next_site(bits, n, x0 + 16, 3 * n);
+    const __m512i vb = _mm512_set1_epi32(static_cast<std::int32_t>(before));
+    const __m512i va = _mm512_set1_epi32(static_cast<std::int32_t>(after));
+    __m512i d;
     if (site == 0) { // (runs of one kind are common: shortcuts for whole vectors)
-      c = carry;
+      d = _mm512_maskz_min_epi32(all, _mm512_sub_epi32(pos, vb), _mm512_sub_epi32(va, pos));
     } else if (site == all) {
-      c = pos;
-      carry = _mm512_set1_epi32(static_cast<std::int32_t>(x0 + 15));
+      d = zero;
+      before = x0 + 15;
     } else {
-      c = _mm512_mask_mov_epi32(none_before, site, pos);
+      __m512i c = _mm512_mask_mov_epi32(none_before, site, pos);
       c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 15));
       c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 14));
       c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 12));
       c = _mm512_maskz_max_epi32(all, c, _mm512_maskz_alignr_epi32(all, c, none_before, 8));
-      c = _mm512_maskz_max_epi32(all, c, carry);
-      carry = _mm512_maskz_permutexvar_epi32(all, _mm512_set1_epi32(15), c);
+      c = _mm512_maskz_max_epi32(all, c, vb);
+      __m512i e = _mm512_mask_mov_epi32(none_after, site, pos);
+      e = _mm512_maskz_min_epi32(all, e, _mm512_maskz_alignr_epi32(all, none_after, e, 1));
+      e = _mm512_maskz_min_epi32(all, e, _mm512_maskz_alignr_epi32(all, none_after, e, 2));
+      e = _mm512_maskz_min_epi32(all, e, _mm512_maskz_alignr_epi32(all, none_after, e, 4));
+      e = _mm512_maskz_min_epi32(all, e, _mm512_maskz_alignr_epi32(all, none_after, e, 8));
+      e = _mm512_maskz_min_epi32(all, e, va);
+      d = _mm512_maskz_min_epi32(all, _mm512_sub_epi32(pos, c), _mm512_sub_epi32(e, pos));
+      before = x0 + 31 - __builtin_clz(static_cast<unsigned>(site));
     }
-    _mm512_mask_storeu_epi32(out + x0, valid, _mm512_sub_epi32(pos, c));
-  }
-  if (_mm512_cmplt_epi32_mask(carry, zero) != 0) { // no site on the line
-    for (std::int64_t x = 0; x < n; ++x) out[x] = inf;
-    return;
-  }
-  carry = none_after;
-  for (std::int64_t x0 = (n - 1) / 16 * 16; x0 >= 0; x0 -= 16) {
-    const auto [valid, site, pos] = mask_chunk(mk, x0, n);
-    __m512i c;
-    if (site == 0) {
-      c = carry;
-    } else if (site == all) {
-      c = pos;
-      carry = _mm512_set1_epi32(static_cast<std::int32_t>(x0));
-    } else {
-      c = _mm512_mask_mov_epi32(none_after, site, pos);
-      c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 1));
-      c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 2));
-      c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 4));
-      c = _mm512_maskz_min_epi32(all, c, _mm512_maskz_alignr_epi32(all, none_after, c, 8));
-      c = _mm512_maskz_min_epi32(all, c, carry);
-      carry = _mm512_maskz_permutexvar_epi32(all, zero, c);
-    }
-    const __m512i fwd = _mm512_maskz_loadu_epi32(valid, out + x0);
-    const __m512i d = _mm512_maskz_min_epi32(all, fwd, _mm512_sub_epi32(c, pos));
     __m512i g = d;
     if constexpr (K == kL2) {
       g = _mm512_mullo_epi32(d, d);
@@ -712,8 +718,9 @@ template <int K>
 void mask_lines_avx512(const std::uint8_t* mask, std::int32_t* f, std::int64_t n,
                        std::int64_t begin, std::int64_t end, const LineMetric<K, std::int32_t>& m,
                        std::int32_t inf) {
+  std::vector<std::uint64_t> bits(static_cast<std::size_t>((n + 63) / 64));
   for (std::int64_t line = begin; line < end; ++line) {
-    mask_line_avx512<K>(mask + line * n, f + line * n, n, m.pw, inf);
+    mask_line_avx512<K>(mask + line * n, f + line * n, n, m.pw, inf, bits.data());
   }
 }
 #endif
