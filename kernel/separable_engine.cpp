@@ -407,7 +407,8 @@ below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* P
                                                    static_cast<__mmask8>(go), half<0>(at), base, 8);
     const __m512i e1 = _mm512_mask_i32gather_epi64(
         _mm512_setzero_si512(), static_cast<__mmask8>(go >> 8), half<1>(at), base, 8);
-    const __m512i even = _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
+    const __m512i even =
+        _mm512_setr_epi32(0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 20, 22, 24, 26, 28, 30);
     const __m512i f = _mm512_maskz_permutex2var_epi32(all, e0, even, e1);
     const __m512i pk =
         _mm512_maskz_permutex2var_epi32(all, e0, _mm512_add_epi32(even, _mm512_set1_epi32(1)), e1);
@@ -425,11 +426,12 @@ below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* P
 
 // The envelopes of NB blocks of 16 adjacent lines in int32, one line per lane of an AVX-512
 // vector (the lines' rows are contiguous in memory, so a row of a block is one vector load: no
-// transpose). It is the stack sweep of envelope_line<false, ZeroRuns> run in lockstep, with
-// the stack of each lane kept as a list linked through positions: pushing u stores, in row u
-// of three position-indexed tables, the element below it (its site, segment start and value;
-// plain vector stores: every lane writes row u), and popping u reads them back (three
-// gathers from the same index, so a pop costs one gather latency), so no scatter is needed.
+// transpose). It is the stack sweep of envelope_line<false, ...> run in lockstep (with the
+// peaks below left out instead of the runs of zeros), with the stack of each lane kept as a
+// list linked through positions: pushing u stores, in row u of position-indexed tables, the
+// element below it (its site, segment start and value; plain vector stores: every lane writes
+// row u), and popping u reads them back (gathers from the same index), so no scatter is
+// needed. Lines under 2^15 points hold the three in one 64-bit entry (see store_packed).
 // The queries walk each lane's list from the top, x from the end of the line down.
 // The NB blocks advance together (each pop round gathers for all of them): their dependency
 // chains of gathers overlap, and a row of the NB blocks is NB adjacent cache lines.
@@ -444,12 +446,22 @@ below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* P
 // Every other operation is the int32 arithmetic of the scalar loop (bounded by `need`,
 // separable_engine.hpp), so the values are the same to the bit.
 //
+//
+// Peaks (`peaks`, in the passes of a distance transform): a point u inside the line with
+// f(u) >= f(u - 1) and f(u) >= f(u + 1) is not pushed, and each query takes min(g(x), f(x)).
+// The values stay those of the envelope of every point: for x < u, g_{u-1}(x) < g_u(x)
+// (f(u - 1) <= f(u) and |x - u + 1| < |x - u|; every metric's value grows with both), and
+// if u - 1 is a peak too the same holds one step further left, down to a point that was
+// pushed, or to x itself, whose value f(x) the min adds back; the mirror image for x > u.
+// (It takes runs of zeros, and in a distance transform the many points no site is nearer
+// to through them than through a neighbour.)
+//
 // src: the first block's first value, rows st values apart, bw lanes used in all (the first
 // bw of the 16 NB columns); written in place. tables: 4 NB len 16 int32, 64-byte aligned.
 template <int K, int NB, bool Packed>
 __attribute__((target("avx512f"))) void
 envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n, bool periodic,
-                      bool zero_runs, std::int32_t inf, int p, std::int32_t* tables) {
+                      bool peaks, std::int32_t inf, int p, std::int32_t* tables) {
   const std::int64_t len = periodic ? 3 * n : n, qlo = periodic ? n : 0, qhi = qlo + n;
   const __m512i vinf = _mm512_set1_epi32(inf), zero = _mm512_setzero_si512();
   const __m512i one = _mm512_set1_epi32(1);
@@ -507,12 +519,13 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
     for (int b = 0; b < NB; ++b) {
       fu[b] = _mm512_mask_loadu_epi32(vinf, used[b], R[b] + u * rs);
       active[b] = _mm512_cmpneq_epi32_mask(fu[b], vinf);
-      if (zero_runs && u > 0 && u + 1 < len) {
-        const __mmask16 run =
-            _mm512_cmpeq_epi32_mask(fu[b], zero) &
-            _mm512_mask_cmpeq_epi32_mask(used[b], _mm512_loadu_si512(R[b] + (u - 1) * rs), zero) &
-            _mm512_mask_cmpeq_epi32_mask(used[b], _mm512_loadu_si512(R[b] + (u + 1) * rs), zero);
-        active[b] &= static_cast<__mmask16>(~run);
+      if (peaks && u > 0 && u + 1 < len) {
+        // (masked loads: the lanes past the block's columns may lie past the buffer)
+        const __m512i before = _mm512_maskz_loadu_epi32(used[b], R[b] + (u - 1) * rs);
+        const __m512i after = _mm512_maskz_loadu_epi32(used[b], R[b] + (u + 1) * rs);
+        const __mmask16 peak =
+            _mm512_cmpge_epi32_mask(fu[b], before) & _mm512_cmpge_epi32_mask(fu[b], after);
+        active[b] &= static_cast<__mmask16>(~peak);
       }
       any |= active[b] != 0;
     }
@@ -588,10 +601,8 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
     for (int b = 0; b < NB; ++b) {
       __m512i g = eval16<K>(tf[b], _mm512_sub_epi32(vx, ts[b]), p);
       g = _mm512_mask_mov_epi32(vinf, some[b], g);
-      if (zero_runs) {
-        // 0 where f(x) = 0 (the points of a zero run were not pushed), else the envelope's
-        // value, which is at most f(x) (x was pushed, or beaten where it would have been):
-        // min(g, f(x)) is both, values being >= 0 here
+      if (peaks) {
+        // x's own value, which the envelope lacks where x is a peak
         g = _mm512_maskz_min_epi32(all, g, _mm512_mask_loadu_epi32(vinf, used[b], R[b] + x * rs));
       }
       _mm512_mask_storeu_epi32(src + (x - qlo) * st + 16 * b, used[b], g);
@@ -639,9 +650,9 @@ inline std::int64_t next_site(const std::uint64_t* bits, std::int64_t n, std::in
 // it (both from the bits), and inside a vector with sites a prefix max and a suffix min of the
 // site positions. bits: (n + 63) / 64 words of scratch.
 template <int K>
-__attribute__((target("avx512f"))) void
-mask_line_avx512(const std::uint8_t* mk, std::int32_t* out, std::int64_t n, const std::int32_t* pw,
-                 std::int32_t inf, std::uint64_t* bits) {
+__attribute__((target("avx512f"))) void mask_line_avx512(const std::uint8_t* mk, std::int32_t* out,
+                                                         std::int64_t n, const std::int32_t* pw,
+                                                         std::int32_t inf, std::uint64_t* bits) {
   const __mmask16 all = 0xFFFF;
   const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
   const auto nn = static_cast<std::int32_t>(n);
@@ -649,7 +660,7 @@ mask_line_avx512(const std::uint8_t* mk, std::int32_t* out, std::int64_t n, cons
   const __m512i zero = _mm512_setzero_si512();
   site_bits(mk, n, bits);
   std::int64_t after = next_site(bits, n, 0, 3 * n); // the first site at or after x0 + 16
-  if (after == 3 * n) { // no site on the line
+  if (after == 3 * n) {                              // no site on the line
     for (std::int64_t x = 0; x < n; ++x) out[x] = inf;
     return;
   }
@@ -741,16 +752,16 @@ struct SimdTables {
 
 template <int K, int NB>
 void envelope_block_dispatch(std::int32_t* at, std::int64_t stride, std::int64_t w, std::int64_t n,
-                             bool periodic, bool zero_runs, std::int32_t inf, int p,
+                             bool periodic, bool peaks, std::int32_t inf, int p,
                              std::int32_t* tables) {
   // Sites and segment starts fit 16 bits on lines under 2^15 points (always for p >= 2 on
   // the int32 engine: L^p < 2^30), so a pop gathers two tables instead of three.
   if ((periodic ? 3 * n : n) < (std::int64_t{1} << 15)) {
-    envelope_block_avx512<K, NB, true>(at, stride, static_cast<int>(w), n, periodic, zero_runs, inf,
-                                       p, tables);
+    envelope_block_avx512<K, NB, true>(at, stride, static_cast<int>(w), n, periodic, peaks, inf, p,
+                                       tables);
   } else {
-    envelope_block_avx512<K, NB, false>(at, stride, static_cast<int>(w), n, periodic, zero_runs,
-                                        inf, p, tables);
+    envelope_block_avx512<K, NB, false>(at, stride, static_cast<int>(w), n, periodic, peaks, inf, p,
+                                        tables);
   }
 }
 
@@ -760,24 +771,23 @@ void envelope_block_dispatch(std::int32_t* at, std::int64_t stride, std::int64_t
 // when the stride is a multiple of 16.
 template <int K>
 void envelope_columns_avx512(std::int32_t* base, std::int64_t stride, std::int64_t cw,
-                             std::int64_t n, bool periodic, bool zero_runs, std::int32_t inf, int p,
+                             std::int64_t n, bool periodic, bool peaks, std::int32_t inf, int p,
                              std::int32_t* tables) {
   constexpr std::int64_t kWide = 16 * kSimdBlocks;
   const auto addr = reinterpret_cast<std::uintptr_t>(base) / sizeof(std::int32_t);
   const std::int64_t lead = std::min<std::int64_t>(cw, (16 - addr % 16) % 16);
   if (lead > 0) {
-    envelope_block_dispatch<K, 1>(base, stride, lead, n, periodic, zero_runs, inf, p, tables);
+    envelope_block_dispatch<K, 1>(base, stride, lead, n, periodic, peaks, inf, p, tables);
   }
   for (std::int64_t j0 = lead; j0 < cw; j0 += kWide) {
     const std::int64_t bw = std::min(kWide, cw - j0);
     std::int32_t* at = base + j0;
     if (bw <= 16) {
-      envelope_block_dispatch<K, 1>(at, stride, bw, n, periodic, zero_runs, inf, p, tables);
+      envelope_block_dispatch<K, 1>(at, stride, bw, n, periodic, peaks, inf, p, tables);
     } else if (bw <= 32) {
-      envelope_block_dispatch<K, 2>(at, stride, bw, n, periodic, zero_runs, inf, p, tables);
+      envelope_block_dispatch<K, 2>(at, stride, bw, n, periodic, peaks, inf, p, tables);
     } else {
-      envelope_block_dispatch<K, kSimdBlocks>(at, stride, bw, n, periodic, zero_runs, inf, p,
-                                              tables);
+      envelope_block_dispatch<K, kSimdBlocks>(at, stride, bw, n, periodic, peaks, inf, p, tables);
     }
   }
 }
