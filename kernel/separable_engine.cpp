@@ -396,12 +396,12 @@ below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* P
       const std::int32_t* B, const std::int32_t* BT, const std::int32_t* BF) {
   const __mmask16 all = 0xFFFF;
   const __m512i lane = _mm512_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  // lane l of row r: entry 16 r + l (64-bit words of P, or 32-bit words of B, BT, BF)
+  const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts, 4), lane);
   if constexpr (Packed) {
     (void)B;
     (void)BT;
     (void)BF;
-    // entry of lane l in row r: 64-bit word 16 r + l
-    const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts, 4), lane);
     const auto* base = reinterpret_cast<const long long*>(P);
     const __m512i e0 = _mm512_mask_i32gather_epi64(_mm512_setzero_si512(),
                                                    static_cast<__mmask8>(go), half<0>(at), base, 8);
@@ -417,7 +417,6 @@ below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* P
     tf = _mm512_mask_mov_epi32(tf, go, f);
   } else {
     (void)P;
-    const __m512i at = _mm512_add_epi32(_mm512_maskz_slli_epi32(all, ts, 4), lane);
     ts = _mm512_mask_i32gather_epi32(ts, go, at, B, 4);
     tt = _mm512_mask_i32gather_epi32(tt, go, at, BT, 4);
     tf = _mm512_mask_i32gather_epi32(tf, go, at, BF, 4);
@@ -446,22 +445,22 @@ below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* P
 // Every other operation is the int32 arithmetic of the scalar loop (bounded by `need`,
 // separable_engine.hpp), so the values are the same to the bit.
 //
-//
-// Peaks (`peaks`, in the passes of a distance transform): a point u inside the line with
-// f(u) >= f(u - 1) and f(u) >= f(u + 1) is not pushed, and each query takes min(g(x), f(x)).
+// Peaks: a point u inside the line with f(u) >= f(u - 1) and f(u) >= f(u + 1) is not pushed,
+// and each query takes min(g(x), f(x)).
 // The values stay those of the envelope of every point: for x < u, g_{u-1}(x) < g_u(x)
 // (f(u - 1) <= f(u) and |x - u + 1| < |x - u|; every metric's value grows with both), and
 // if u - 1 is a peak too the same holds one step further left, down to a point that was
 // pushed, or to x itself, whose value f(x) the min adds back; the mirror image for x > u.
-// (It takes runs of zeros, and in a distance transform the many points no site is nearer
-// to through them than through a neighbour.)
+// No sign or metric is assumed beyond that growth, so it holds for weighted values too. (It
+// takes runs of zeros, and in a distance transform the many points no site is nearer to
+// through them than through a neighbour.)
 //
 // src: the first block's first value, rows st values apart, bw lanes used in all (the first
 // bw of the 16 NB columns); written in place. tables: 4 NB len 16 int32, 64-byte aligned.
 template <int K, int NB, bool Packed>
 __attribute__((target("avx512f"))) void
 envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n, bool periodic,
-                      bool peaks, std::int32_t inf, int p, std::int32_t* tables) {
+                      std::int32_t inf, int p, std::int32_t* tables) {
   const std::int64_t len = periodic ? 3 * n : n, qlo = periodic ? n : 0, qhi = qlo + n;
   const __m512i vinf = _mm512_set1_epi32(inf), zero = _mm512_setzero_si512();
   const __m512i one = _mm512_set1_epi32(1);
@@ -519,7 +518,7 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
     for (int b = 0; b < NB; ++b) {
       fu[b] = _mm512_mask_loadu_epi32(vinf, used[b], R[b] + u * rs);
       active[b] = _mm512_cmpneq_epi32_mask(fu[b], vinf);
-      if (peaks && u > 0 && u + 1 < len) {
+      if (u > 0 && u + 1 < len) {
         // (masked loads: the lanes past the block's columns may lie past the buffer)
         const __m512i before = _mm512_maskz_loadu_epi32(used[b], R[b] + (u - 1) * rs);
         const __m512i after = _mm512_maskz_loadu_epi32(used[b], R[b] + (u + 1) * rs);
@@ -578,7 +577,9 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
   }
   // Queries, from the end of the line: the segment of x is the first one from the top whose
   // start is <= x. The bottom's segment starts at qlo, so a stack does not empty here: the
-  // lanes with a function (`some`) are known once.
+  // lanes with a function (`some`) are known once. Segments are not empty (a push starts one
+  // after the top's start, at most at qhi - 1), so from x + 1 to x a lane steps down at most
+  // once.
   __mmask16 some[NB];
   for (int b = 0; b < NB; ++b) some[b] = _mm512_cmpge_epi32_mask(ts[b], zero);
   for (std::int64_t x = qhi; x-- > qlo;) {
@@ -586,14 +587,13 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
       for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (x - kAhead - qlo) * st + 16 * b, 1);
     }
     const __m512i vx = _mm512_set1_epi32(static_cast<std::int32_t>(x));
-    for (;;) {
-      __mmask16 down[NB];
-      bool moved = false;
-      for (int b = 0; b < NB; ++b) {
-        down[b] = _mm512_mask_cmpgt_epi32_mask(some[b], tt[b], vx);
-        moved |= down[b] != 0;
-      }
-      if (!moved) break;
+    __mmask16 down[NB];
+    bool moved = false;
+    for (int b = 0; b < NB; ++b) {
+      down[b] = _mm512_mask_cmpgt_epi32_mask(some[b], tt[b], vx);
+      moved |= down[b] != 0;
+    }
+    if (moved) {
       for (int b = 0; b < NB; ++b) {
         below<Packed>(ts[b], tt[b], tf[b], down[b], P[b], B[b], BT[b], BF[b]);
       }
@@ -601,10 +601,8 @@ envelope_block_avx512(std::int32_t* src, std::int64_t st, int bw, std::int64_t n
     for (int b = 0; b < NB; ++b) {
       __m512i g = eval16<K>(tf[b], _mm512_sub_epi32(vx, ts[b]), p);
       g = _mm512_mask_mov_epi32(vinf, some[b], g);
-      if (peaks) {
-        // x's own value, which the envelope lacks where x is a peak
-        g = _mm512_maskz_min_epi32(all, g, _mm512_mask_loadu_epi32(vinf, used[b], R[b] + x * rs));
-      }
+      // x's own value, which the envelope lacks where x is a peak
+      g = _mm512_maskz_min_epi32(all, g, _mm512_mask_loadu_epi32(vinf, used[b], R[b] + x * rs));
       _mm512_mask_storeu_epi32(src + (x - qlo) * st + 16 * b, used[b], g);
     }
   }
@@ -752,15 +750,15 @@ struct SimdTables {
 
 template <int K, int NB>
 void envelope_block_dispatch(std::int32_t* at, std::int64_t stride, std::int64_t w, std::int64_t n,
-                             bool periodic, bool peaks, std::int32_t inf, int p,
-                             std::int32_t* tables) {
+                             bool periodic, std::int32_t inf, int p, std::int32_t* tables) {
   // Sites and segment starts fit 16 bits on lines under 2^15 points (always for p >= 2 on
-  // the int32 engine: L^p < 2^30), so a pop gathers two tables instead of three.
+  // the int32 engine: L^p < 2^30), so a pop gathers one table of 64-bit entries instead of
+  // three of 32-bit ones.
   if ((periodic ? 3 * n : n) < (std::int64_t{1} << 15)) {
-    envelope_block_avx512<K, NB, true>(at, stride, static_cast<int>(w), n, periodic, peaks, inf, p,
+    envelope_block_avx512<K, NB, true>(at, stride, static_cast<int>(w), n, periodic, inf, p,
                                        tables);
   } else {
-    envelope_block_avx512<K, NB, false>(at, stride, static_cast<int>(w), n, periodic, peaks, inf, p,
+    envelope_block_avx512<K, NB, false>(at, stride, static_cast<int>(w), n, periodic, inf, p,
                                         tables);
   }
 }
@@ -771,23 +769,23 @@ void envelope_block_dispatch(std::int32_t* at, std::int64_t stride, std::int64_t
 // when the stride is a multiple of 16.
 template <int K>
 void envelope_columns_avx512(std::int32_t* base, std::int64_t stride, std::int64_t cw,
-                             std::int64_t n, bool periodic, bool peaks, std::int32_t inf, int p,
+                             std::int64_t n, bool periodic, std::int32_t inf, int p,
                              std::int32_t* tables) {
   constexpr std::int64_t kWide = 16 * kSimdBlocks;
   const auto addr = reinterpret_cast<std::uintptr_t>(base) / sizeof(std::int32_t);
   const std::int64_t lead = std::min<std::int64_t>(cw, (16 - addr % 16) % 16);
   if (lead > 0) {
-    envelope_block_dispatch<K, 1>(base, stride, lead, n, periodic, peaks, inf, p, tables);
+    envelope_block_dispatch<K, 1>(base, stride, lead, n, periodic, inf, p, tables);
   }
   for (std::int64_t j0 = lead; j0 < cw; j0 += kWide) {
     const std::int64_t bw = std::min(kWide, cw - j0);
     std::int32_t* at = base + j0;
     if (bw <= 16) {
-      envelope_block_dispatch<K, 1>(at, stride, bw, n, periodic, peaks, inf, p, tables);
+      envelope_block_dispatch<K, 1>(at, stride, bw, n, periodic, inf, p, tables);
     } else if (bw <= 32) {
-      envelope_block_dispatch<K, 2>(at, stride, bw, n, periodic, peaks, inf, p, tables);
+      envelope_block_dispatch<K, 2>(at, stride, bw, n, periodic, inf, p, tables);
     } else {
-      envelope_block_dispatch<K, kSimdBlocks>(at, stride, bw, n, periodic, peaks, inf, p, tables);
+      envelope_block_dispatch<K, kSimdBlocks>(at, stride, bw, n, periodic, inf, p, tables);
     }
   }
 }
@@ -808,7 +806,7 @@ void fused_mask_pass_avx512(const Domain& dom, bool periodic_columns,
     SimdTables tables;
     for (std::int64_t o = begin; o < end; ++o) {
       mask_lines_avx512<K>(mask, f, n, o * rows, (o + 1) * rows, m, inf);
-      envelope_columns_avx512<K>(f + o * rows * n, n, n, rows, periodic_columns, true, inf, m.p,
+      envelope_columns_avx512<K>(f + o * rows * n, n, n, rows, periodic_columns, inf, m.p,
                                  tables.get(len));
     }
   });
@@ -853,8 +851,8 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
         for (std::int64_t unit = begin; unit < end; ++unit) {
           const std::int64_t o = unit / per_outer, c = origin + (unit % per_outer) * kChunk;
           const std::int64_t j0 = std::max(jb, c), j1 = std::min(je, c + kChunk);
-          envelope_columns_avx512<K>(fp + o * n * st + j0, st, j1 - j0, n, periodic, nonnegative,
-                                     inf, m.p, tables.get(len));
+          envelope_columns_avx512<K>(fp + o * n * st + j0, st, j1 - j0, n, periodic, inf, m.p,
+                                     tables.get(len));
         }
       });
       return;

@@ -21,8 +21,9 @@
 // Lines of non-contiguous axes are processed in blocks of adjacent lines (gathered into a
 // small buffer) so that every cache line read is used; passes split their lines over threads.
 // On CPUs with AVX-512F the int32 engine without sites runs vectorized (separable_engine.cpp):
-// the mask pass by prefix scans, 16 points per step, and the envelopes of the other axes 16
-// lines per vector (32 at once), every metric; the same integers, so the same values.
+// the mask pass in one sweep per line from the sites' bits, 16 points per step (fused with the
+// next axis slice by slice), and the envelopes of the other axes 16 lines per vector (64 at
+// once), local peaks left out; every metric, the same integers, so the same values.
 //
 // Width: every value and intermediate is bounded at entry by
 //     need = 2 (sum_k m_k^p + w_max + L^p) + 2 L

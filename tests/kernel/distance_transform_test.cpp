@@ -183,12 +183,11 @@ struct AllowSimdAtExit {
   ~AllowSimdAtExit() { detail::set_envelope_simd(true); }
 };
 
-// The vectorized passes (kernel/separable_engine.cpp: the mask pass by prefix scans, the
-// envelopes 16 lines per AVX-512 vector) run the scalar sweep lane by lane: the same values to
-// the bit for every metric (l1, l2, l3, l4, linf), in mask mode (distance transforms, zero runs
-// skipped) and in value mode (weighted sites, inf where none), on blocks of 16 columns and
-// narrower ones, and torus axes (lines of three copies). Oracle: the portable loop of the same
-// engine.
+// The vectorized passes (kernel/separable_engine.cpp: the mask pass from the sites' bits, the
+// envelopes 16 lines per AVX-512 vector, peaks left out) give the values of the scalar sweep
+// to the bit for every metric (l1, l2, l3, l4, linf), in mask mode (distance transforms) and in
+// value mode (weighted sites, inf where none), on blocks of 16 columns and narrower ones, and
+// torus axes (lines of three copies). Oracle: the portable loop of the same engine.
 TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
   if (!detail::envelope_simd_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
   const AllowSimdAtExit allow;
@@ -205,7 +204,6 @@ TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
     opt.metric = Metric{pick(0, 4)};
     for (int k = 0; k < d; ++k) opt.torus.push_back(pick(0, 2) == 0);
     opt.threads = static_cast<unsigned>(pick(1, 2));
-    const int density = pick(0, 100);
     std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
     if (pick(0, 2) == 0) {
       // Background boxes in the object: the first pass's values have long plateaus and ramps
@@ -227,6 +225,7 @@ TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
         }
       }
     } else {
+      const int density = pick(0, 100);
       for (auto& x : v) x = pick(0, 99) < density ? 1 : 0;
     }
     v[rng() % v.size()] = 0;
