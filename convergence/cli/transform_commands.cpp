@@ -624,6 +624,10 @@ void mpi_transform_as(TransformArgs& a, MpiSession& mpi, const std::string& cmd,
     stage("write", since(t_write));
   } catch (const std::exception& e) {
     std::cerr << "zdg: " << e.what() << " (rank " << mpi.rank() << " of " << mpi.size() << ")\n";
+    // MPI_Abort kills rank 0 wherever it is, before its OutputSet could remove the staged
+    // output: the failing rank removes it (the ranks share the output's folder).
+    std::error_code ec;
+    std::filesystem::remove(staged, ec);
     mpi.abort(2);
   }
   const double secs = since(t0);
@@ -633,8 +637,7 @@ void mpi_transform_as(TransformArgs& a, MpiSession& mpi, const std::string& cmd,
          {{"mpi", true}, {"ranks", mpi.size()}, {"stages", stages}});
 }
 
-void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
-  MpiSession mpi; // refuses a zdg built without MPI, or a process not started by mpirun
+void run_mpi_rank(TransformArgs& a, Context& ctx, const std::string& cmd, MpiSession& mpi) {
   const auto t0 = std::chrono::steady_clock::now();
   const int r = mpi.rank(), P = mpi.size();
   // Checks and reads without any exchange; a failure is agreed on below.
@@ -728,6 +731,11 @@ void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
   const auto first_failed = static_cast<int>(mpi.min_over_ranks(failure.empty() ? P : r));
   if (first_failed < P) {
     if (r == first_failed) std::cerr << "zdg: " << failure << std::endl;
+    // Rank 0's staged output goes before the last collective step: once a rank exits with a
+    // failure, mpiexec kills the others, and rank 0 could be killed before its OutputSet's
+    // destructor runs (1 run in 15 left the staging file behind).
+    // (check_paths may itself have failed: then nothing was staged.)
+    if (r == 0 && a.outputs && !a.staged.empty()) a.outputs->drop(a.output);
     mpi.max_over_ranks(0);
     ctx.exit_code = 2;
     return;
@@ -735,6 +743,24 @@ void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
   with_unsigned(dtype, [&]<class T>(std::type_identity<T>) {
     mpi_transform_as<T>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
   });
+}
+
+void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
+  MpiSession mpi; // refuses a zdg built without MPI, or a process not started by mpirun
+  try {
+    run_mpi_rank(a, ctx, cmd, mpi);
+  } catch (const std::exception& e) {
+    // A failure the ranks did not agree on (the agreed ones return): the other ranks may be
+    // waiting in a collective step, and this rank's MPI_Finalize would wait for them forever.
+    // The message, the staged output (rank 0's, in a folder the ranks share), then the job.
+    std::cerr << "zdg: " << e.what() << " (rank " << mpi.rank() << " of " << mpi.size() << ")"
+              << std::endl;
+    if (!a.staged.empty()) {
+      std::error_code ec;
+      std::filesystem::remove(a.staged, ec);
+    }
+    mpi.abort(2);
+  }
 }
 
 } // namespace
