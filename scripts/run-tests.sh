@@ -5,4 +5,4 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 ZDG_CMAKE_ARGS="-DZDG_WERROR=ON ${ZDG_CMAKE_ARGS:-}" scripts/build.sh
-ctest --test-dir build -LE slow -j"$(nproc 2>/dev/null || echo 2)" --output-on-failure
+ctest --test-dir build -LE slow -j"$(nproc 2>/dev/null || echo 2)" --output-on-failure --timeout 900

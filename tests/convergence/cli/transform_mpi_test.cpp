@@ -47,7 +47,9 @@ test::CliResult run_mpi(int ranks, const std::string& args, const Files& f) {
   if (std::getenv("ZDG_SANITIZE") != nullptr) {
     env += "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ";
   }
-  const std::string cmd = "env " + env + "'" + test::mpiexec_path() + "' -np " +
+  // A hang (ranks left waiting in a collective step) fails the test in two minutes (status
+  // 124) instead of stalling the suite.
+  const std::string cmd = "timeout -k 10 120 env " + env + "'" + test::mpiexec_path() + "' -np " +
                           std::to_string(ranks) + " --oversubscribe '" + test::cli_path() + "' " +
                           args + " <" + f("stdin") + " >" + f("stdout") + " 2>" + f("stderr");
   { std::ofstream(f.path("stdin")); }
