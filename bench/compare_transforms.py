@@ -6,7 +6,13 @@ n = 256 (and 512 with --large). zdg runs through `zdg transform dt IN.npy -o OUT
 and reports its own compute time ("seconds", file IO excluded); peers are timed in-process:
   scipy.ndimage.distance_transform_edt (1 thread, float64 Euclidean distance),
   OpenCV cv2.distanceTransform DIST_L2 DIST_MASK_PRECISE (2D only, cv2.setNumThreads),
-  ITK SignedMaurerDistanceMapImageFilter (if the python module `itk` imports).
+  ITK SignedMaurerDistanceMapImageFilter (if the python module `itk` imports),
+  seung-lab's edt, edt.edtsq (squared distances, float32, `parallel` = --threads; if the python
+  module `edt` imports: it is on PyPI, or built from its source without network, e.g.
+    cython3 -3 --cplus src/edt.pyx -o edt.cpp && g++ -shared -fPIC -std=c++17 -O3 -pthread \
+      -Isrc -I$(python3 -c 'import sysconfig; print(sysconfig.get_paths()["include"])') \
+      -I$(python3 -c 'import numpy; print(numpy.get_include())') edt.cpp -o edt$(python3-config --extension-suffix)
+  then PYTHONPATH=that folder; Debian's cython3 is enough).
 Each peer's result is checked against zdg's exact squared distances (round(d^2) == zdg).
 Prints median seconds and the ratio peer / zdg (> 1: zdg is faster).
 
@@ -90,7 +96,21 @@ def peers(threads):
         out["itk"] = itk_maurer
     except ImportError:
         pass
+    try:
+        import edt
+
+        def seung_lab_edt(img):
+            # Squared distances to the nearest 0 (labels other than 0 are one object here: the
+            # masks are 0/1); no border of zeros around the image, as for the others.
+            return edt.edtsq(img, black_border=False, parallel=threads)
+        out["edt"] = seung_lab_edt
+    except ImportError:
+        pass
     return out
+
+
+# Peers whose values are squared distances already.
+SQUARED = {"edt"}
 
 
 def main():
@@ -108,7 +128,7 @@ def main():
         inputs.append(("3D 512^3 ball r=0.45n", lambda: ball(512)))
     available = peers(args.threads)
     print("peers available:", ", ".join(available) or "none",
-          "| missing:", ", ".join(sorted({"scipy", "opencv", "itk"} - set(available))) or "none")
+          "| missing:", ", ".join(sorted({"scipy", "opencv", "itk", "edt"} - set(available))) or "none")
     print(f"zdg threads={args.threads}, median of {args.repeats}; ratio = peer time / zdg time")
     with tempfile.TemporaryDirectory() as tmp:
         for name, make in inputs:
@@ -126,7 +146,8 @@ def main():
                 if d is None:
                     continue
                 d64 = np.asarray(d, dtype=np.float64)
-                agree = np.mean(np.rint(d64 * d64).astype(np.int64) == exact)
+                d2 = d64 if peer in SQUARED else d64 * d64
+                agree = np.mean(np.rint(d2).astype(np.int64) == exact)
                 row.append(f"{peer} {t:.3f}s ratio {t / t_l2:.2f} (exact agreement {100 * agree:.2f}%)")
             print(" | ".join(row))
             sys.stdout.flush()
