@@ -406,8 +406,12 @@ void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
   const double secs = since(t0);
   // The largest value and the write, in pieces of 4 MiB by all the workers (positional writes
   // of disjoint ranges): each piece is written while its values are still in cache from the
-  // max, and the copies into the page cache run in parallel (one sequential write of 512 MB took
-  // 73 ms on the development VM).
+  // max. The copies into the page cache themselves take the file's lock in turn (ext4 and xfs
+  // serialize buffered writes to one file: perf shows the second writer spinning on it), so
+  // the workers overlap one's max with another's copy, not two copies; one worker writing all
+  // pieces measured the same wall time. The copy's cost is the page cache's: 56 ms for 512 MB
+  // on the development VM when the guest's free pages are backed by the host, over 0.6 s when
+  // they are not (the VM's slow phases).
   T mx = 0;
   std::mutex mx_lock;
   constexpr std::int64_t kPiece = (std::int64_t{4} << 20) / static_cast<std::int64_t>(sizeof(T));
