@@ -173,6 +173,10 @@ TEST(MpiTransform, ErrorsAreOneLineAndNoOutput) {
     EXPECT_EQ(zdg_lines(r.err), 1) << c.args << ": " << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
     EXPECT_FALSE(std::filesystem::exists(f.path("out.npy"))) << c.args;
+    // Nor a staged output: rank 0 stages it before the ranks agree on a failure, and must
+    // remove it before any rank exits (mpiexec then kills the others).
+    for (const auto& e : std::filesystem::directory_iterator(f.dir))
+      EXPECT_NE(e.path().filename().string()[0], '.') << c.args << ": " << e.path();
   }
   // An existing output is refused without --force and left as it was.
   write_npy(f.path("out.npy"), make_npy<std::uint8_t>({1}, std::vector<std::uint8_t>{7}));
