@@ -18,6 +18,7 @@
 #include <zdg/kernel/distance_transform.hpp>
 #include <zdg/kernel/reduced_medial_axis.hpp>
 #include <zdg/kernel/reverse_distance_transform.hpp>
+#include <zdg/kernel/separable_engine.hpp>
 #include <zdg/kernel/voronoi_map.hpp>
 
 #include <benchmark/benchmark.h>
@@ -184,6 +185,20 @@ void Dt3d(benchmark::State& st) {
   dt_against_bound(st, ball(st.range(0)));
 }
 
+// The portable passes (set_envelope_simd(false)): what a CPU without AVX-512F runs, and the
+// int64 and wider engines everywhere.
+void Dt3dPortable(benchmark::State& st) {
+  const bool was = zdg::detail::set_envelope_simd(false);
+  dt_against_bound(st, ball(st.range(0)));
+  zdg::detail::set_envelope_simd(was);
+}
+
+void Random3dPortable(benchmark::State& st) {
+  const bool was = zdg::detail::set_envelope_simd(false);
+  dt_against_bound(st, random_half(st.range(0)));
+  zdg::detail::set_envelope_simd(was);
+}
+
 void Dt3dNew(benchmark::State& st) {
   auto img = ball(st.range(0));
   auto opt = options(st);
@@ -252,6 +267,12 @@ BENCHMARK(Random3d)
     ->MinWarmUpTime(1.0)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+BENCHMARK(Dt3dPortable)
+    ->Args({256, 2, 2})
+    ->Args({256, 3, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(Random3dPortable)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Voronoi3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Rdt3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Rma3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
