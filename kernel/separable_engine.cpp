@@ -138,9 +138,16 @@ struct LineMetric {
 // position arg[t - qlo] (-1 when there is no function at all). g may alias f (the query
 // reads only the stack). s, t, fs: scratch of size len.
 //
-// ZeroRuns (values >= 0, as in a distance transform): a 0 between two 0s is a function
-// that only wins at its own position (its neighbours are strictly closer everywhere else),
-// so it is not pushed and every point of value 0 keeps 0 and itself as the argument.
+// Values only (!WithArg): local peaks are left out, as in the vectorized envelopes. A point u
+// with f[u] >= f[u-1] and f[u] >= f[u+1] never does better than u-1 left of u (f[u-1] <= f[u]
+// and |x-u+1| < |x-u|: g_{u-1}(x) <= g_u(x) for every metric) nor than u+1 right of it; when
+// u-1 is a peak too, the same one step further, down to a pushed point or to x itself, whose
+// own value the query's min(g(x), f(x)) restores. So the envelope's values are unchanged, for
+// any sign of f (a neighbour without a function, inf, is never <= f[u]).
+// With the argument (WithArg), ties must keep the sites they had, so only ZeroRuns (values >=
+// 0, as in a distance transform): a 0 between two 0s is a function that only wins at its own
+// position (its neighbours are strictly closer everywhere else), so it is not pushed and every
+// point of value 0 keeps 0 and itself as the argument.
 template <bool WithArg, bool ZeroRuns, int K, class V>
 void envelope_line(const LineMetric<K, V>& m, V* f, std::int64_t len, std::int64_t qlo,
                    std::int64_t qhi, const V& inf, V* g, std::int64_t* arg, std::int64_t* s,
@@ -148,9 +155,11 @@ void envelope_line(const LineMetric<K, V>& m, V* f, std::int64_t len, std::int64
   std::int64_t q = -1;
   const V zero{};
   for (std::int64_t u = 0; u < len; ++u) {
-    const V fu = f[u];
+    const V& fu = f[u];
     if (fu == inf) continue;
-    if constexpr (ZeroRuns) {
+    if constexpr (!WithArg) {
+      if (u > 0 && u + 1 < len && !(fu < f[u - 1]) && !(fu < f[u + 1])) continue;
+    } else if constexpr (ZeroRuns) {
       if (fu == zero && u > 0 && u + 1 < len && f[u - 1] == zero && f[u + 1] == zero) continue;
     }
     while (q >= 0 && m.eval(fs[q], t[q] - s[q]) > m.eval(fu, t[q] - u)) --q;
@@ -181,8 +190,13 @@ void envelope_line(const LineMetric<K, V>& m, V* f, std::int64_t len, std::int64
     const std::int64_t sk = s[k];
     const V fk = fs[k];
     for (std::int64_t x = t[k]; x < t[k + 1]; ++x) {
-      if constexpr (ZeroRuns) {
-        // g[x - qlo] may alias f[x - qlo] only (written after f[x] is read at index >= it)
+      // g[x - qlo] may alias f[x - qlo] only (written after f[x] is read at index >= it)
+      if constexpr (!WithArg) {
+        V v = m.eval(fk, x - sk);
+        if (f[x] < v) v = f[x];
+        g[x - qlo] = std::move(v);
+        continue;
+      } else if constexpr (ZeroRuns) {
         if (f[x] == zero) {
           g[x - qlo] = zero;
           if constexpr (WithArg) arg[x - qlo] = x;
@@ -425,8 +439,8 @@ below(__m512i& ts, __m512i& tt, __m512i& tf, __mmask16 go, const std::int32_t* P
 
 // The envelopes of NB blocks of 16 adjacent lines in int32, one line per lane of an AVX-512
 // vector (the lines' rows are contiguous in memory, so a row of a block is one vector load: no
-// transpose). It is the stack sweep of envelope_line<false, ...> run in lockstep (with the
-// peaks below left out instead of the runs of zeros), with the stack of each lane kept as a
+// transpose). It is the stack sweep of envelope_line<false, ...> run in lockstep (the
+// peaks below left out as there), with the stack of each lane kept as a
 // list linked through positions: pushing u stores, in row u of position-indexed tables, the
 // element below it (its site, segment start and value; plain vector stores: every lane writes
 // row u), and popping u reads them back (gathers from the same index), so no scatter is
@@ -905,10 +919,8 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
             envelope_line<true, false>(m, line, len, qlo, qlo + n, inf, line, sc.arg.data() + b * n,
                                        sc.s.data(), sc.t.data(), sc.fs.data());
           }
-        } else if (nonnegative) {
-          envelope_line<false, true>(m, line, len, qlo, qlo + n, inf, line, nullptr, sc.s.data(),
-                                     sc.t.data(), sc.fs.data());
         } else {
+          // (values only: peaks left out whatever the sign, so one form)
           envelope_line<false, false>(m, line, len, qlo, qlo + n, inf, line, nullptr, sc.s.data(),
                                       sc.t.data(), sc.fs.data());
         }

@@ -23,7 +23,11 @@
 // On CPUs with AVX-512F the int32 engine without sites runs vectorized (separable_engine.cpp):
 // the mask pass in one sweep per line from the sites' bits, 16 points per step (fused with the
 // next axis slice by slice), and the envelopes of the other axes 16 lines per vector (64 at
-// once), local peaks left out; every metric, the same integers, so the same values.
+// once), local peaks left out; every metric, the same integers, so the same values. The
+// portable envelopes leave local peaks out too when only values are asked (distance
+// transforms, reverse DT: the int64 and wider engines, and every engine without AVX-512F);
+// with sites (Voronoi and power maps) they keep every point but the runs of zeros, so that
+// ties keep their sites.
 //
 // Width: every value and intermediate is bounded at entry by
 //     need = 2 (sum_k m_k^p + w_max + L^p) + 2 L
