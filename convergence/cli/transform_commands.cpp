@@ -559,6 +559,19 @@ void run_rma(TransformArgs& a) {
          {{"balls", balls.size()}});
 }
 
+// A failure on some ranks only: its line, the staged output removed (MPI_Abort kills rank 0
+// wherever it is, before its OutputSet could remove it; the ranks share the output's folder;
+// empty: nothing staged on this rank), then the whole job ends with status 2.
+[[noreturn]] void abort_job(MpiSession& mpi, const std::string& what, const std::string& staged) {
+  std::cerr << "zdg: " << what << " (rank " << mpi.rank() << " of " << mpi.size() << ")"
+            << std::endl;
+  if (!staged.empty()) {
+    std::error_code ec;
+    std::filesystem::remove(staged, ec);
+  }
+  mpi.abort(2);
+}
+
 // `zdg transform dt|voronoi --mpi` (issue #15, kernel/distributed_transform.hpp): one rank of
 // an MPI job. Rank r reads the slices it owns of the input .npy (MPI-IO), the ranks transform
 // their slabs, exchange them, transform whole columns, and write their column blocks into the
@@ -627,12 +640,7 @@ void mpi_transform_as(TransformArgs& a, MpiSession& mpi, const std::string& cmd,
     }
     stage("write", since(t_write));
   } catch (const std::exception& e) {
-    std::cerr << "zdg: " << e.what() << " (rank " << mpi.rank() << " of " << mpi.size() << ")\n";
-    // MPI_Abort kills rank 0 wherever it is, before its OutputSet could remove the staged
-    // output: the failing rank removes it (the ranks share the output's folder).
-    std::error_code ec;
-    std::filesystem::remove(staged, ec);
-    mpi.abort(2);
+    abort_job(mpi, e.what(), staged);
   }
   const double secs = since(t0);
   if (mpi.rank() != 0) return;
@@ -756,14 +764,7 @@ void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
   } catch (const std::exception& e) {
     // A failure the ranks did not agree on (the agreed ones return): the other ranks may be
     // waiting in a collective step, and this rank's MPI_Finalize would wait for them forever.
-    // The message, the staged output (rank 0's, in a folder the ranks share), then the job.
-    std::cerr << "zdg: " << e.what() << " (rank " << mpi.rank() << " of " << mpi.size() << ")"
-              << std::endl;
-    if (!a.staged.empty()) {
-      std::error_code ec;
-      std::filesystem::remove(a.staged, ec);
-    }
-    mpi.abort(2);
+    abort_job(mpi, e.what(), a.staged);
   }
 }
 
