@@ -4,12 +4,14 @@
 // steps, the heat method's (M - t L) u = delta and L phi = div X) are of this kind.
 //
 // Backends: SuiteSparse CHOLMOD (supernodal Cholesky, Chen, Davis, Hager, Rajamanickam, ACM
-// TOMS 2008) through Eigen's CholmodSupport when zdg was built with it (CMake option
-// ZDG_CHOLMOD, default AUTO: used when Debian's libsuitesparse-dev is found), else Eigen's
-// SimplicialLDLT (AMD ordering). `automatic` takes CHOLMOD when present; backend() says which
-// served. Cost: O(nnz(L)) memory and about sum over columns of nnz(L_j)^2 flops to factor; for
-// the 2-manifold surface meshes here (nested-dissection-like orderings) nnz(L) is about
-// n log n and the factorization about n^{3/2}; a solve is O(nnz(L)).
+// TOMS 2008) when zdg was built with it (CMake option ZDG_CHOLMOD, default AUTO: used when
+// Debian's libsuitesparse-dev is found), else Eigen's SimplicialLDLT (AMD ordering). CHOLMOD is
+// not linked: its shared library (and OpenBLAS, LAPACK, METIS behind it) is loaded at the first
+// solver that asks for it, so that processes that solve nothing do not pay for loading them.
+// `automatic` takes CHOLMOD when it loads; backend() says which served. Cost: O(nnz(L))
+// memory and about sum over columns of nnz(L_j)^2 flops to factor; for the 2-manifold surface
+// meshes here (nested-dissection-like orderings) nnz(L) is about n log n and the factorization
+// about n^{3/2}; a solve is O(nnz(L)).
 //
 // Input requirements: A square, symmetric (only its lower triangle is read), positive definite;
 // otherwise the factorization fails and the constructor throws zdg::Error naming the backend.
@@ -53,8 +55,11 @@ public:
   /// The backend that factored A (never `automatic`).
   SpdBackend backend() const;
 
-  /// Whether zdg was built with CHOLMOD.
+  /// Whether CHOLMOD serves: zdg was built with it and its library loads (at the first call).
   static bool cholmod_available();
+  /// The CHOLMOD library zdg loads at its first use ("libcholmod.so.3"; empty when built
+  /// without CHOLMOD).
+  static std::string cholmod_library();
 
 private:
   struct Impl;

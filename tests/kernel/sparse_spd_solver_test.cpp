@@ -7,8 +7,20 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
 
 namespace {
+
+// Whether a shared library whose path contains `name` is mapped into this process.
+bool mapped(const std::string& name) {
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line))
+    if (line.find(name) != std::string::npos) return true;
+  return false;
+}
 
 // A = B^T B + I for a random sparse B is SPD: the solver's x satisfies A x = b to rounding
 // (the residual is the oracle), with every backend zdg was built with, and both backends
@@ -63,6 +75,33 @@ TEST(SparseSpdSolver, AutomaticTakesCholmodWhenBuiltWithIt) {
   EXPECT_DOUBLE_EQ(x[1], 3.0);
   EXPECT_EQ(zdg::spd_backend_name(s.backend()),
             zdg::SparseSpdSolver::cholmod_available() ? "cholmod" : "eigen-simplicial-ldlt");
+}
+
+// A zdg built with CHOLMOD finds its library at run time (it is loaded, not linked: a missing
+// or renamed library would silently fall back to Eigen's solver without this check).
+TEST(SparseSpdSolver, BuiltWithCholmodLoadsIt) {
+  if (zdg::SparseSpdSolver::cholmod_library().empty()) GTEST_SKIP() << "built without CHOLMOD";
+  EXPECT_TRUE(zdg::SparseSpdSolver::cholmod_available())
+      << zdg::SparseSpdSolver::cholmod_library() << " did not load";
+}
+
+// CHOLMOD (and OpenBLAS behind it) is loaded by the first solver that asks for it, not when a
+// process starts: in a fresh process (the death test's child runs this binary again with this
+// test alone) it is not mapped before the solver and is after.
+TEST(SparseSpdSolver, CholmodIsLoadedAtItsFirstUseOnly) {
+  if (zdg::SparseSpdSolver::cholmod_library().empty()) GTEST_SKIP() << "built without CHOLMOD";
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        const bool before = mapped("libcholmod");
+        const zdg::SparseSpdSolver s(zdg::SparseMatrix::diagonal(std::vector<double>{2, 3}),
+                                     zdg::SpdBackend::cholmod);
+        const bool after = mapped("libcholmod");
+        std::exit(!before && after && std::abs(s.solve(std::vector<double>{4, 9})[1] - 3.0) < 1e-12
+                      ? 0
+                      : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 TEST(SparseSpdSolver, RefusesIndefiniteNonSquareAndWrongSizes) {
