@@ -14,6 +14,11 @@
 // memory costs the VM's hypervisor more than every later one, and a 512^3 case runs one
 // iteration.
 //
+// OutputWrite: what `zdg transform dt` adds to the transform to write its .npy output, n^3
+// uint32 values from memory into a new file reserved on the disk (kernel/mapped_file.hpp
+// ReservedFile, in the folder of TMPDIR), in pieces of 4 MiB by the workers as the command
+// does: the floor of the command's time over its transform's (issue #15, part 1).
+//
 //   build/bin/transform_bench --benchmark_filter='Dt3d/256/2/2'
 #include <zdg/kernel/distance_transform.hpp>
 #include <zdg/kernel/reduced_medial_axis.hpp>
@@ -23,13 +28,17 @@
 
 #include <benchmark/benchmark.h>
 
+#include <zdg/kernel/mapped_file.hpp>
 #include <zdg/kernel/parallel_for.hpp>
 #include <zdg/kernel/populate_pages.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <map>
+#include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -210,6 +219,31 @@ void Random3d(benchmark::State& st) {
   dt_against_bound(st, random_half(st.range(0)));
 }
 
+void OutputWrite(benchmark::State& st) {
+  const std::int64_t n = st.range(0) * st.range(0) * st.range(0);
+  const auto threads = static_cast<unsigned>(st.range(1));
+  std::vector<std::uint32_t> values;
+  zdg::assign_populated(values, static_cast<std::size_t>(n), threads, std::uint32_t{7});
+  const auto path = (std::filesystem::temp_directory_path() /
+                     ("zdg-bench-write-" + std::to_string(::getpid()) + ".bin"))
+                        .string();
+  constexpr std::int64_t kPiece = (std::int64_t{4} << 20) / 4;
+  for (auto _ : st) {
+    zdg::ReservedFile out(path, static_cast<std::uint64_t>(n) * 4);
+    zdg::parallel_for((n + kPiece - 1) / kPiece, threads, [&](std::int64_t k) {
+      const std::int64_t b = k * kPiece, e = std::min(n, b + kPiece);
+      out.write(static_cast<std::uint64_t>(b) * 4, values.data() + b,
+                static_cast<std::uint64_t>(e - b) * 4);
+    });
+    out.finish();
+    st.PauseTiming();
+    std::filesystem::remove(path);
+    st.ResumeTiming();
+  }
+  st.counters["GB_per_s"] = benchmark::Counter(static_cast<double>(n) * 4e-9,
+                                               benchmark::Counter::kIsIterationInvariantRate);
+}
+
 void Voronoi3d(benchmark::State& st) {
   auto img = ball(st.range(0));
   auto opt = options(st);
@@ -273,6 +307,12 @@ BENCHMARK(Dt3dPortable)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 BENCHMARK(Random3dPortable)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(OutputWrite)
+    ->Args({512, 1})
+    ->Args({512, 2})
+    ->MinWarmUpTime(1.0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(Voronoi3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Rdt3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(Rma3d)->Args({256, 2, 2})->Unit(benchmark::kMillisecond)->UseRealTime();
