@@ -45,9 +45,9 @@ constexpr const char* kCholmodSoname = "libcholmod.so." ZDG_CHOLMOD_STR(CHOLMOD_
 
 // CHOLMOD is loaded at its first use (dlopen), not linked: linked, it and what it brings (OpenBLAS,
 // LAPACK, METIS, libgfortran, libgomp, AMD and the other orderings) were loaded and relocated by
-// every process that links zdg, whether it solves anything or not: 27 ms of the 28 ms that
-// `zdg --version` took on the development VM, 8.5 ms without them (perf stat, 40 runs). The
-// functions are looked up once; the handle stays open for the process's life.
+// every process that links zdg, whether it solves anything or not: `zdg --version` took 24-28 ms
+// with them and 12.7-15 ms without on the development VM (perf stat, 30-40 runs, alternating).
+// The functions are looked up once; the handle stays open for the process's life.
 struct CholmodApi {
   decltype(&cholmod_start) start = nullptr;
   decltype(&cholmod_finish) finish = nullptr;
