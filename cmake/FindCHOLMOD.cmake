@@ -1,18 +1,12 @@
-# FindCHOLMOD: SuiteSparse's sparse Cholesky factorization (Debian: libsuitesparse-dev), as the
-# imported target CHOLMOD::CHOLMOD. Debian 12 ships no CMake configuration for SuiteSparse 5,
-# so this module looks for the header and the shared library directly (the shared library
-# brings AMD, COLAMD, CAMD, CCOLAMD, SuiteSparse_config, BLAS and LAPACK along).
+# FindCHOLMOD: SuiteSparse's sparse Cholesky factorization (Debian: libsuitesparse-dev): its
+# header (CHOLMOD_INCLUDE_DIR) and its shared library (CHOLMOD_LIBRARY). zdg compiles against
+# the header and loads the library at run time (kernel/sparse_spd_solver.cpp), so there is no
+# imported target to link; the library is looked for so that a build with CHOLMOD knows it is
+# installed. Debian 12 ships no CMake configuration for SuiteSparse 5.
 find_path(CHOLMOD_INCLUDE_DIR NAMES cholmod.h PATH_SUFFIXES suitesparse)
 find_library(CHOLMOD_LIBRARY NAMES cholmod)
-find_library(CHOLMOD_CONFIG_LIBRARY NAMES suitesparseconfig)
 include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(
-  CHOLMOD REQUIRED_VARS CHOLMOD_LIBRARY CHOLMOD_CONFIG_LIBRARY CHOLMOD_INCLUDE_DIR
+  CHOLMOD REQUIRED_VARS CHOLMOD_LIBRARY CHOLMOD_INCLUDE_DIR
   REASON_FAILURE_MESSAGE "install Debian's libsuitesparse-dev (scripts/install-deps.sh)")
-if(CHOLMOD_FOUND AND NOT TARGET CHOLMOD::CHOLMOD)
-  add_library(CHOLMOD::CHOLMOD UNKNOWN IMPORTED)
-  set_target_properties(CHOLMOD::CHOLMOD PROPERTIES IMPORTED_LOCATION "${CHOLMOD_LIBRARY}"
-                        INTERFACE_INCLUDE_DIRECTORIES "${CHOLMOD_INCLUDE_DIR}"
-                        INTERFACE_LINK_LIBRARIES "${CHOLMOD_CONFIG_LIBRARY}")
-endif()
-mark_as_advanced(CHOLMOD_INCLUDE_DIR CHOLMOD_LIBRARY CHOLMOD_CONFIG_LIBRARY)
+mark_as_advanced(CHOLMOD_INCLUDE_DIR CHOLMOD_LIBRARY)

@@ -2,10 +2,12 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/kernel/input_file.hpp>
+#include <zdg/kernel/parallel_for.hpp>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <mutex>
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -108,5 +110,31 @@ void ReservedFile::finish() {
 ReservedFile::~ReservedFile() {
   if (fd_ >= 0) ::close(fd_);
 }
+
+template <class T>
+T write_values_max(ReservedFile& out, std::uint64_t offset, const T* values, std::int64_t n,
+                   unsigned threads) {
+  T mx = 0;
+  std::mutex mx_lock;
+  constexpr std::int64_t kPiece = (std::int64_t{4} << 20) / static_cast<std::int64_t>(sizeof(T));
+  parallel_for((n + kPiece - 1) / kPiece, threads, [&](std::int64_t k) {
+    const std::int64_t b = k * kPiece, e = std::min(n, b + kPiece);
+    T m = 0;
+    for (std::int64_t i = b; i < e; ++i) m = std::max(m, values[i]);
+    out.write(offset + static_cast<std::uint64_t>(b) * sizeof(T), values + b,
+              static_cast<std::uint64_t>(e - b) * sizeof(T));
+    const std::lock_guard<std::mutex> hold(mx_lock);
+    mx = std::max(mx, m);
+  });
+  return mx;
+}
+
+#define ZDG_WRITE_VALUES_MAX(T)                                                                    \
+  template T write_values_max<T>(ReservedFile&, std::uint64_t, const T*, std::int64_t, unsigned);
+ZDG_WRITE_VALUES_MAX(std::uint8_t)
+ZDG_WRITE_VALUES_MAX(std::uint16_t)
+ZDG_WRITE_VALUES_MAX(std::uint32_t)
+ZDG_WRITE_VALUES_MAX(std::uint64_t)
+#undef ZDG_WRITE_VALUES_MAX
 
 } // namespace zdg

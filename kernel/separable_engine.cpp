@@ -152,6 +152,7 @@ template <bool WithArg, bool ZeroRuns, int K, class V>
 void envelope_line(const LineMetric<K, V>& m, V* f, std::int64_t len, std::int64_t qlo,
                    std::int64_t qhi, const V& inf, V* g, std::int64_t* arg, std::int64_t* s,
                    std::int64_t* t, V* fs) {
+  static_assert(WithArg || !ZeroRuns, "values only: the peaks left out include the zero runs");
   std::int64_t q = -1;
   const V zero{};
   for (std::int64_t u = 0; u < len; ++u) {
@@ -193,18 +194,15 @@ void envelope_line(const LineMetric<K, V>& m, V* f, std::int64_t len, std::int64
       // g[x - qlo] may alias f[x - qlo] only (written after f[x] is read at index >= it)
       if constexpr (!WithArg) {
         V v = m.eval(fk, x - sk);
-        if (f[x] < v) v = f[x];
+        if (f[x] < v) v = f[x]; // a peak left out restores itself
         g[x - qlo] = std::move(v);
-        continue;
-      } else if constexpr (ZeroRuns) {
-        if (f[x] == zero) {
-          g[x - qlo] = zero;
-          if constexpr (WithArg) arg[x - qlo] = x;
-          continue;
-        }
+      } else if (ZeroRuns && f[x] == zero) {
+        g[x - qlo] = zero;
+        arg[x - qlo] = x;
+      } else {
+        g[x - qlo] = m.eval(fk, x - sk);
+        arg[x - qlo] = sk;
       }
-      g[x - qlo] = m.eval(fk, x - sk);
-      if constexpr (WithArg) arg[x - qlo] = sk;
     }
   }
 }

@@ -230,7 +230,6 @@ void SparseSpdSolver::Impl::factor(const EigenSparse& m, bool analyse) {
 #ifdef ZDG_HAVE_CHOLMOD
   if (backend == SpdBackend::cholmod) {
     if (analyse) {
-      cholmod.reset();
       cholmod.emplace(cholmod_api());
       cholmod->analyze(m);
     }

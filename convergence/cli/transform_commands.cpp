@@ -29,7 +29,6 @@
 #include <functional>
 #include <iostream>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -404,27 +403,9 @@ void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
   populate_pages(values.get(), n * sizeof(T), threads_used(opt.threads));
   distance_transform_into<T>(dom, mask, item, opt, values.get(), pass_printer(a));
   const double secs = since(t0);
-  // The largest value and the write, in pieces of 4 MiB by all the workers (positional writes
-  // of disjoint ranges): each piece is written while its values are still in cache from the
-  // max. The copies into the page cache themselves take the file's lock in turn (ext4 and xfs
-  // serialize buffered writes to one file: perf shows the second writer spinning on it), so
-  // the workers overlap one's max with another's copy, not two copies; one worker writing all
-  // pieces measured the same wall time. The copy's cost is the page cache's: 56 ms for 512 MB
-  // on the development VM when the guest's free pages are backed by the host, over 0.6 s when
-  // they are not (the VM's slow phases).
-  T mx = 0;
-  std::mutex mx_lock;
-  constexpr std::int64_t kPiece = (std::int64_t{4} << 20) / static_cast<std::int64_t>(sizeof(T));
-  const std::int64_t pieces = (dom.size() + kPiece - 1) / kPiece;
-  parallel_for(pieces, threads_used(opt.threads), [&](std::int64_t k) {
-    const std::int64_t b = k * kPiece, e = std::min(dom.size(), b + kPiece);
-    T m = 0;
-    for (std::int64_t i = b; i < e; ++i) m = std::max(m, values[static_cast<std::size_t>(i)]);
-    out.write(header.size() + static_cast<std::uint64_t>(b) * sizeof(T), values.get() + b,
-              static_cast<std::uint64_t>(e - b) * sizeof(T));
-    const std::lock_guard<std::mutex> hold(mx_lock);
-    mx = std::max(mx, m);
-  });
+  // The largest value and the write, in pieces by all the workers (write_values_max).
+  const T mx =
+      write_values_max<T>(out, header.size(), values.get(), dom.size(), threads_used(opt.threads));
   values.reset();
   out.finish();
   commit(a);

@@ -53,6 +53,37 @@ TEST(MappedFile, WhatIsWrittenThroughTheMapIsInTheFile) {
   fs::remove_all(dir);
 }
 
+// write_values_max (the lean transform command's write): the file holds the values after the
+// offset, byte for byte, and the result is their maximum (oracle: std::max_element), for a
+// count that spans several 4 MiB pieces and a partial last one, by 1 and 3 workers, and for
+// no values at all.
+template <class T>
+void check_write_values_max(std::int64_t n, unsigned threads, const std::string& path) {
+  std::vector<T> v(static_cast<std::size_t>(n));
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = static_cast<T>(i * 2654435761u);
+  const std::uint64_t offset = 128, bytes = static_cast<std::uint64_t>(n) * sizeof(T);
+  ReservedFile out(path, offset + bytes);
+  const T mx = write_values_max<T>(out, offset, v.data(), n, threads);
+  out.finish();
+  EXPECT_EQ(mx, v.empty() ? T{0} : *std::max_element(v.begin(), v.end())) << n;
+  MappedInput in(path);
+  ASSERT_EQ(in.size(), offset + bytes);
+  EXPECT_EQ(std::memcmp(in.data() + offset, v.data(), bytes), 0) << n << " " << threads;
+}
+
+TEST(MappedFile, WriteValuesMaxWritesEveryPieceAndReturnsTheLargest) {
+  const fs::path dir = test::scratch_dir("mapped-pieces");
+  const std::string path = (dir / "out.bin").string();
+  for (unsigned threads : {1u, 3u}) {
+    check_write_values_max<std::uint8_t>((std::int64_t{4} << 20) * 2 + 17, threads, path);
+    check_write_values_max<std::uint16_t>((std::int64_t{2} << 20) * 3 + 5, threads, path);
+    check_write_values_max<std::uint32_t>(1000, threads, path);
+    check_write_values_max<std::uint64_t>((std::int64_t{1} << 19) + 1, threads, path);
+    check_write_values_max<std::uint32_t>(0, threads, path);
+  }
+  fs::remove_all(dir);
+}
+
 TEST(MappedFile, ErrorsNameTheFile) {
   const fs::path dir = test::scratch_dir("mapped");
   try {
