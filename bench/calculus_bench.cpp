@@ -11,8 +11,8 @@
 #include <zdg/estimators/ambrosio_tortorelli.hpp>
 #include <zdg/estimators/heat_geodesics.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
-#include <zdg/kernel/digital_surface.hpp>
-#include <zdg/kernel/surfel_complex.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
+#include <zdg/kernel/surfaces/surfel_complex.hpp>
 
 #include <benchmark/benchmark.h>
 

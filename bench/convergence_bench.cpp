@@ -4,7 +4,7 @@
 // certificate) on 1e5 points near the boundary in chain order.
 #include <zdg/convergence/shape.hpp>
 #include <zdg/estimators/binomial_convolver.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -6,7 +6,7 @@
 #include "tests/support/contours.hpp"
 #include <zdg/arith/dsl_subsegment.hpp>
 #include <zdg/arith/dss_recognizer.hpp>
-#include <zdg/kernel/maximal_segments.hpp>
+#include <zdg/kernel/curves/maximal_segments.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -4,9 +4,9 @@
 // hull of the lattice points of a ball of radius 50 (523,305 points) against CGAL's
 // convex_hull_3, each on CGAL's exact-constructions kernel (Epeck) and on its
 // exact-predicates kernel (Epick, the faster peer).
-#include <zdg/kernel/convex_body_hull.hpp>
-#include <zdg/kernel/lattice_hull_2d.hpp>
-#include <zdg/kernel/lattice_hull_3d.hpp>
+#include <zdg/kernel/hulls/convex_body_hull.hpp>
+#include <zdg/kernel/hulls/lattice_hull_2d.hpp>
+#include <zdg/kernel/hulls/lattice_hull_3d.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

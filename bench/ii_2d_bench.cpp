@@ -7,7 +7,7 @@
 #include <zdg/convergence/shape.hpp>
 #include <zdg/estimators/ii_curvature.hpp>
 #include <zdg/estimators/mdca_curvature.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -4,8 +4,8 @@
 // nv, threads (0 = all cores).
 //
 //   build/bin/render_bench --benchmark_filter='RenderPng/5000/2000'
-#include <zdg/kernel/mesh_io.hpp>
-#include <zdg/kernel/render_mesh.hpp>
+#include <zdg/kernel/io/mesh_io.hpp>
+#include <zdg/kernel/render/render_mesh.hpp>
 
 #include "tests/support/voxel_mesh.hpp"
 

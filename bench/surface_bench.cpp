@@ -8,13 +8,13 @@
 // reported as a counter, with the input size and the mesh sizes (run one step per process,
 // --benchmark_filter=BM_MarchingCubes, for the peak of that step alone).
 #include <zdg/estimators/ii_3d.hpp>
-#include <zdg/kernel/connected_components.hpp>
-#include <zdg/kernel/image_surfaces.hpp>
-#include <zdg/kernel/image_surfels.hpp>
-#include <zdg/kernel/marching_cubes.hpp>
-#include <zdg/kernel/mesh_io.hpp>
-#include <zdg/kernel/parallel_for.hpp>
-#include <zdg/kernel/primal_surface_mesh.hpp>
+#include <zdg/kernel/io/mesh_io.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
+#include <zdg/kernel/surfaces/image_surfaces.hpp>
+#include <zdg/kernel/surfaces/image_surfels.hpp>
+#include <zdg/kernel/surfaces/marching_cubes.hpp>
+#include <zdg/kernel/surfaces/primal_surface_mesh.hpp>
+#include <zdg/kernel/topology/connected_components.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -99,7 +99,7 @@ void BM_Surfels(benchmark::State& state) {
   report(state);
 }
 
-// The components of the object (6-adjacency, kernel/connected_components.hpp): with the
+// The components of the object (6-adjacency, kernel/topology/connected_components.hpp): with the
 // surfels and the surfaces, what `zdg surface` computes before any mesh.
 void BM_Components(benchmark::State& state) {
   foam();

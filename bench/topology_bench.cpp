@@ -5,11 +5,11 @@
 //
 //   build/bin/topology_bench --benchmark_filter='CurveSkeleton/256/1'
 // Peer comparison (scikit-image's skeletonize, Lee et al. 1994): bench/compare_skeletons.py.
-#include <zdg/kernel/betti_numbers.hpp>
-#include <zdg/kernel/connected_components.hpp>
-#include <zdg/kernel/critical_kernel_thinning.hpp>
-#include <zdg/kernel/homotopic_thinning.hpp>
-#include <zdg/kernel/simple_points.hpp>
+#include <zdg/kernel/topology/betti_numbers.hpp>
+#include <zdg/kernel/topology/connected_components.hpp>
+#include <zdg/kernel/topology/critical_kernel_thinning.hpp>
+#include <zdg/kernel/topology/homotopic_thinning.hpp>
+#include <zdg/kernel/topology/simple_points.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -15,23 +15,23 @@
 // iteration.
 //
 // OutputWrite: what `zdg transform dt` adds to the transform to write its .npy output, n^3
-// uint32 values from memory into a new file reserved on the disk (kernel/mapped_file.hpp
+// uint32 values from memory into a new file reserved on the disk (kernel/io/mapped_file.hpp
 // ReservedFile, in the folder of TMPDIR) by the command's own write_values_max (the largest
 // value and the write, in pieces by the workers): the floor of the command's time over its
 // transform's (issue #15, part 1).
 //
 //   build/bin/transform_bench --benchmark_filter='Dt3d/256/2/2'
-#include <zdg/kernel/distance_transform.hpp>
-#include <zdg/kernel/reduced_medial_axis.hpp>
-#include <zdg/kernel/reverse_distance_transform.hpp>
-#include <zdg/kernel/separable_engine.hpp>
-#include <zdg/kernel/voronoi_map.hpp>
+#include <zdg/kernel/transforms/distance_transform.hpp>
+#include <zdg/kernel/transforms/reduced_medial_axis.hpp>
+#include <zdg/kernel/transforms/reverse_distance_transform.hpp>
+#include <zdg/kernel/transforms/separable_engine.hpp>
+#include <zdg/kernel/transforms/voronoi_map.hpp>
 
 #include <benchmark/benchmark.h>
 
-#include <zdg/kernel/mapped_file.hpp>
-#include <zdg/kernel/parallel_for.hpp>
-#include <zdg/kernel/populate_pages.hpp>
+#include <zdg/kernel/io/mapped_file.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
+#include <zdg/kernel/parallel/populate_pages.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -6,9 +6,9 @@
 // second, surfels (6-neighbour pairs inside/outside, counted once), file size.
 //
 //   build/bin/volume_io_bench --benchmark_filter='VolV3Read/512'
-#include <zdg/kernel/object_selection.hpp>
-#include <zdg/kernel/vol_io.hpp>
-#include <zdg/kernel/volume_io.hpp>
+#include <zdg/kernel/images/object_selection.hpp>
+#include <zdg/kernel/io/vol_io.hpp>
+#include <zdg/kernel/io/volume_io.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -1,6 +1,6 @@
 # FindCHOLMOD: SuiteSparse's sparse Cholesky factorization (Debian: libsuitesparse-dev): its
 # header (CHOLMOD_INCLUDE_DIR) and its shared library (CHOLMOD_LIBRARY). zdg compiles against
-# the header and loads the library at run time (kernel/sparse_spd_solver.cpp), so there is no
+# the header and loads the library at run time (kernel/linalg/sparse_spd_solver.cpp), so there is no
 # imported target to link; the library is looked for so that a build with CHOLMOD knows it is
 # installed. Debian 12 ships no CMake configuration for SuiteSparse 5.
 find_path(CHOLMOD_INCLUDE_DIR NAMES cholmod.h PATH_SUFFIXES suitesparse)

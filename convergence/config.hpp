@@ -21,7 +21,7 @@
 // Numbers may be written as TOML numbers or as strings ("14/9", "1.7e-4").
 //
 // Cost: linear in the text, plus parse_shape and the estimator specs (bounded, see
-// kernel/polynomial.hpp for `poly:`).
+// kernel/digitization/polynomial.hpp for `poly:`).
 #pragma once
 
 #include <zdg/convergence/experiment.hpp>

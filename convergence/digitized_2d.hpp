@@ -1,7 +1,7 @@
 // The digitized boundary of a 2D shape for the estimators of the registry (internal to
 // convergence/): the predicate of G_h(X + t) on the pixel box of the run and the contours of
 // its components found by scanning 10 rows and 10 columns spread over the box (a component
-// that no scan line meets is not found; see kernel/digital_contour.hpp).
+// that no scan line meets is not found; see kernel/curves/digital_contour.hpp).
 //
 // Completeness certificate. The contours found are the whole boundary of the digitization
 // (`complete`) when the shape is a topological disc with a known reach lower bound rho
@@ -15,7 +15,7 @@
 
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/convergence/shape.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <memory>
 #include <utility>

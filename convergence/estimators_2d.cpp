@@ -13,7 +13,7 @@
 #include <zdg/estimators/mdss_curvature.hpp>
 #include <zdg/estimators/mlp_length.hpp>
 #include <zdg/estimators/moments.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -2,11 +2,11 @@
 // integral of 1 with the surfel measure of the integral-invariant normal (estimators/
 // digital_integration.hpp), compared with the shape's area in closed form; and the
 // Laplace-Beltrami operators lb-heat (estimators/heat_laplace_beltrami.hpp), lb-cotan (primal
-// surface), lb-cotan-mc (marching-cubes mesh) and lb-combinatorial (kernel/cotan_laplacian.hpp)
-// applied to a test function u (the parameter `u`, convergence/scalar_field.hpp), compared at every
-// element with Delta_S u at the nearest point of the true surface (its normal and principal
-// curvatures from the shape's closed forms: exact for spheres, from the fundamental forms for the
-// ellipsoid, torus and polynomial shapes).
+// surface), lb-cotan-mc (marching-cubes mesh) and lb-combinatorial
+// (kernel/linalg/cotan_laplacian.hpp) applied to a test function u (the parameter `u`,
+// convergence/scalar_field.hpp), compared at every element with Delta_S u at the nearest point of
+// the true surface (its normal and principal curvatures from the shape's closed forms: exact for
+// spheres, from the fundamental forms for the ellipsoid, torus and polynomial shapes).
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/estimator.hpp>
@@ -14,11 +14,11 @@
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
-#include <zdg/kernel/cotan_laplacian.hpp>
-#include <zdg/kernel/image_surfaces.hpp>
-#include <zdg/kernel/image_surfels.hpp>
-#include <zdg/kernel/marching_cubes.hpp>
-#include <zdg/kernel/surfel_complex.hpp>
+#include <zdg/kernel/linalg/cotan_laplacian.hpp>
+#include <zdg/kernel/surfaces/image_surfaces.hpp>
+#include <zdg/kernel/surfaces/image_surfels.hpp>
+#include <zdg/kernel/surfaces/marching_cubes.hpp>
+#include <zdg/kernel/surfaces/surfel_complex.hpp>
 
 #include <cmath>
 #include <limits>
@@ -127,8 +127,8 @@ ErrorStats run_lb_cotan(const RunInput& in) {
   return laplacian_errors(f, complex.pointels, L.apply(sampled(f, complex.pointels)));
 }
 
-// Cotangent LB of the marching-cubes mesh of the digitization (kernel/marching_cubes.hpp, the
-// (6,26) convention, level 1/2 between voxel centres), at its vertices.
+// Cotangent LB of the marching-cubes mesh of the digitization (kernel/surfaces/marching_cubes.hpp,
+// the (6,26) convention, level 1/2 between voxel centres), at its vertices.
 ErrorStats run_lb_cotan_mc(const RunInput& in) {
   const detail::Digitized3 d = whole_surface(in, "lb-cotan-mc");
   const TestFunction f = test_function(in, d);

@@ -15,7 +15,7 @@
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/estimators/hausdorff.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include <zdg/convergence/digitized_2d.hpp>
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/estimators/mdca_curvature.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <utility>
 #include <vector>

@@ -3,7 +3,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/number_text.hpp>
 #include <zdg/convergence/scalar_field.hpp>
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <algorithm>
 #include <atomic>

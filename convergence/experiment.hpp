@@ -14,7 +14,7 @@
 //   plan_experiment    validation: shapes parse, entries resolve, dimensions agree, grid steps
 //                      sorted decreasing without repeats, counts in range. O(input).
 //   run_plan           scheduling: one job per run, finest grid steps first (the longest jobs,
-//                      for load balance) over `threads` workers (kernel/parallel_for.hpp);
+//                      for load balance) over `threads` workers (kernel/parallel/parallel_for.hpp);
 //                      the runs of one (h, shape, translation) whose estimators share a
 //                      computation (Estimator::shared_computation) are one job.
 //   aggregate_levels   aggregation per (shape, entry, h), after sorting the records: O(n log n)

@@ -12,14 +12,14 @@
 // is the double nearest to it, a dyadic rational, and the translation is a double too, so
 // the point h z - t is a rational known exactly. Shapes given by rational polynomials
 // (ball, ellipse without rotation, polygon, poly:) decide membership exactly: the sign of
-// F(h z - t) by the filtered predicate of kernel/polynomial_sign.hpp (double with a rigorous
-// error bound, Rational<BigInt> when the bound does not certify it). A rotated ellipse is the
-// quadric whose coefficients are the doubles of its rotated implicit equation (exact from then on).
-// Flowers are transcendental: membership is decided in double (r(theta) vs |p|).
+// F(h z - t) by the filtered predicate of kernel/digitization/polynomial_sign.hpp (double with a
+// rigorous error bound, Rational<BigInt> when the bound does not certify it). A rotated ellipse is
+// the quadric whose coefficients are the doubles of its rotated implicit equation (exact from then
+// on). Flowers are transcendental: membership is decided in double (r(theta) vs |p|).
 #pragma once
 
 #include <zdg/arith/point.hpp>
-#include <zdg/kernel/gauss_digitization.hpp>
+#include <zdg/kernel/digitization/gauss_digitization.hpp>
 
 #include <array>
 #include <cstdint>

@@ -1,8 +1,8 @@
 #include <zdg/convergence/shapes_2d.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/polynomial.hpp>
-#include <zdg/kernel/polynomial_sign.hpp>
+#include <zdg/kernel/digitization/polynomial.hpp>
+#include <zdg/kernel/digitization/polynomial_sign.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +21,7 @@ constexpr double kPi = std::numbers::pi;
 // --- exact digitization of F <= 0 for polynomials F --------------------------------------
 
 // G_h(X + t) for X = { F_i <= 0 for all i }: each sign by the filtered predicate of
-// kernel/polynomial_sign.hpp at the grid point h z - t.
+// kernel/digitization/polynomial_sign.hpp at the grid point h z - t.
 class PolyDigitization final : public GaussDigitization2 {
 public:
   PolyDigitization(const std::vector<PolynomialSign>* preds, double h, P2 t, Box2 box)

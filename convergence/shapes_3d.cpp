@@ -1,7 +1,7 @@
 #include <zdg/convergence/shapes_3d.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/polynomial_sign.hpp>
+#include <zdg/kernel/digitization/polynomial_sign.hpp>
 
 #include <array>
 #include <cmath>
@@ -58,8 +58,8 @@ public:
   std::optional<std::vector<std::pair<double, double>>> bounding_box() const override {
     return std::vector<std::pair<double, double>>(3, {lo_, hi_});
   }
-  // Exact membership of h z - t in { F <= 0 } (kernel/polynomial_sign.hpp). The predicate
-  // shares the polynomial, so it may outlive the shape.
+  // Exact membership of h z - t in { F <= 0 } (kernel/digitization/polynomial_sign.hpp). The
+  // predicate shares the polynomial, so it may outlive the shape.
   VoxelPredicate digitize(double h, P3 t) const override {
     const std::array<double, 3> tt{t.x, t.y, t.z};
     return PolynomialDigitization(sign_, h, tt);

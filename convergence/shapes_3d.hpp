@@ -6,9 +6,9 @@
 //   leopold, diabolo, heart, crixxi    the classic test polynomials (named_polynomial_3d)
 //
 // Digitization G_h(X + t) = { z in Z^3 : h z - t in X }: the sign of F at the point
-// h z - t (exact dyadic rational) by the filtered predicate of kernel/polynomial_sign.hpp
-// (double with a rigorous error bound, Rational<BigInt> when the bound does not certify it),
-// the one predicate of the 2D polynomial shapes too.
+// h z - t (exact dyadic rational) by the filtered predicate of
+// kernel/digitization/polynomial_sign.hpp (double with a rigorous error bound, Rational<BigInt>
+// when the bound does not certify it), the one predicate of the 2D polynomial shapes too.
 //
 // Ground truth (papers/THEORY.md, "Ground-truth formulas"). xi(p), the projection of p onto
 // F = 0: damped Newton q <- q - F(q) g / |g|^2 (the step halved while |F| does not
@@ -30,7 +30,7 @@
 #pragma once
 
 #include <zdg/convergence/shape.hpp>
-#include <zdg/kernel/digital_surface.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
 
 #include <optional>
 #include <string>
@@ -39,7 +39,7 @@
 
 namespace zdg {
 
-// kernel/polynomial.hpp (its Rational<BigInt> coefficients are not needed here).
+// kernel/digitization/polynomial.hpp (its Rational<BigInt> coefficients are not needed here).
 class Polynomial;
 
 /// A point of the true surface with its differential geometry (outward normal).

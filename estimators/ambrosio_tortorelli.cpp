@@ -1,7 +1,7 @@
 #include <zdg/estimators/ambrosio_tortorelli.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/sparse_spd_solver.hpp>
+#include <zdg/kernel/linalg/sparse_spd_solver.hpp>
 
 #include <algorithm>
 #include <cmath>

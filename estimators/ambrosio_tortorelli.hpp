@@ -7,7 +7,7 @@
 // normals of estimators/ii_3d.hpp), AT finds a field u close to g, smooth except across a thin
 // set of linels where the discontinuity function v drops to 0: the sharp features.
 //
-// Cells (kernel/surfel_complex.hpp, the dual side): u is a dual 0-form (one 3-vector per
+// Cells (kernel/surfaces/surfel_complex.hpp, the dual side): u is a dual 0-form (one 3-vector per
 // surfel), v a dual 1-form (one scalar per linel: linel e is the dual edge between its surfels
 // face[0] and face[1], (d0 u)(e) = u(face[1]) - u(face[0])). The functional, in grid units
 // (every cell counts 1, as in the papers' calculus on unit cells):
@@ -61,8 +61,8 @@
 // a positive right-hand side). The unit normals are u / |u| at the end (u itself shrinks where
 // the field turns: it is an average of unit vectors).
 //
-// Cost: per half step one sparse Cholesky factorization (kernel/sparse_spd_solver.hpp: CHOLMOD
-// when zdg has it, else Eigen SimplicialLDLT) of an n x n matrix with 5 entries per row (u,
+// Cost: per half step one sparse Cholesky factorization (kernel/linalg/sparse_spd_solver.hpp:
+// CHOLMOD when zdg has it, else Eigen SimplicialLDLT) of an n x n matrix with 5 entries per row (u,
 // n = #surfels) or of an m x m matrix with about 9 entries per row (v, m = 2 #surfels linels):
 // about n^{3/2} flops each (nested dissection on a surface), O(n log n) memory; at most
 // levels x max_iterations x 2 factorizations, levels = 1 + floor(log(epsilon1 / epsilon2) /
@@ -73,8 +73,8 @@
 #pragma once
 
 #include <zdg/arith/point.hpp>
-#include <zdg/kernel/sparse_matrix.hpp>
-#include <zdg/kernel/surfel_complex.hpp>
+#include <zdg/kernel/linalg/sparse_matrix.hpp>
+#include <zdg/kernel/surfaces/surfel_complex.hpp>
 
 #include <cstdint>
 #include <span>

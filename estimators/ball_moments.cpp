@@ -1,8 +1,8 @@
 #include <zdg/estimators/ball_moments.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/column_runs.hpp>
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/images/column_runs.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <algorithm>
 #include <atomic>

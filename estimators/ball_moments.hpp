@@ -6,7 +6,7 @@
 //
 // Algorithm (ball_moments_by_columns). B is a union of column segments
 // { (u, v, t) : |t| <= w(u, v) }, w(u, v) = floor(sqrt(r2 - u^2 - v^2)), one per (u, v) of
-// the disc u^2 + v^2 <= r2. With the runs of X along z (kernel/column_runs.hpp), the part
+// the disc u^2 + v^2 <= r2. With the runs of X along z (kernel/images/column_runs.hpp), the part
 // of X in the segment of column (c.x + u, c.y + v) is the union of the intersections
 // [lo, hi] of its runs with [c.z - w, c.z + w], whose contributions are closed forms:
 //   count hi - lo + 1, sum t = (lo + hi)(hi - lo + 1)/2,
@@ -14,7 +14,7 @@
 // times u, v, u^2, uv for the other moments. Cost: O(#runs in the columns of the disc),
 // about pi r2 column operations per centre whatever the shape (vectorized, no voxel is
 // touched), plus one predicate evaluation per voxel of the blocks of kBlock^3 voxels within
-// reach of a ball (kernel/column_runs.hpp; the blocks come from a dilation of the blocks of
+// reach of a ball (kernel/images/column_runs.hpp; the blocks come from a dilation of the blocks of
 // the centres). The integers equal those of the brute-force count (direct_ball_moments) and
 // of the incremental walk (estimators/ii_3d.hpp), tested.
 //
@@ -34,7 +34,7 @@
 // outside the box are outside X.
 #pragma once
 
-#include <zdg/kernel/digital_surface.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
 
 #include <array>
 #include <cstddef>

@@ -24,7 +24,7 @@
 // computed through lgamma to avoid overflow.
 #pragma once
 
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <vector>
 

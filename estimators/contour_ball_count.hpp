@@ -1,11 +1,11 @@
 // Number of pixels of a digitized set X in a digital disc, from the boundary of X (Green's
 // formula), in O(log n) per query instead of the O(rho) of a symmetric-difference update.
 //
-// Mathematics. Let D = c + { d : |d|^2 <= rho^2 } (kernel/digital_disc.hpp) and X a set of
-// pixels whose contours (all of them: outer boundaries and holes, kernel/digital_contour.hpp)
-// are known. The pixel count of D n X is the area of the union of its unit squares, i.e. half
-// the shoelace sum  sum cross(p, q)  over the directed edges p -> q of its boundary (D n X on
-// the left). That boundary is made of
+// Mathematics. Let D = c + { d : |d|^2 <= rho^2 } (kernel/digitization/digital_disc.hpp) and X a
+// set of pixels whose contours (all of them: outer boundaries and holes,
+// kernel/curves/digital_contour.hpp) are known. The pixel count of D n X is the area of the union
+// of its unit squares, i.e. half the shoelace sum  sum cross(p, q)  over the directed edges p -> q
+// of its boundary (D n X on the left). That boundary is made of
 //   (a) the contour linels of X whose two pixels both lie in D (oriented as the contour), and
 //   (b) the boundary linels of D (counter-clockwise) whose pixel in D belongs to X.
 // The (a) linels form maximal runs of consecutive linels along the contours; over a run the
@@ -37,8 +37,8 @@
 #pragma once
 
 #include <zdg/arith/checked.hpp>
-#include <zdg/kernel/digital_contour.hpp>
-#include <zdg/kernel/digital_disc.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
+#include <zdg/kernel/digitization/digital_disc.hpp>
 
 #include <cstdint>
 #include <span>

@@ -7,7 +7,7 @@
 #include <zdg/estimators/ii_curvature.hpp>
 #include <zdg/estimators/lambda_mst.hpp>
 #include <zdg/estimators/mlp_length.hpp>
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,4 @@
-// The 2D estimators on the contours of a user's binary image (kernel/image_contours.hpp), at
+// The 2D estimators on the contours of a user's binary image (kernel/curves/image_contours.hpp), at
 // grid step h (the physical size of a square pixel):
 //   ii-curvature  at every linel (estimators/ii_curvature.hpp, radius R), the ball counts by
 //                 Green's formula over all the contours (estimators/contour_ball_count.hpp:
@@ -16,9 +16,9 @@
 // contours are given (it answers the membership queries of the II counts).
 #pragma once
 
-#include <zdg/kernel/gauss_digitization.hpp>
-#include <zdg/kernel/image.hpp>
-#include <zdg/kernel/image_contours.hpp>
+#include <zdg/kernel/curves/image_contours.hpp>
+#include <zdg/kernel/digitization/gauss_digitization.hpp>
+#include <zdg/kernel/images/image.hpp>
 
 #include <cstdint>
 #include <vector>

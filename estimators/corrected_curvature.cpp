@@ -1,7 +1,7 @@
 // Interpolated corrected curvature measures (see the header).
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/corrected_curvature.hpp>
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <Eigen/Eigenvalues>
 

@@ -4,7 +4,7 @@
 // currents: Lachaud, Romon, Thibert, "Corrected curvature measures", Discrete Comput. Geom. 68,
 // 2022).
 //
-// A face is the quad of the four pointels of a surfel (kernel/cubical_cells.hpp,
+// A face is the quad of the four pointels of a surfel (kernel/surfaces/cubical_cells.hpp,
 // surfel_pointels, counterclockwise seen from outside), parametrised bilinearly over
 // (s, t) in [0, 1]^2 by its corners x_00, x_10, x_11, x_01, and carries the corrected normal
 // field u(s, t) interpolated bilinearly from the corrected normals u_i at its corners (not
@@ -55,7 +55,7 @@
 #pragma once
 
 #include <zdg/arith/point.hpp>
-#include <zdg/kernel/cubical_cells.hpp>
+#include <zdg/kernel/surfaces/cubical_cells.hpp>
 
 #include <array>
 #include <span>

@@ -3,7 +3,7 @@
 // integration", JMIV 2016; Lachaud, Coeurjolly, Levallois 2017; Caissard et al., JMIV 2019).
 //
 // With n_est(s) a unit normal estimated at the surfel s (outward) and n_elem(s) its elementary
-// normal (kernel/cubical_cells.hpp), the surfel measure is
+// normal (kernel/surfaces/cubical_cells.hpp), the surfel measure is
 //     mu(s) = n_est(s) . n_elem(s)            (in [-1, 1]; about |n_x|, |n_y| or |n_z|),
 // the weight of s is w(s) = area(s) mu(s) (h^2 mu(s) on the grid of step h), and
 //     DI_h(f) = sum over surfels s of w(s) f(s)

@@ -1,7 +1,7 @@
 // Length of a digital curve from its greedy DSS segmentation.
 //
 // The curve (closed 4-connected contour of pointels, or an open 4/8-connected path) is cut
-// into longest digital straight segments from p_0 on (kernel/maximal_segments.hpp,
+// into longest digital straight segments from p_0 on (kernel/curves/maximal_segments.hpp,
 // greedy_segmentation); the estimate is h times the length of the polygon through the
 // segment ends: L = h sum_k |p_{e_k} - p_{b_k}|.
 // Exact on a digitized straight segment (one DSS: the distance between its ends) and on

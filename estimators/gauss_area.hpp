@@ -7,7 +7,7 @@
 // (Huxley 1990); see papers/THEORY.md.
 #pragma once
 
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,7 @@
 #include <zdg/estimators/gauss_volume.hpp>
 
 #include <zdg/arith/integer.hpp>
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <atomic>
 #include <cmath>

@@ -7,7 +7,7 @@
 // nothing stored), the z-slices being shared among `threads` threads.
 #pragma once
 
-#include <zdg/kernel/digital_surface.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
 
 #include <cstdint>
 

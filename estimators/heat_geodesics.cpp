@@ -1,6 +1,6 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/heat_geodesics.hpp>
-#include <zdg/kernel/cotan_laplacian.hpp>
+#include <zdg/kernel/linalg/cotan_laplacian.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -170,7 +170,7 @@ HeatGeodesics::HeatGeodesics(const SurfelComplex& complex, std::span<const Point
   // least-squares stiffness A does not see the checkerboard modes of the 2-ring stencil (their
   // fitted gradient vanishes), so the heat step alone would ring around the source; K damps
   // them (a monotone M-matrix), A keeps the metric of the estimated tangent planes.
-  // K = -diag(area) L_comb (kernel/cotan_laplacian.hpp): unit weights per linel.
+  // K = -diag(area) L_comb (kernel/linalg/cotan_laplacian.hpp): unit weights per linel.
   SparseMatrix graph = combinatorial_laplacian(complex);
   for (std::int64_t i = 0; i < n_; ++i)
     for (auto p = graph.row_start[std::size_t(i)]; p < graph.row_start[std::size_t(i) + 1]; ++p)

@@ -22,7 +22,8 @@
 // as the least-squares potential of X, A phi = G^T W X (A is singular on constants: solved as (A +
 // eps W) phi = G^T W X with eps = 1e-9 tr(A) / tr(W)), shifted so that phi(source) = 0. Default t =
 // h^2 (Crane et al.: t = m h^2 with h the mean spacing, m = 1). Both matrices are factored once
-// (kernel/sparse_spd_solver.hpp, CHOLMOD when present), so each further source costs two solves.
+// (kernel/linalg/sparse_spd_solver.hpp, CHOLMOD when present), so each further source costs two
+// solves.
 //
 // Accuracy (measured in tests/estimators/heat_geodesics_test.cpp, II normals R = 2 h^{1/3}):
 // on the unit sphere, the mean | max error against the great-circle distance is 0.024 | 0.165
@@ -35,9 +36,9 @@
 #pragma once
 
 #include <zdg/arith/point.hpp>
-#include <zdg/kernel/sparse_matrix.hpp>
-#include <zdg/kernel/sparse_spd_solver.hpp>
-#include <zdg/kernel/surfel_complex.hpp>
+#include <zdg/kernel/linalg/sparse_matrix.hpp>
+#include <zdg/kernel/linalg/sparse_spd_solver.hpp>
+#include <zdg/kernel/surfaces/surfel_complex.hpp>
 
 #include <array>
 #include <cstdint>

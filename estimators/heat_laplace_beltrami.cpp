@@ -1,8 +1,8 @@
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/parallel_for.hpp>
-#include <zdg/kernel/parallel_rounds.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
+#include <zdg/kernel/parallel/parallel_rounds.hpp>
 
 #include <algorithm>
 #include <array>

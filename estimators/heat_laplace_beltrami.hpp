@@ -25,10 +25,10 @@
 // neighbouring cells per cell). apply() evaluates each pair once for both of its rows (the
 // kernel is symmetric): the cells are cut into blocks of 256 surfels, the pairs of blocks in
 // neighbouring cells are coloured greedily into rounds in which no block appears twice, and
-// each round's pairs run in parallel (kernel/parallel_rounds.hpp), each block's sums added in
-// round order, so the result does not depend on the number of threads (bit for bit). Cost:
-// O(n k / 2) exp evaluations for k surfels per kernel ball (about 2 pi c^2 t / h^2 on a surface
-// of step h).
+// each round's pairs run in parallel (kernel/parallel/parallel_rounds.hpp), each block's sums added
+// in round order, so the result does not depend on the number of threads (bit for bit). Cost: O(n k
+// / 2) exp evaluations for k surfels per kernel ball (about 2 pi c^2 t / h^2 on a surface of step
+// h).
 //
 // Precision of apply(): the kernel values are computed in single precision (8 lanes of explicit
 // vector code, an AVX2+FMA clone chosen at load time on x86-64 with GCC: an exp by Cody-Waite
@@ -49,7 +49,7 @@
 #pragma once
 
 #include <zdg/arith/point.hpp>
-#include <zdg/kernel/sparse_matrix.hpp>
+#include <zdg/kernel/linalg/sparse_matrix.hpp>
 
 #include <array>
 #include <cstdint>

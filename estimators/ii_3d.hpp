@@ -35,7 +35,7 @@
 #pragma once
 
 #include <zdg/estimators/ball_moments.hpp>
-#include <zdg/kernel/digital_surface.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
 
 #include <array>
 #include <cstddef>

@@ -1,6 +1,6 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/ii_auto_radius.hpp>
-#include <zdg/kernel/maximal_segments.hpp>
+#include <zdg/kernel/curves/maximal_segments.hpp>
 
 #include <array>
 #include <optional>

@@ -17,7 +17,7 @@
 // k = 1/10 (their default constant), the default of the registry.
 //
 // 2D (mean_maximal_segment_length): the maximal segments of the tangential cover
-//   (kernel/maximal_segments.hpp, standard DSS) of the pointels of every given contour.
+//   (kernel/curves/maximal_segments.hpp, standard DSS) of the pointels of every given contour.
 // 3D (mean_slice_maximal_segment_length): each boundary surfel is orthogonal to one axis and
 //   lies in the two slices of the digital surface by the planes x_a = const through voxel
 //   centres, a one of the two other axes; such a slice is a closed 4-connected contour of the
@@ -34,8 +34,8 @@
 // Width: coordinates int64; the maximal segments escalate (maximal_segments_exact).
 #pragma once
 
-#include <zdg/kernel/digital_contour.hpp>
-#include <zdg/kernel/digital_surface.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
 
 #include <cstddef>
 #include <span>

@@ -20,9 +20,9 @@
 #pragma once
 
 #include <zdg/estimators/contour_ball_count.hpp>
-#include <zdg/kernel/digital_contour.hpp>
-#include <zdg/kernel/digital_disc.hpp>
-#include <zdg/kernel/gauss_digitization.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
+#include <zdg/kernel/digitization/digital_disc.hpp>
+#include <zdg/kernel/digitization/gauss_digitization.hpp>
 
 #include <cstdint>
 #include <vector>

@@ -1,7 +1,7 @@
 // The only translation unit of zdg that includes CGAL (Jet_fitting_3).
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/jet_fitting.hpp>
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <CGAL/Monge_via_jet_fitting.h>
 #include <CGAL/Simple_cartesian.h>

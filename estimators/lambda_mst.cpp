@@ -1,7 +1,7 @@
 #include <zdg/estimators/lambda_mst.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/maximal_segments.hpp>
+#include <zdg/kernel/curves/maximal_segments.hpp>
 
 #include <cmath>
 #include <limits>

@@ -1,6 +1,6 @@
 // lambda-MST: tangent (and length) of a digital curve from its maximal segments.
 //
-// Every point p_i lies in a pencil of maximal segments S_j (kernel/maximal_segments.hpp);
+// Every point p_i lies in a pencil of maximal segments S_j (kernel/curves/maximal_segments.hpp);
 // with e_j in [0, 1] the eccentricity of p_i in S_j (its index along S_j divided by
 // |S_j| - 1) and theta_j the direction of S_j, the tangent direction at p_i is
 //     theta_i = sum_j lambda(e_j) theta_j / sum_j lambda(e_j),

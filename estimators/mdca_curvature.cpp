@@ -1,7 +1,7 @@
 #include <zdg/estimators/mdca_curvature.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/digital_circular_arc.hpp>
+#include <zdg/kernel/curves/digital_circular_arc.hpp>
 
 #include <algorithm>
 #include <string>

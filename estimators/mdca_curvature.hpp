@@ -1,7 +1,7 @@
 // Curvature from maximal digital circular arcs (MDCA).
 //
 // Along a closed contour of linels, the tangential cover by maximal digital circular arcs
-// (kernel/digital_circular_arc.hpp: maximal runs of linels whose inner and outer pixels some
+// (kernel/curves/digital_circular_arc.hpp: maximal runs of linels whose inner and outer pixels some
 // circle strictly separates) is computed; at each linel l the estimate is the signed
 // curvature of the separating circle of the MOST CENTRED maximal arc covering l (the arc
 // i .. j that maximizes min(l - i, j - l); ties go to the first arc of the cover), divided by
@@ -15,11 +15,11 @@
 // paper and DGtal also take one element of that set, and for long arcs the set is thin).
 // Multigrid convergence: no rate proven under the hypotheses of the registry; the authors
 // report experimental convergence (papers/THEORY.md).
-// Complexity: the cover (kernel/digital_circular_arc.hpp) plus O(sum of arc lengths).
+// Complexity: the cover (kernel/curves/digital_circular_arc.hpp) plus O(sum of arc lengths).
 // Width: exact integer recognition by escalation (int64 coordinates), double curvature.
 #pragma once
 
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <vector>
 

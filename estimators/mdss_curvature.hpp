@@ -3,7 +3,7 @@
 //
 // At p_i, the forward half-tangent is the longest DSS starting at p_i, the backward one the
 // longest ending at p_i; their far ends p_f and p_b are read off the pencil of maximal
-// segments (kernel/maximal_segments.hpp). The curvature is the signed inverse radius of the
+// segments (kernel/curves/maximal_segments.hpp). The curvature is the signed inverse radius of the
 // circle through p_b, p_i, p_f (Menger curvature), divided by h:
 //     kappa = 2 cross(p_i - p_b, p_f - p_i) / (|p_i - p_b| |p_f - p_i| |p_f - p_b|) / h,
 // positive where the curve turns left (convex parts of a counter-clockwise contour).

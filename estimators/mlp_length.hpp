@@ -14,7 +14,7 @@
 // in linels, worst case O(n^2)).
 #pragma once
 
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <vector>
 

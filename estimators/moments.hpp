@@ -12,7 +12,7 @@
 
 #include <zdg/arith/escalate.hpp>
 #include <zdg/arith/integer.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <array>
 #include <vector>

@@ -1,6 +1,6 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/probing_normal.hpp>
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <algorithm>
 #include <array>

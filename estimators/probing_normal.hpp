@@ -5,12 +5,12 @@
 // PlaneProbingDigitalSurfaceLocalEstimator for the use on digital surfaces).
 //
 // At a surfel s (inner voxel I in X, outer voxel O = I + sigma e_a not in X; X the digitized
-// set, voxels outside the box are outside) the H- or R-algorithm of kernel/plane_probing.hpp
-// runs with the predicate "x is in the inner 26-boundary of X" (x in X with a 26-neighbour not
-// in X) from a tetrahedron built on s. On a digital half-space {N . x < c} the inner
-// 26-boundary is the standard plane {c - ||N||_1 <= N . x < c} (the pointels of the surface,
-// which DGtal's estimator probes, form such a plane too), and the runs from the start below
-// are those on the solid (same steps; kernel test); on a curved solid it keeps the rays of R
+// set, voxels outside the box are outside) the H- or R-algorithm of
+// kernel/surfaces/plane_probing.hpp runs with the predicate "x is in the inner 26-boundary of X" (x
+// in X with a 26-neighbour not in X) from a tetrahedron built on s. On a digital half-space {N . x
+// < c} the inner 26-boundary is the standard plane {c - ||N||_1 <= N . x < c} (the pointels of the
+// surface, which DGtal's estimator probes, form such a plane too), and the runs from the start
+// below are those on the solid (same steps; kernel test); on a curved solid it keeps the rays of R
 // near the surface instead of letting them cross the interior.
 // The start is built on s with the solid X:
 //   octant: for each choice of signs (s_b, s_c) of the two tangent axes, the frame
@@ -34,8 +34,8 @@
 // components, only the octant of N can end the walk (in any other one, q - u_k climbs), and
 // the walk ends at an apex with c <= N . q < c + min |N_k|. When N . q = c (always when some
 // |N_k| = 1) the run is the run on the standard plane of normal N from its lowest layer
-// (kernel/plane_probing.hpp) and the estimate is N exactly, at every surfel whose probes stay
-// inside the box; from a higher apex it need not be (JMIV 2020 starts the tetrahedron on the
+// (kernel/surfaces/plane_probing.hpp) and the estimate is N exactly, at every surfel whose probes
+// stay inside the box; from a higher apex it need not be (JMIV 2020 starts the tetrahedron on the
 // lowest layer, or uses its parallelepiped variant to start anywhere: not done here).
 // When a tangent component of N is zero or small, no octant walk ends (q - u_b stays at the
 // height of q: on a curved surface the walk slides along the outermost layer until the
@@ -64,8 +64,8 @@
 // rays of R on large sets).
 #pragma once
 
-#include <zdg/kernel/digital_surface.hpp>
-#include <zdg/kernel/plane_probing.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
+#include <zdg/kernel/surfaces/plane_probing.hpp>
 
 #include <cstddef>
 #include <cstdint>

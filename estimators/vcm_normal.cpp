@@ -1,9 +1,9 @@
 // Digital Voronoi covariance measure normals (see the header).
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/vcm_normal.hpp>
-#include <zdg/kernel/distance_transform.hpp>
-#include <zdg/kernel/image.hpp>
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/images/image.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
+#include <zdg/kernel/transforms/distance_transform.hpp>
 
 #include <Eigen/Eigenvalues>
 

@@ -20,8 +20,8 @@
 // c, oriented by the surfel's trivial normal.
 //
 // Algorithm: the exact squared Euclidean distance transform to K on the box of K grown by
-// ceil(R / h) + 1 (kernel/distance_transform.hpp, O(N) for N lattice points of the box); for
-// every p in K and every offset o with |o|^2 <= floor((R/h)^2), x = p + o belongs to the cell
+// ceil(R / h) + 1 (kernel/transforms/distance_transform.hpp, O(N) for N lattice points of the box);
+// for every p in K and every offset o with |o|^2 <= floor((R/h)^2), x = p + o belongs to the cell
 // of p iff DT(x) = |o|^2: one pass counts the nearest points of every x, a second adds
 // (1/m) o o^T to p's cell. Then, per surfel, the pointels within r of its centre are
 // enumerated in a dense index over the box. Time O(N + |K| (R/h)^3 + F (r/h)^3), memory
@@ -39,7 +39,7 @@
 #pragma once
 
 #include <zdg/arith/point.hpp>
-#include <zdg/kernel/cubical_cells.hpp>
+#include <zdg/kernel/surfaces/cubical_cells.hpp>
 
 #include <span>
 #include <vector>

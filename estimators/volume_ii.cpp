@@ -1,6 +1,6 @@
 #include <zdg/estimators/volume_ii.hpp>
 
-#include <zdg/kernel/parallel_for.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <algorithm>
 

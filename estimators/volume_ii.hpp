@@ -16,8 +16,8 @@
 #pragma once
 
 #include <zdg/estimators/ii_3d.hpp>
-#include <zdg/kernel/image.hpp>
-#include <zdg/kernel/image_surfels.hpp>
+#include <zdg/kernel/images/image.hpp>
+#include <zdg/kernel/surfaces/image_surfels.hpp>
 
 #include <cstdint>
 #include <vector>

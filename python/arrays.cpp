@@ -17,25 +17,25 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/volume_ii.hpp>
-#include <zdg/kernel/adjacency.hpp>
-#include <zdg/kernel/betti_numbers.hpp>
-#include <zdg/kernel/connected_components.hpp>
-#include <zdg/kernel/critical_kernel_thinning.hpp>
-#include <zdg/kernel/distance_transform.hpp>
-#include <zdg/kernel/homotopic_thinning.hpp>
-#include <zdg/kernel/image_surfaces.hpp>
-#include <zdg/kernel/image_surfels.hpp>
-#include <zdg/kernel/marching_cubes.hpp>
-#include <zdg/kernel/output_files.hpp>
-#include <zdg/kernel/populate_pages.hpp>
-#include <zdg/kernel/power_map.hpp>
-#include <zdg/kernel/primal_surface_mesh.hpp>
-#include <zdg/kernel/reduced_medial_axis.hpp>
-#include <zdg/kernel/reverse_distance_transform.hpp>
-#include <zdg/kernel/separable_engine.hpp>
-#include <zdg/kernel/skeleton_constraints.hpp>
-#include <zdg/kernel/volume_io.hpp>
-#include <zdg/kernel/voronoi_map.hpp>
+#include <zdg/kernel/io/output_files.hpp>
+#include <zdg/kernel/io/volume_io.hpp>
+#include <zdg/kernel/parallel/populate_pages.hpp>
+#include <zdg/kernel/surfaces/image_surfaces.hpp>
+#include <zdg/kernel/surfaces/image_surfels.hpp>
+#include <zdg/kernel/surfaces/marching_cubes.hpp>
+#include <zdg/kernel/surfaces/primal_surface_mesh.hpp>
+#include <zdg/kernel/topology/adjacency.hpp>
+#include <zdg/kernel/topology/betti_numbers.hpp>
+#include <zdg/kernel/topology/connected_components.hpp>
+#include <zdg/kernel/topology/critical_kernel_thinning.hpp>
+#include <zdg/kernel/topology/homotopic_thinning.hpp>
+#include <zdg/kernel/topology/skeleton_constraints.hpp>
+#include <zdg/kernel/transforms/distance_transform.hpp>
+#include <zdg/kernel/transforms/power_map.hpp>
+#include <zdg/kernel/transforms/reduced_medial_axis.hpp>
+#include <zdg/kernel/transforms/reverse_distance_transform.hpp>
+#include <zdg/kernel/transforms/separable_engine.hpp>
+#include <zdg/kernel/transforms/voronoi_map.hpp>
 
 #include <pybind11/stl.h>
 

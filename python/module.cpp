@@ -20,12 +20,12 @@
 #include <zdg/arith/stern_brocot.hpp>
 #include <zdg/convergence/config.hpp>
 #include <zdg/convergence/experiment.hpp>
-#include <zdg/kernel/convex_body_hull.hpp>
-#include <zdg/kernel/digital_plane_recognition.hpp>
-#include <zdg/kernel/lattice_hull_2d.hpp>
-#include <zdg/kernel/lattice_hull_3d.hpp>
-#include <zdg/kernel/maximal_segments.hpp>
-#include <zdg/kernel/plane_probing.hpp>
+#include <zdg/kernel/curves/maximal_segments.hpp>
+#include <zdg/kernel/hulls/convex_body_hull.hpp>
+#include <zdg/kernel/hulls/lattice_hull_2d.hpp>
+#include <zdg/kernel/hulls/lattice_hull_3d.hpp>
+#include <zdg/kernel/surfaces/digital_plane_recognition.hpp>
+#include <zdg/kernel/surfaces/plane_probing.hpp>
 
 #include <pybind11/stl.h>
 
@@ -572,7 +572,7 @@ PYBIND11_MODULE(_zdg, m) {
         "'integer_type'}.");
   m.def("recognize_plane", &recognize_plane_py, py::arg("points"),
         "Is a set of 3D integer points a naive digital plane segment (mu <= N.x < mu + "
-        "||N||_inf)? Exact, by the chord theorem (kernel/digital_plane_recognition.hpp). "
+        "||N||_inf)? Exact, by the chord theorem (kernel/surfaces/digital_plane_recognition.hpp). "
         "Returns {'is_plane', 'normal', 'mu', 'omega', 'integer_type'} (normal, mu, omega "
         "when is_plane).");
   m.def("probe_plane", &probe_plane_py, py::arg("a"), py::arg("b"), py::arg("c"),

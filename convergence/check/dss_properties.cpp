@@ -3,7 +3,7 @@
 #include <zdg/arith/dsl_subsegment.hpp>
 #include <zdg/arith/dss_recognizer.hpp>
 #include <zdg/convergence/check/property.hpp>
-#include <zdg/kernel/maximal_segments.hpp>
+#include <zdg/kernel/curves/maximal_segments.hpp>
 
 #include <array>
 #include <cstdlib>

@@ -2,9 +2,9 @@
 // disc, against brute force (edge tests, enumeration) and Pick's theorem.
 #include <zdg/arith/rational.hpp>
 #include <zdg/convergence/check/property.hpp>
-#include <zdg/kernel/convex_body_hull.hpp>
-#include <zdg/kernel/lattice_hull_2d.hpp>
-#include <zdg/kernel/lattice_polygon.hpp>
+#include <zdg/kernel/hulls/convex_body_hull.hpp>
+#include <zdg/kernel/hulls/lattice_hull_2d.hpp>
+#include <zdg/kernel/hulls/lattice_polygon.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -70,7 +70,7 @@ std::vector<BigInt> flat(const std::vector<P>& v) {
   return out;
 }
 
-// Shoelace and gcd counts (same degenerate conventions as kernel/lattice_polygon.hpp: a point
+// Shoelace and gcd counts (same degenerate conventions as kernel/hulls/lattice_polygon.hpp: a point
 // has boundary 1, a segment gcd + 1).
 std::pair<BigInt, BigInt> area2_and_boundary(const std::vector<P>& v) {
   if (v.size() == 1) return {BigInt(0), BigInt(1)};

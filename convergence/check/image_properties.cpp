@@ -1,15 +1,15 @@
 // The image family of zdg check: distance transforms, simple points, Betti numbers of small
 // binary images, against brute force and definitions written here from the literature.
 #include <zdg/convergence/check/property.hpp>
-#include <zdg/kernel/adjacency.hpp>
-#include <zdg/kernel/betti_numbers.hpp>
-#include <zdg/kernel/distance_transform.hpp>
-#include <zdg/kernel/homotopic_thinning.hpp>
-#include <zdg/kernel/image.hpp>
-#include <zdg/kernel/image_surfaces.hpp>
-#include <zdg/kernel/image_surfels.hpp>
-#include <zdg/kernel/simple_points.hpp>
-#include <zdg/kernel/voronoi_map.hpp>
+#include <zdg/kernel/images/image.hpp>
+#include <zdg/kernel/surfaces/image_surfaces.hpp>
+#include <zdg/kernel/surfaces/image_surfels.hpp>
+#include <zdg/kernel/topology/adjacency.hpp>
+#include <zdg/kernel/topology/betti_numbers.hpp>
+#include <zdg/kernel/topology/homotopic_thinning.hpp>
+#include <zdg/kernel/topology/simple_points.hpp>
+#include <zdg/kernel/transforms/distance_transform.hpp>
+#include <zdg/kernel/transforms/voronoi_map.hpp>
 
 #include <array>
 #include <cstdlib>
@@ -220,12 +220,12 @@ std::int64_t count_components_bfs(const Image<std::uint8_t>& img, int k, bool ob
   return count;
 }
 
-// chi of the cell complex of the pair (kernel/betti_numbers.hpp), by counting its cells on the
-// doubled grid: a cell has doubled coordinates c; for the union of closed unit cubes centred
-// at the points (8,4 / 26,6) the cell is in the complex iff some point p with |2 p - c| <= 1
-// on every axis is in X, and its dimension is the number of even coordinates; for the complex
-// on the points (4,8 / 6,26) the cell is in iff all its corners are in X, and its dimension is
-// the number of odd coordinates. chi = sum of (-1)^dim.
+// chi of the cell complex of the pair (kernel/topology/betti_numbers.hpp), by counting its cells on
+// the doubled grid: a cell has doubled coordinates c; for the union of closed unit cubes centred at
+// the points (8,4 / 26,6) the cell is in the complex iff some point p with |2 p - c| <= 1 on every
+// axis is in X, and its dimension is the number of even coordinates; for the complex on the points
+// (4,8 / 6,26) the cell is in iff all its corners are in X, and its dimension is the number of odd
+// coordinates. chi = sum of (-1)^dim.
 std::int64_t euler_by_cells(const Image<std::uint8_t>& img, bool cubes) {
   const Domain& d = img.domain();
   const int dim = d.dim();
@@ -494,8 +494,8 @@ Record skeleton_compute(const Record& c, IntKind) {
   return r.array("betti", {nb}, std::move(b));
 }
 
-// The configuration of point i of a 2D or 3D image (bits of kernel/simple_points.hpp; outside:
-// background), read here point by point.
+// The configuration of point i of a 2D or 3D image (bits of kernel/topology/simple_points.hpp;
+// outside: background), read here point by point.
 std::uint32_t configuration_at(const Image<std::uint8_t>& img, std::int64_t i) {
   const Domain& d = img.domain();
   const int dim = d.dim();

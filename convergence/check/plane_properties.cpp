@@ -1,7 +1,7 @@
 // The plane family of zdg check: plane-probing algorithms on standard digital planes, against
 // the theorem that they recover the normal exactly.
 #include <zdg/convergence/check/property.hpp>
-#include <zdg/kernel/plane_probing.hpp>
+#include <zdg/kernel/surfaces/plane_probing.hpp>
 
 #include <array>
 #include <numeric>

@@ -15,8 +15,8 @@
 // (cheap: well under a millisecond per case; moderate: about a millisecond; heavy: more).
 //
 // Campaign (run_check): case k is generated from case_seed(seed, k) (convergence/check/
-// check_rng.hpp) and evaluated; cases are spread over T threads (kernel/parallel_for.hpp), a
-// failure stops the others at the next case whose index exceeds it, so the reported failure is
+// check_rng.hpp) and evaluated; cases are spread over T threads (kernel/parallel/parallel_for.hpp),
+// a failure stops the others at the next case whose index exceeds it, so the reported failure is
 // the first failing index whatever T (deterministic, unless the time budget cut the run). The
 // failing case is then shrunk greedily (convergence/check/record.hpp) while it stays valid and
 // failing. A replay token "TYPE.BITS.MAXSIZE.SEED16HEX" regenerates the failing case alone.

@@ -1,7 +1,7 @@
 #include <zdg/convergence/shapes_2d.hpp>
 
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include <gtest/gtest.h>
 

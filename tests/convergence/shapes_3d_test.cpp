@@ -2,7 +2,7 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/gauss_volume.hpp>
-#include <zdg/kernel/polynomial.hpp>
+#include <zdg/kernel/digitization/polynomial.hpp>
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/ambrosio_tortorelli.hpp>
 #include <zdg/estimators/ii_3d.hpp>
-#include <zdg/kernel/digital_surface.hpp>
-#include <zdg/kernel/surfel_complex.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
+#include <zdg/kernel/surfaces/surfel_complex.hpp>
 
 #include "tests/support/tower.hpp"
 

@@ -11,7 +11,7 @@
 // - R = k l^2 h; bad input (no segment, k or h not positive) is refused.
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/ii_auto_radius.hpp>
-#include <zdg/kernel/maximal_segments.hpp>
+#include <zdg/kernel/curves/maximal_segments.hpp>
 
 #include "tests/support/dss_oracle.hpp"
 
@@ -87,8 +87,8 @@ struct BruteSum {
       ++segments;
     }
   }
-  // The same sums from the tangential cover (kernel/maximal_segments.hpp, checked against the
-  // brute force above).
+  // The same sums from the tangential cover (kernel/curves/maximal_segments.hpp, checked against
+  // the brute force above).
   void add_cover(const DigitalContour& c) {
     for (const auto& s : maximal_segments_exact(c.pointels(), true, Connectivity::four).value) {
       total += static_cast<std::int64_t>(s.length) - 1;

@@ -3,8 +3,8 @@
 // operators: no free lunch", SGP 2007, for the list of properties), measured here on the same
 // digital surfaces for the heat-kernel operator (estimators/heat_laplace_beltrami.hpp), the
 // cotangent Laplacian of the triangulated primal surface and the combinatorial Laplacian
-// (kernel/cotan_laplacian.hpp) and the cotangent Laplacian of the marching-cubes mesh
-// (kernel/marching_cubes.hpp). Each property is measured, printed as one row of the table
+// (kernel/linalg/cotan_laplacian.hpp) and the cotangent Laplacian of the marching-cubes mesh
+// (kernel/surfaces/marching_cubes.hpp). Each property is measured, printed as one row of the table
 // (papers/lb-digital/README.md quotes it) and checked against what the operator's theory says:
 //   constants   max |L 1|                                  (all: 0)
 //   symmetry    max |M_i L_ij - M_j L_ji| / max |M L|        (all: 0 for their mass M)
@@ -19,8 +19,8 @@
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
-#include <zdg/kernel/cotan_laplacian.hpp>
-#include <zdg/kernel/marching_cubes.hpp>
+#include <zdg/kernel/linalg/cotan_laplacian.hpp>
+#include <zdg/kernel/surfaces/marching_cubes.hpp>
 
 #include "tests/support/digital_sphere.hpp"
 

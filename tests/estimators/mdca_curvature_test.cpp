@@ -4,7 +4,7 @@
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/convergence/fit.hpp>
 #include <zdg/convergence/shape.hpp>
-#include <zdg/kernel/digital_contour.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
 
 #include "tests/support/predicate_contour.hpp"
 

@@ -6,9 +6,9 @@
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
-#include <zdg/kernel/cotan_laplacian.hpp>
-#include <zdg/kernel/digital_surface.hpp>
-#include <zdg/kernel/surfel_complex.hpp>
+#include <zdg/kernel/linalg/cotan_laplacian.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
+#include <zdg/kernel/surfaces/surfel_complex.hpp>
 
 #include "tests/support/digital_sphere.hpp"
 

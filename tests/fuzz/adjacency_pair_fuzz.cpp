@@ -1,7 +1,7 @@
-// Fuzz target: parse_adjacency_pair (kernel/adjacency.hpp) on arbitrary text, in 2D and 3D.
-// Either a pair comes back, admissible and printed back to itself, or InvalidArgument.
+// Fuzz target: parse_adjacency_pair (kernel/topology/adjacency.hpp) on arbitrary text, in 2D and
+// 3D. Either a pair comes back, admissible and printed back to itself, or InvalidArgument.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/adjacency.hpp>
+#include <zdg/kernel/topology/adjacency.hpp>
 
 #include <cstddef>
 #include <cstdint>

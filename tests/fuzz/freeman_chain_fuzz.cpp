@@ -1,8 +1,8 @@
-// Fuzz target: Freeman chains "x0 y0 codes" (kernel/freeman_chain.hpp). A chain that parses
+// Fuzz target: Freeman chains "x0 y0 codes" (kernel/curves/freeman_chain.hpp). A chain that parses
 // prints back to text that parses to the same chain, and its points (when they stay in int64)
 // give the same chain back.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/freeman_chain.hpp>
+#include <zdg/kernel/curves/freeman_chain.hpp>
 
 #include <cstddef>
 #include <cstdint>

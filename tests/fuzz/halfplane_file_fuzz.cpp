@@ -1,7 +1,7 @@
-// Fuzz target: half-plane files "a b c" (kernel/halfplane_file.hpp), the input of
+// Fuzz target: half-plane files "a b c" (kernel/io/halfplane_file.hpp), the input of
 // `zdg hull halfplanes`.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/halfplane_file.hpp>
+#include <zdg/kernel/io/halfplane_file.hpp>
 
 #include <cstddef>
 #include <cstdint>

@@ -3,7 +3,7 @@
 // gzip-compressed into a .nii.gz (so that the header is reached through zlib too); even, the
 // rest is written as a .nii. Every input must end in a volume or a zdg::Error.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/nifti_io.hpp>
+#include <zdg/kernel/io/nifti_io.hpp>
 
 #include <zlib.h>
 

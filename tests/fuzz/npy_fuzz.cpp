@@ -1,7 +1,7 @@
-// Fuzz target: the .npy reader on the bytes of a file (kernel/npy_io.hpp parse_npy). An array
+// Fuzz target: the .npy reader on the bytes of a file (kernel/io/npy_io.hpp parse_npy). An array
 // it accepts must survive the conversions the commands apply and a write/read round trip.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/npy_io.hpp>
+#include <zdg/kernel/io/npy_io.hpp>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Fuzz target: the small parsers behind the command-line option values (and the same TOML
-// keys): --metric (kernel/lp_metric.hpp parse_metric), --h (parse_grid_steps), --box
+// keys): --metric (kernel/transforms/lp_metric.hpp parse_metric), --h (parse_grid_steps), --box
 // (parse_box), --k per shape (parse_k_per_shape), --estimator NAME[:KEY=VALUE,...]
 // (parse_estimator_spec), --raw-shape (parse_raw_shape), --skeleton (parse_skeleton_kind) and
 // the finite reals and bounded integers of every other option (convergence/number_text.hpp).
@@ -9,9 +9,9 @@
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/convergence/experiment.hpp>
 #include <zdg/convergence/number_text.hpp>
-#include <zdg/kernel/lp_metric.hpp>
-#include <zdg/kernel/raw_io.hpp>
-#include <zdg/kernel/skeleton_constraints.hpp>
+#include <zdg/kernel/io/raw_io.hpp>
+#include <zdg/kernel/topology/skeleton_constraints.hpp>
+#include <zdg/kernel/transforms/lp_metric.hpp>
 
 #include <cmath>
 #include <cstddef>

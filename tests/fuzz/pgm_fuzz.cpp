@@ -1,6 +1,6 @@
-// Fuzz target: the PGM reader on the bytes of a file (kernel/pgm_io.hpp parse_pgm).
+// Fuzz target: the PGM reader on the bytes of a file (kernel/io/pgm_io.hpp parse_pgm).
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/pgm_io.hpp>
+#include <zdg/kernel/io/pgm_io.hpp>
 
 #include <cstddef>
 #include <cstdint>

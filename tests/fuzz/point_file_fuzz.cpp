@@ -1,7 +1,7 @@
-// Fuzz target: point files and digital path files (kernel/point_file.hpp), the inputs of
+// Fuzz target: point files and digital path files (kernel/io/point_file.hpp), the inputs of
 // `zdg hull points` and `zdg dss`.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/point_file.hpp>
+#include <zdg/kernel/io/point_file.hpp>
 
 #include <cstddef>
 #include <cstdint>

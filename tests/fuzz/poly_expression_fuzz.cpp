@@ -1,11 +1,12 @@
-// Fuzz target: `poly:` expressions (kernel/polynomial.hpp), in 2 variables when the first byte
-// is even, 3 otherwise. Expected outcomes: a polynomial, or zdg::InvalidArgument (bounded
-// nesting, degree and work). On success the filtered sign (kernel/polynomial_sign.hpp) at a
-// few grid points must agree with the exact Rational<BigInt> sign (checked for small
-// polynomials, where the exact evaluation is cheap): a disagreement traps.
+// Fuzz target: `poly:` expressions (kernel/digitization/polynomial.hpp), in 2 variables when the
+// first byte is even, 3 otherwise. Expected outcomes: a polynomial, or zdg::InvalidArgument
+// (bounded nesting, degree and work). On success the filtered sign
+// (kernel/digitization/polynomial_sign.hpp) at a few grid points must agree with the exact
+// Rational<BigInt> sign (checked for small polynomials, where the exact evaluation is cheap): a
+// disagreement traps.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/polynomial.hpp>
-#include <zdg/kernel/polynomial_sign.hpp>
+#include <zdg/kernel/digitization/polynomial.hpp>
+#include <zdg/kernel/digitization/polynomial_sign.hpp>
 
 #include <array>
 #include <cstddef>

@@ -2,7 +2,7 @@
 // (three extents in 1..16, or two when the third byte is 0, and the dtype); the rest is the
 // file. Every input must end in a volume or a zdg::Error.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/raw_io.hpp>
+#include <zdg/kernel/io/raw_io.hpp>
 
 #include <cstddef>
 #include <cstdint>

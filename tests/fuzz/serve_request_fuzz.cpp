@@ -1,11 +1,11 @@
-// Fuzz target: the request lines of zdg serve (convergence/cli/serve.hpp serve_answer, the
+// Fuzz target: the request lines of zdg serve (cli/serve.hpp serve_answer, the
 // line-JSON protocol of zdg check --against). The first byte picks the operation among those
 // whose work is bounded by the size of the request; the rest is the line. Expected outcome:
 // one line of JSON, an object (the answer or {"error": ...}), never an exception. The
 // operations left out (christoffel, hull disc, plane probe) do work that grows with the
 // values asked for (a word of p + q letters, a disc of radius r, ||N||_1 probing steps):
 // their callers bound it (zdg check by the sizes it generates and --request-timeout).
-#include <zdg/convergence/cli/serve.hpp>
+#include <zdg/cli/serve.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -2,7 +2,7 @@
 // an image or a zdg::Error; a crash, a sanitizer report, a leak or an allocation the file's
 // size cannot justify is a bug.
 #include <zdg/arith/error.hpp>
-#include <zdg/kernel/vol_io.hpp>
+#include <zdg/kernel/io/vol_io.hpp>
 
 #include <cstddef>
 #include <cstdint>

@@ -3,7 +3,7 @@
 // disc, annulus) on int64 predicates.
 #pragma once
 
-#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/images/image.hpp>
 
 #include <rapidcheck.h>
 

@@ -1,6 +1,6 @@
 // Test support: brute-force homology over Z/2 of the cell complex that stands for the object
-// of a small binary image under an adjacency pair (kernel/betti_numbers.hpp lists them; Kong
-// and Rosenfeld, CVGIP 48, 1989, sec. 5):
+// of a small binary image under an adjacency pair (kernel/topology/betti_numbers.hpp lists them;
+// Kong and Rosenfeld, CVGIP 48, 1989, sec. 5):
 //   (8,4), (26,6): the union of the closed unit squares / cubes centred at the object points,
 //                  as a cubical complex in Khalimsky coordinates (a cell k belongs to it when
 //                  one of the pixels / voxels whose closure contains it is in the object);
@@ -14,8 +14,8 @@
 // on bit columns. Cubic in the number of cells: meant for images of a few hundred points.
 #pragma once
 
-#include <zdg/kernel/adjacency.hpp>
-#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/images/image.hpp>
+#include <zdg/kernel/topology/adjacency.hpp>
 
 #include <array>
 #include <bit>

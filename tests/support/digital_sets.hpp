@@ -1,9 +1,9 @@
 // Test support: digitized discs and balls given by exact integer predicates.
 #pragma once
 
-#include <zdg/kernel/cubical_cells.hpp>
-#include <zdg/kernel/digital_surface.hpp>
-#include <zdg/kernel/gauss_digitization.hpp>
+#include <zdg/kernel/digitization/gauss_digitization.hpp>
+#include <zdg/kernel/surfaces/cubical_cells.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
 
 #include <cstdint>
 

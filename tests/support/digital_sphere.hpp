@@ -5,8 +5,8 @@
 
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/ii_3d.hpp>
-#include <zdg/kernel/digital_surface.hpp>
-#include <zdg/kernel/surfel_complex.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
+#include <zdg/kernel/surfaces/surfel_complex.hpp>
 
 #include <cmath>
 #include <cstdint>

@@ -2,8 +2,8 @@
 // surfels, vectors and voxel predicates, for the invariance tests of the surface estimators.
 #pragma once
 
-#include <zdg/kernel/cubical_cells.hpp>
-#include <zdg/kernel/digital_surface.hpp>
+#include <zdg/kernel/surfaces/cubical_cells.hpp>
+#include <zdg/kernel/surfaces/digital_surface.hpp>
 
 #include <algorithm>
 #include <array>

@@ -10,7 +10,7 @@
 //                           faces run it u -> v and how many v -> u
 #pragma once
 
-#include <zdg/kernel/mesh.hpp>
+#include <zdg/kernel/surfaces/mesh.hpp>
 
 #include <cstdint>
 #include <map>

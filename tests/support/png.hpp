@@ -4,7 +4,7 @@
 //   const RgbImage img = zdg::test::decode_png(dir / "a.png");
 #pragma once
 
-#include <zdg/kernel/picture.hpp>
+#include <zdg/kernel/render/picture.hpp>
 
 #include <gtest/gtest.h>
 #include <png.h>

@@ -3,8 +3,8 @@
 // implicit shape and a grid step.
 #pragma once
 
-#include <zdg/kernel/digital_contour.hpp>
-#include <zdg/kernel/gauss_digitization.hpp>
+#include <zdg/kernel/curves/digital_contour.hpp>
+#include <zdg/kernel/digitization/gauss_digitization.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
 // Test support: characterizations of simple points written independently of
-// kernel/simple_points.cpp (no bit tricks, no shared code beyond the configuration layout).
+// kernel/topology/simple_points.cpp (no bit tricks, no shared code beyond the configuration
+// layout).
 //
 // - geodesic_topological_numbers: Bertrand's definition ("Simple points, topological numbers
 //   and geodesic neighborhoods in cubic grids", PRL 15, 1994) by explicit breadth-first

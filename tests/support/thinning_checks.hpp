@@ -4,8 +4,8 @@
 
 #include "tests/support/binary_images.hpp"
 #include "tests/support/cubical_homology.hpp"
-#include <zdg/kernel/simple_points.hpp>
-#include <zdg/kernel/skeleton_constraints.hpp>
+#include <zdg/kernel/topology/simple_points.hpp>
+#include <zdg/kernel/topology/skeleton_constraints.hpp>
 
 #include <rapidcheck.h>
 

@@ -1,11 +1,11 @@
 // A team of P ranks as P threads of one process, for testing the distributed transforms
-// (kernel/distributed_transform.hpp) without an MPI launcher: the collective operations of
-// RankExchange through shared memory and a barrier.
+// (kernel/transforms/distributed_transform.hpp) without an MPI launcher: the collective operations
+// of RankExchange through shared memory and a barrier.
 //
 //   zdg::test::run_team(3, [&](zdg::RankExchange& ex) { ... ex.rank() ... });
 #pragma once
 
-#include <zdg/kernel/distributed_transform.hpp>
+#include <zdg/kernel/transforms/distributed_transform.hpp>
 
 #include <algorithm>
 #include <atomic>

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <zdg/arith/integer.hpp>
-#include <zdg/kernel/image.hpp>
-#include <zdg/kernel/lp_metric.hpp>
+#include <zdg/kernel/images/image.hpp>
+#include <zdg/kernel/transforms/lp_metric.hpp>
 
 #include <rapidcheck.h>
 

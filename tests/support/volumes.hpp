@@ -3,9 +3,9 @@
 // and the Betti numbers of the brute-force homology oracle (tests/support/cubical_homology.hpp).
 #pragma once
 
-#include <zdg/kernel/image.hpp>
+#include <zdg/kernel/images/image.hpp>
 
-#include <zdg/kernel/adjacency.hpp>
+#include <zdg/kernel/topology/adjacency.hpp>
 
 #include "tests/support/cubical_homology.hpp"
 

@@ -4,7 +4,7 @@
 // live in kernel/; these are deliberately naive and independent of them.)
 #pragma once
 
-#include <zdg/kernel/mesh.hpp>
+#include <zdg/kernel/surfaces/mesh.hpp>
 
 #include <cmath>
 #include <cstdint>

@@ -1,0 +1,46 @@
+// The zdg command line: one program, subcommands registered by add_*_commands(). Only the
+// files of cli/ include CLI11 and nlohmann-json (precompiled once for them).
+//
+// Conventions every subcommand follows (DESIGN.md, "Command line"):
+// - `--json` prints machine-readable output on stdout; integers that may exceed 64 bits are
+//   decimal strings;
+// - bad input throws zdg::Error (or a CLI11 parse error): main() prints one line
+//   "zdg: <what was wrong>" on stderr and exits with status 2 (also for the standard
+//   exceptions of the environment: filesystem and system errors, out of memory); any other
+//   exception is a bug: "zdg: internal error: ..." and status 3 (main.cpp);
+// - numbers are read by zdg::parse_integer / parse_rational (decimal; main() routes every
+//   integer option through parse_integer);
+// - every file a command writes goes through an OutputSet (kernel/io/output_files.hpp): checked
+//   before any work, refused when it exists unless --force, staged and renamed at the end;
+// - bad-input rows for a new command go to tests/cli/contract_test.cpp;
+// - a subcommand that finishes but whose checks fail (a theory check, for instance) sets
+//   Context::exit_code to 1.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace zdg::cli {
+
+struct Context {
+  int exit_code = 0;
+};
+
+void add_arith_commands(CLI::App& app, Context& ctx);
+void add_dss_commands(CLI::App& app, Context& ctx);
+void add_converge_commands(CLI::App& app, Context& ctx);
+void add_transform_commands(CLI::App& app, Context& ctx);
+void add_hull_commands(CLI::App& app, Context& ctx);
+void add_convert_commands(CLI::App& app, Context& ctx);
+void add_topology_commands(CLI::App& app, Context& ctx);
+void add_surface_commands(CLI::App& app, Context& ctx);
+void add_plane_commands(CLI::App& app, Context& ctx);
+void add_check_commands(CLI::App& app, Context& ctx);
+void add_serve_commands(CLI::App& app, Context& ctx);
+
+/// Prints j on stdout (two-space indent), followed by a newline.
+void print_json(const nlohmann::json& j);
+
+} // namespace zdg::cli

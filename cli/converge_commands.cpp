@@ -1,0 +1,506 @@
+// zdg converge and zdg paper: multigrid convergence experiments on the command line.
+//
+//   zdg converge --shape ellipse:20,7 --estimator ii-curvature --h 0.1:0.01:6 --k 5 -o DIR
+//   zdg converge --shape flower:20,7,6 --estimator ii-curvature:k=5
+//                --estimator bc-curvature:alpha=14/9 --h exp:30:60:3 -o DIR
+//   zdg converge --shape sphere9 --estimator lb-heat --function 'x^2-y^2' --h 2:0.5:3
+//   zdg converge CONFIG.toml -o DIR          (same keys as the flags: shape, estimator, h,
+//                                            k, alpha, translations, seed, box, fit_levels,
+//                                            threads, tolerance, title; convergence/config.hpp)
+//   zdg converge --list
+//
+// Flags and TOML files are read into the same settings and validated by one function
+// (validate_experiment_settings): a flag given on the command line overrides the file.
+//   zdg paper cviu2014-ii2d -o DIR [--quick]
+//
+// Outputs in DIR: results.csv, summary.json (fits, verdicts, provenance), convergence.png
+// and .svg (papers/plot_convergence.py, run with /usr/bin/python3). Exit status 1 when a
+// theory check fails, 2 for bad input.
+#include <zdg/arith/error.hpp>
+#include <zdg/cli/commands.hpp>
+#include <zdg/convergence/config.hpp>
+#include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/experiment.hpp>
+#include <zdg/convergence/shape.hpp>
+#include <zdg/kernel/io/output_files.hpp>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <unistd.h>
+
+namespace zdg::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The flags as written (text; checked with the TOML values by validate_experiment_settings).
+struct ConvergeOptions {
+  std::string config_file;
+  std::vector<std::string> shapes, estimators, functions;
+  std::optional<std::string> h, k, alpha, box, title, translations, fit_levels, threads, seed,
+      tolerance;
+  std::string output;
+  bool json = false, quiet = false, list = false, force = false, no_plot = false;
+};
+
+std::string source_dir() {
+  if (const char* env = std::getenv("ZDG_SOURCE_DIR")) return env;
+#ifdef ZDG_SOURCE_DIR
+  return ZDG_SOURCE_DIR;
+#else
+  return ".";
+#endif
+}
+
+std::string git_commit() {
+  std::string cmd = "git -C '" + source_dir() + "' rev-parse HEAD 2>/dev/null";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
+  if (!pipe) return "unknown";
+  std::array<char, 128> buf{};
+  std::string out;
+  while (fgets(buf.data(), buf.size(), pipe.get()) != nullptr) out += buf.data();
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out.empty() ? "unknown" : out;
+}
+
+std::string compiler() {
+#if defined(__clang__)
+  return "clang " __clang_version__;
+#elif defined(__GNUC__)
+  return "gcc " __VERSION__;
+#else
+  return "unknown";
+#endif
+}
+
+// The flags as settings, then the file's settings for what the flags do not give, then the
+// one validation.
+ExperimentConfig make_config(const ConvergeOptions& o) {
+  ExperimentSettings s;
+  for (const auto& x : o.shapes) s.shapes.push_back({x, "--shape"});
+  for (const auto& x : o.estimators) s.estimators.push_back({x, "--estimator"});
+  for (const auto& x : o.functions) s.functions.push_back({x, "--function"});
+  const std::pair<const std::optional<std::string>*, std::optional<Setting> ExperimentSettings::*>
+      flags[] = {{&o.h, &ExperimentSettings::h},
+                 {&o.k, &ExperimentSettings::k},
+                 {&o.alpha, &ExperimentSettings::alpha},
+                 {&o.box, &ExperimentSettings::box},
+                 {&o.title, &ExperimentSettings::title},
+                 {&o.translations, &ExperimentSettings::translations},
+                 {&o.seed, &ExperimentSettings::seed},
+                 {&o.fit_levels, &ExperimentSettings::fit_levels},
+                 {&o.threads, &ExperimentSettings::threads},
+                 {&o.tolerance, &ExperimentSettings::tolerance}};
+  const char* names[] = {
+      "--h",    "--k",          "--alpha",   "--box",      "--title", "--translations",
+      "--seed", "--fit-levels", "--threads", "--tolerance"};
+  for (std::size_t i = 0; i < std::size(flags); ++i) {
+    if (*flags[i].first) s.*flags[i].second = Setting{**flags[i].first, names[i]};
+  }
+  if (!o.config_file.empty()) {
+    std::ifstream in(o.config_file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in) throw IoError("cannot read '" + o.config_file + "'");
+    s.fill_from(parse_experiment_toml(text.str(), o.config_file));
+  }
+  return validate_experiment_settings(s);
+}
+
+nlohmann::json json_number(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json runs_json(const ExperimentResult& r) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const auto& x : r.runs) {
+    runs.push_back({{"shape", x.shape},
+                    {"estimator", x.estimator},
+                    {"h", x.h},
+                    {"translation", x.translation},
+                    {"offset", x.offset},
+                    {"k", x.k},
+                    {"alpha", x.alpha},
+                    {"linf", json_number(x.errors.linf)},
+                    {"l2", json_number(x.errors.l2)},
+                    {"mean", json_number(x.errors.mean)},
+                    {"n", x.errors.n},
+                    {"seconds", x.seconds}});
+  }
+  return runs;
+}
+
+nlohmann::json fits_json(const ExperimentResult& r) {
+  nlohmann::json fits = nlohmann::json::array();
+  for (const auto& f : r.fits) {
+    nlohmann::json j{{"shape", f.shape},
+                     {"estimator", f.estimator},
+                     {"norm", f.norm},
+                     {"slope", json_number(f.fit.slope)},
+                     {"stderr", json_number(f.fit.stderr_slope)},
+                     {"intercept", json_number(f.fit.intercept)},
+                     {"levels", f.fit.n},
+                     {"h_min", f.hs.empty() ? 0.0 : f.hs.back()},
+                     {"h_max", f.hs.empty() ? 0.0 : f.hs.front()},
+                     {"expected", f.expected ? nlohmann::json(*f.expected) : nlohmann::json()},
+                     {"pass", f.pass ? nlohmann::json(*f.pass) : nlohmann::json()}};
+    if (f.expected) {
+      j["theory"] = f.theory;
+      j["hypotheses"] = f.hypotheses;
+      j["source"] = f.source;
+    }
+    fits.push_back(j);
+  }
+  return fits;
+}
+
+// Each estimator entry: its label (the name in results.csv and the fits), the registry
+// estimator and the parameters it ran with.
+nlohmann::json entries_json(const ExperimentResult& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& e : r.entries) {
+    nlohmann::json params = nlohmann::json::object();
+    for (const auto& p : e.estimator->parameters) {
+      if (p.check_text) {
+        params[p.name] = e.parameters.function;
+      } else {
+        params[p.name] = p.name == "k"        ? e.parameters.k
+                         : p.name == "degree" ? e.parameters.degree
+                                              : e.parameters.alpha;
+      }
+    }
+    out.push_back({{"label", e.label}, {"estimator", e.estimator->name}, {"parameters", params}});
+  }
+  return out;
+}
+
+nlohmann::json config_json(const ExperimentConfig& c, const ExperimentResult& r,
+                           const ConvergeOptions& o) {
+  return {{"shapes", c.shapes},
+          {"estimators", c.estimators},
+          {"functions", c.functions},
+          {"entries", entries_json(r)},
+          {"h", c.h_text},
+          {"hs", c.hs},
+          {"k", c.k_text ? nlohmann::json(*c.k_text) : nlohmann::json()},
+          {"alpha", c.alpha_text ? nlohmann::json(*c.alpha_text) : nlohmann::json()},
+          {"translations", c.translations},
+          {"seed", c.seed},
+          {"box", c.box ? nlohmann::json({c.box->first, c.box->second}) : nlohmann::json()},
+          {"fit_levels", c.fit_levels},
+          {"tolerance", c.tolerance},
+          {"threads", c.threads},
+          {"title", c.title},
+          {"config_file", o.config_file}};
+}
+
+// Writes text to a staging file of an OutputSet.
+void write_text(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw IoError("cannot write '" + path.string() + "'");
+  out << text;
+  out.flush();
+  if (!out) throw IoError("cannot write '" + path.string() + "' (disk full?)");
+}
+
+std::string parameters_text(const Estimator& e) {
+  if (e.parameters.empty()) return "none";
+  std::string out;
+  for (const auto& p : e.parameters) {
+    out += (out.empty() ? "" : ", ") + p.name + " = " + p.default_text + " (" + p.meaning + ")";
+  }
+  return out;
+}
+
+// The outputs of a run in DIR (results.csv, summary.json, convergence.png and .svg): checked
+// before any work, written to staging files, moved in place together at the end
+// (kernel/io/output_files.hpp). A DIR created for the run is removed again when the run fails.
+class ConvergeOutputs {
+public:
+  ConvergeOutputs(const std::string& output, bool force, bool plot) : dir_(output) {
+    if (fs::exists(dir_) && !fs::is_directory(dir_)) {
+      throw IoError("'" + output + "' exists and is not a directory");
+    }
+    if (!fs::exists(dir_)) {
+      // The first missing ancestor is what this run creates (and removes on failure).
+      fs::path top = dir_;
+      while (top.has_parent_path() && !top.parent_path().empty() && !fs::exists(top.parent_path()))
+        top = top.parent_path();
+      fs::create_directories(dir_);
+      created_ = top;
+    }
+    try {
+      set_ = std::make_unique<OutputSet>(force ? Existing::replace : Existing::refuse);
+      csv_ = set_->add(dir_ / "results.csv");
+      json_ = set_->add(dir_ / "summary.json");
+      if (plot) {
+        png_ = set_->add(dir_ / "convergence.png");
+        svg_ = set_->add(dir_ / "convergence.svg");
+      }
+    } catch (...) {
+      discard();
+      throw;
+    }
+  }
+  ~ConvergeOutputs() {
+    if (!committed_) discard();
+  }
+  ConvergeOutputs(const ConvergeOutputs&) = delete;
+  ConvergeOutputs& operator=(const ConvergeOutputs&) = delete;
+
+  const fs::path& dir() const { return dir_; }
+
+  // Writes everything to the staging files, draws the plot from them, then commits. A plot
+  // that cannot be drawn is a warning: its outputs are left as they were. Returns whether
+  // the plot was drawn.
+  bool write(const std::string& csv, const std::string& summary) {
+    write_text(csv_, csv);
+    write_text(json_, summary);
+    if (!png_.empty()) {
+      const std::string script = source_dir() + "/papers/plot_convergence.py";
+      auto q = [](const fs::path& p) { // a shell word: '...' with each ' as '\''
+        std::string w = "'";
+        for (char c : p.string()) w += c == '\'' ? std::string("'\\''") : std::string(1, c);
+        return w + "'";
+      };
+      const std::string cmd = "/usr/bin/python3 " + q(script) + " --csv " + q(csv_) +
+                              " --summary " + q(json_) + " --png " + q(png_) + " --svg " + q(svg_) +
+                              " >/dev/null 2>&1";
+      if (!fs::exists(script) || std::system(cmd.c_str()) != 0 || !fs::exists(png_) ||
+          !fs::exists(svg_)) {
+        std::cerr << "zdg: warning: the plot could not be drawn (" << script
+                  << " with /usr/bin/python3 and matplotlib); convergence.png and .svg left "
+                     "as they were\n";
+        set_->drop(dir_ / "convergence.png");
+        set_->drop(dir_ / "convergence.svg");
+      }
+    }
+    set_->commit();
+    committed_ = true;
+    return !png_.empty() && fs::exists(dir_ / "convergence.png");
+  }
+
+private:
+  fs::path dir_, created_;
+
+  void discard() {
+    set_.reset(); // the staging files first
+    if (!created_.empty()) {
+      std::error_code ec;
+      fs::remove_all(created_, ec);
+    }
+  }
+  std::unique_ptr<OutputSet> set_;
+  fs::path csv_, json_, png_, svg_;
+  bool committed_ = false;
+};
+
+void print_list() {
+  std::cout << "shapes:\n";
+  for (const auto& k : shape_kinds()) {
+    std::cout << "  " << std::left << std::setw(26) << k.syntax << k.dimension << "D  "
+              << k.description << '\n';
+  }
+  std::cout << "estimators (NAME[:KEY=VALUE,...], e.g. bc-curvature:k=1,alpha=14/9):\n";
+  for (const auto& e : estimators()) {
+    std::cout << "  " << std::left << std::setw(14) << e.name
+              << (e.dimension == 0 ? std::string("any ") : std::to_string(e.dimension) + "D  ")
+              << e.description << "\n"
+              << std::string(21, ' ') << "parameters: " << parameters_text(e)
+              << "; error: " << e.quantity << "\n"
+              << std::string(21, ' ') << "theory: " << e.theory.summary << '\n';
+  }
+}
+
+void list_json() {
+  nlohmann::json shapes = nlohmann::json::array(), ests = nlohmann::json::array();
+  for (const auto& k : shape_kinds()) {
+    shapes.push_back({{"name", k.name},
+                      {"dimension", k.dimension},
+                      {"syntax", k.syntax},
+                      {"description", k.description}});
+  }
+  for (const auto& e : estimators()) {
+    nlohmann::json params = nlohmann::json::array();
+    for (const auto& p : e.parameters) {
+      params.push_back({{"name", p.name},
+                        {"default", p.default_text},
+                        {"range", {p.lo, p.hi}},
+                        {"meaning", p.meaning}});
+    }
+    ests.push_back({{"name", e.name},
+                    {"dimension", e.dimension},
+                    {"description", e.description},
+                    {"parameters", params},
+                    {"theory", e.theory.summary},
+                    {"error", e.quantity}});
+  }
+  print_json({{"shapes", shapes}, {"estimators", ests}});
+}
+
+void run_converge(ConvergeOptions o, Context& ctx) {
+  if (o.list) {
+    if (o.json) {
+      list_json();
+    } else {
+      print_list();
+    }
+    return;
+  }
+  ExperimentConfig config = make_config(o);
+  if (o.output.empty() && !o.json) throw InvalidArgument("no output directory given (-o DIR)");
+  // Every output is checked (and DIR created) before any work.
+  std::unique_ptr<ConvergeOutputs> outputs;
+  if (!o.output.empty()) outputs = std::make_unique<ConvergeOutputs>(o.output, o.force, !o.no_plot);
+  const fs::path dir(o.output);
+  const bool show = !o.quiet && isatty(2) != 0;
+  ProgressFn progress;
+  if (show) {
+    progress = [](std::size_t done, std::size_t total, const RunRecord& r) {
+      std::cerr << "\r[" << done << "/" << total << "] " << r.shape << " " << r.estimator
+                << " h=" << std::setprecision(4) << r.h << " t=" << r.translation << "   "
+                << std::flush;
+      if (done == total) std::cerr << '\n';
+    };
+  }
+  ExperimentResult result = run_experiment(config, progress);
+
+  nlohmann::json summary{
+      {"config", config_json(config, result, o)},
+      {"fits", fits_json(result)},
+      {"all_pass", result.all_pass},
+      {"provenance",
+       {{"commit", git_commit()},
+        {"compiler", compiler()},
+        {"integer_types", {"int64 (checked)", "int128 (checked)", "bigint (GMP mpz)"}},
+        {"grid_step", "the double nearest to each h, used as an exact dyadic rational"},
+        {"seed", config.seed}}}};
+  bool plotted = false; // the plot line is printed only for a plot that was drawn
+  if (outputs) {
+    std::ostringstream csv;
+    write_results_csv(result, csv);
+    plotted = outputs->write(csv.str(), summary.dump(2) + "\n");
+  }
+  if (o.json) {
+    print_json({{"runs", runs_json(result)}, {"fits", fits_json(result)}});
+  } else {
+    int width = 6;
+    int ewidth = 15;
+    for (const auto& f : result.fits) {
+      width = std::max(width, static_cast<int>(f.shape.size()) + 2);
+      ewidth = std::max(ewidth, static_cast<int>(f.estimator.size()) + 2);
+    }
+    std::cout << std::left << std::setw(width) << "shape" << std::setw(ewidth) << "estimator"
+              << std::setw(6) << "norm" << std::setw(18) << "slope" << std::setw(10) << "expected"
+              << "verdict\n";
+    for (const auto& f : result.fits) {
+      std::ostringstream slope, expected;
+      slope << std::fixed << std::setprecision(3) << f.fit.slope << " +- " << f.fit.stderr_slope;
+      if (f.expected) expected << std::fixed << std::setprecision(3) << *f.expected;
+      std::cout << std::left << std::setw(width) << f.shape << std::setw(ewidth) << f.estimator
+                << std::setw(6) << f.norm << std::setw(18) << slope.str() << std::setw(10)
+                << (f.expected ? expected.str() : "-")
+                << (f.pass ? (*f.pass ? "PASS" : "FAIL") : "-") << '\n';
+    }
+    if (!o.output.empty()) {
+      std::cout << "results: " << (dir / "results.csv").string()
+                << "\nsummary: " << (dir / "summary.json").string() << '\n';
+      if (plotted) std::cout << "plot:    " << (dir / "convergence.png").string() << '\n';
+    }
+  }
+  if (!result.all_pass) ctx.exit_code = 1;
+}
+
+// A flag kept as text when given (its value is checked with the TOML values).
+void add_text_option(CLI::App* cmd, const std::string& name, std::optional<std::string>& target,
+                     const std::string& help) {
+  cmd->add_option_function<std::string>(
+      name, [&target](const std::string& v) { target = v; }, help);
+}
+
+void add_run_options(CLI::App* cmd, ConvergeOptions& o) {
+  cmd->add_option("-o,--output", o.output, "Output directory (results.csv, summary.json, plot)");
+  add_text_option(cmd, "--threads", o.threads, "Worker threads (runs in parallel), 1..1024");
+  cmd->add_flag("--json", o.json, "Print runs and fits as JSON on stdout");
+  cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
+  cmd->add_flag("--force", o.force, "Replace results already in the output directory");
+  cmd->add_flag("--no-plot", o.no_plot, "Do not draw convergence.png/.svg");
+}
+
+} // namespace
+
+void add_converge_commands(CLI::App& app, Context& ctx) {
+  {
+    auto o = std::make_shared<ConvergeOptions>();
+    auto* cmd = app.add_subcommand(
+        "converge", "Multigrid convergence experiment: errors against h, fitted rates, checks");
+    cmd->add_option("config", o->config_file, "TOML file with the same keys as the flags")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--shape", o->shapes, "Shape, e.g. ellipse:20,7 (repeatable; see --list)");
+    cmd->add_option("--estimator", o->estimators,
+                    "Estimator with its own parameters, NAME[:KEY=VALUE,...], e.g. "
+                    "bc-curvature:k=1,alpha=14/9 (repeatable; see --list)");
+    cmd->add_option("--function", o->functions,
+                    "Test function u(x, y, z) of the estimators that take one (lb-heat, "
+                    "lb-cotan, lb-combinatorial), e.g. 'x^2-y^2' (repeatable; default: x, "
+                    "x^2-y^2, exp(z))");
+    add_text_option(cmd, "--h", o->h, "Grid steps: HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
+    add_text_option(
+        cmd, "--k", o->k,
+        "Default k of every estimator that has one (R = k h^alpha, mask factor); or one "
+        "per shape, K1,K2,... in the order of --shape");
+    add_text_option(cmd, "--alpha", o->alpha,
+                    "Default alpha of every estimator that has one (R = k h^alpha, mask exponent)");
+    add_text_option(cmd, "--translations", o->translations,
+                    "Random sub-pixel translations per h (0: untranslated), 0..100000");
+    add_text_option(cmd, "--seed", o->seed, "Seed of the translations");
+    add_text_option(cmd, "--box", o->box, "Digitization domain [LO,HI]^d as LO:HI");
+    add_text_option(cmd, "--fit-levels", o->fit_levels, "Fit on the L finest levels (0: all)");
+    add_text_option(cmd, "--tolerance", o->tolerance,
+                    "Slope tolerance of the theory check, in [0, 10] (0.1)");
+    add_text_option(cmd, "--title", o->title, "Plot title");
+    cmd->add_flag("--list", o->list, "List shapes and estimators with their parameters");
+    add_run_options(cmd, *o);
+    cmd->callback([o, &ctx] { run_converge(*o, ctx); });
+  }
+  {
+    auto o = std::make_shared<ConvergeOptions>();
+    auto name = std::make_shared<std::string>();
+    auto quick = std::make_shared<bool>(false);
+    auto* cmd = app.add_subcommand("paper", "Reproduce one figure of papers/NAME");
+    cmd->add_option("name", *name,
+                    "cviu2014-ii2d, cviu2014-compare, gauss-area, tangent-2d, cviu2014-ii3d, "
+                    "hausdorff")
+        ->required();
+    cmd->add_flag("--quick", *quick, "The reduced sweep (papers/NAME/quick.toml)");
+    add_run_options(cmd, *o);
+    cmd->callback([o, name, quick, &ctx] {
+      fs::path dir = fs::path(source_dir()) / "papers" / *name;
+      fs::path file = dir / (*quick ? "quick.toml" : "config.toml");
+      if (!fs::exists(file)) {
+        std::string known;
+        if (fs::exists(fs::path(source_dir()) / "papers")) {
+          for (const auto& e : fs::directory_iterator(fs::path(source_dir()) / "papers")) {
+            if (e.is_directory())
+              known += (known.empty() ? "" : ", ") + e.path().filename().string();
+          }
+        }
+        throw InvalidArgument("unknown paper '" + *name + "' (no " + file.string() +
+                              "; known: " + known + ")");
+      }
+      ConvergeOptions opts = *o;
+      opts.config_file = file.string();
+      run_converge(opts, ctx);
+    });
+  }
+}
+
+} // namespace zdg::cli

@@ -1,0 +1,351 @@
+// zdg topology components|betti|simple|thin|skeleton: digital topology of binary images read
+// from .npy (2D or 3D), .pgm (2D) or .vol (3D): connected components, Euler characteristic and
+// Betti numbers, simple points, homotopic thinning and skeletons (kernel/topology/adjacency.hpp,
+// connected_components.hpp, betti_numbers.hpp, simple_points.hpp, homotopic_thinning.hpp,
+// critical_kernel_thinning.hpp). Outputs go through OutputSet (all or nothing, existing files
+// refused without --force).
+#include <zdg/arith/error.hpp>
+#include <zdg/cli/commands.hpp>
+#include <zdg/kernel/io/npy_io.hpp>
+#include <zdg/kernel/io/output_files.hpp>
+#include <zdg/kernel/io/pgm_io.hpp>
+#include <zdg/kernel/io/vol_io.hpp>
+#include <zdg/kernel/topology/betti_numbers.hpp>
+#include <zdg/kernel/topology/connected_components.hpp>
+#include <zdg/kernel/topology/critical_kernel_thinning.hpp>
+#include <zdg/kernel/topology/homotopic_thinning.hpp>
+#include <zdg/kernel/topology/simple_points.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace zdg::cli {
+
+namespace {
+
+struct TopologyArgs {
+  std::string command, input, output, adjacency, method = "sequential", skeleton, priority = "dt",
+                                                 anchors;
+  std::optional<long long> threshold;
+  unsigned threads = 0;
+  bool json = false, quiet = false, force = false;
+};
+
+std::string extension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// The values of an image file as int64 (.npy, .pgm, .vol).
+Image<std::int64_t> read_values(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw IoError(path + ": no such file");
+  const std::string e = extension(path);
+  if (e == ".npy") return npy_to_int64(read_npy(path));
+  if (e == ".pgm") {
+    auto p = read_pgm(path);
+    return Image<std::int64_t>(p.domain(),
+                               std::vector<std::int64_t>(p.values().begin(), p.values().end()));
+  }
+  if (e == ".vol") {
+    auto v = read_vol(path);
+    return Image<std::int64_t>(v.domain(),
+                               std::vector<std::int64_t>(v.values().begin(), v.values().end()));
+  }
+  throw IoError(path + ": unknown image format '" + e + "' (.npy, .pgm or .vol)");
+}
+
+// The object: nonzero points, or points >= the threshold. An empty object is an error.
+Image<std::uint8_t> read_object(const TopologyArgs& a) {
+  Image<std::uint8_t> mask;
+  if (extension(a.input) == ".npy" && !a.threshold) {
+    if (!std::filesystem::exists(a.input)) throw IoError(a.input + ": no such file");
+    mask = npy_to_mask(read_npy(a.input));
+  } else {
+    const auto v = read_values(a.input);
+    mask = Image<std::uint8_t>(v.domain(), std::uint8_t{0});
+    for (std::int64_t i = 0; i < v.size(); ++i) {
+      mask[i] = (a.threshold ? v[i] >= *a.threshold : v[i] != 0) ? 1 : 0;
+    }
+  }
+  if (mask.dim() != 2 && mask.dim() != 3) {
+    throw InvalidArgument(a.input + ": a " + std::to_string(mask.dim()) +
+                          "-D image (topology works on 2D and 3D images)");
+  }
+  bool any = false;
+  for (auto x : mask.values()) any = any || x != 0;
+  if (!any) {
+    throw InvalidArgument(a.input + ": empty selection (no point is " +
+                          (a.threshold ? ">= " + std::to_string(*a.threshold) : "nonzero") + ")");
+  }
+  return mask;
+}
+
+// Writes to `path` in the format of the extension of `named` (the output; path is its staging
+// file).
+void write_image(const std::string& path, const std::string& named, const Domain& dom,
+                 const std::vector<std::uint64_t>& v, DType dtype) {
+  const std::string e = extension(named);
+  if (e == ".pgm") {
+    if (dom.dim() != 2) throw IoError(path + ": a .pgm image is 2D; use .npy or .vol");
+    write_pgm(path, Image<std::uint64_t>(dom, v));
+  } else if (e == ".vol") {
+    if (dom.dim() != 3) throw IoError(path + ": a .vol image is 3D; use .npy or .pgm");
+    write_vol(path, Image<std::uint64_t>(dom, v));
+  } else if (e == ".npy") {
+    if (dtype == DType::U32) {
+      write_npy(path, make_npy<std::uint32_t>(dom.extents(),
+                                              std::vector<std::uint32_t>(v.begin(), v.end())));
+    } else {
+      write_npy(path, make_npy<std::uint8_t>(dom.extents(),
+                                             std::vector<std::uint8_t>(v.begin(), v.end())));
+    }
+  } else {
+    throw IoError(path + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
+  }
+}
+
+// The output is checked before any work (existing file refused unless --force, not the input).
+std::unique_ptr<OutputSet> plan_output(const TopologyArgs& a, bool required, std::string& staging) {
+  if (a.output.empty()) {
+    if (required) throw InvalidArgument("no output file (-o OUT.npy|.vol|.pgm)");
+    return nullptr;
+  }
+  const std::string e = extension(a.output);
+  if (e != ".npy" && e != ".vol" && e != ".pgm") {
+    throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
+  }
+  std::error_code ec;
+  if (std::filesystem::exists(a.output, ec) && std::filesystem::equivalent(a.input, a.output, ec)) {
+    throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
+  }
+  auto out = std::make_unique<OutputSet>(a.force ? Existing::replace : Existing::refuse);
+  staging = out->add(a.output).string();
+  return out;
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The summary of a result set: its points, components and Betti numbers.
+void report(const TopologyArgs& a, const AdjacencyPair& pair, const Image<std::uint8_t>& set,
+            double seconds, nlohmann::json extra) {
+  std::int64_t voxels = 0;
+  for (auto x : set.values()) voxels += x != 0;
+  const BettiNumbers b = betti_numbers(set, pair, a.threads);
+  if (a.json) {
+    nlohmann::json betti = nlohmann::json::array();
+    for (int k = 0; k < pair.dim; ++k)
+      betti.push_back(std::to_string(b.b[static_cast<std::size_t>(k)]));
+    nlohmann::json j = {{"command", a.command},
+                        {"input", a.input},
+                        {"adjacency", pair.name()},
+                        {"voxels", std::to_string(voxels)},
+                        {"components", std::to_string(b.b[0])},
+                        {"euler", std::to_string(b.euler)},
+                        {"betti", betti},
+                        {"seconds", seconds}};
+    if (!a.output.empty()) j["output"] = a.output;
+    for (auto& [k, v] : extra.items()) j[k] = v;
+    print_json(j);
+    return;
+  }
+  std::cout << "zdg topology " << a.command << " (" << pair.name() << "): " << voxels << " points, "
+            << b.b[0] << " components, Betti";
+  for (int k = 0; k < pair.dim; ++k) std::cout << ' ' << b.b[static_cast<std::size_t>(k)];
+  std::cout << ", Euler " << b.euler;
+  for (auto& [k, v] : extra.items()) {
+    std::cout << ", " << k << ' ' << (v.is_string() ? v.get<std::string>() : v.dump());
+  }
+  if (!a.output.empty()) std::cout << " -> " << a.output;
+  std::cout << " (" << seconds << " s)\n";
+}
+
+AdjacencyPair pair_of(const TopologyArgs& a, int dim) {
+  return a.adjacency.empty() ? default_adjacency_pair(dim) : parse_adjacency_pair(a.adjacency, dim);
+}
+
+void run_components(const TopologyArgs& a) {
+  std::string staging;
+  auto out = plan_output(a, false, staging);
+  const auto mask = read_object(a);
+  const auto pair = pair_of(a, mask.dim());
+  const auto t0 = std::chrono::steady_clock::now();
+  ComponentOptions opt;
+  opt.threads = a.threads;
+  const Components c = connected_components(mask, pair.object, opt);
+  const double secs = since(t0);
+  if (out) {
+    write_image(staging, a.output, mask.domain(),
+                std::vector<std::uint64_t>(c.labels.values().begin(), c.labels.values().end()),
+                DType::U32);
+    out->commit();
+  }
+  nlohmann::json sizes = nlohmann::json::array();
+  for (std::size_t k = 0; k < c.sizes.size() && k < 10; ++k)
+    sizes.push_back(std::to_string(c.sizes[k]));
+  report(a, pair, mask, secs, {{"largest_sizes", sizes}});
+}
+
+void run_betti(const TopologyArgs& a) {
+  if (!a.output.empty()) throw InvalidArgument("topology betti writes no file (drop -o)");
+  const auto mask = read_object(a);
+  const auto pair = pair_of(a, mask.dim());
+  const auto t0 = std::chrono::steady_clock::now();
+  (void)betti_numbers(mask, pair, a.threads);
+  report(a, pair, mask, since(t0), nlohmann::json::object());
+}
+
+void run_simple(const TopologyArgs& a) {
+  std::string staging;
+  auto out = plan_output(a, false, staging);
+  const auto mask = read_object(a);
+  const auto pair = pair_of(a, mask.dim());
+  const auto t0 = std::chrono::steady_clock::now();
+  Image<std::uint8_t> simple(mask.domain(), std::uint8_t{0});
+  std::int64_t count = 0;
+  for (std::int64_t i = 0; i < mask.size(); ++i) {
+    if (mask[i] != 0 && is_simple_by_definition(pair, neighbourhood_configuration(mask, i))) {
+      simple[i] = 1;
+      ++count;
+    }
+  }
+  const double secs = since(t0);
+  if (out) {
+    write_image(staging, a.output, mask.domain(),
+                std::vector<std::uint64_t>(simple.values().begin(), simple.values().end()),
+                DType::U8);
+    out->commit();
+  }
+  // The summary describes the object; "simple" counts its simple points (the output).
+  report(a, pair, mask, secs, {{"simple", std::to_string(count)}});
+}
+
+void run_thin(const TopologyArgs& a, SkeletonKind default_kind) {
+  std::string staging;
+  auto out = plan_output(a, true, staging);
+  const auto mask = read_object(a);
+  ThinningOptions opt;
+  opt.pair = pair_of(a, mask.dim());
+  opt.skeleton = a.skeleton.empty() ? default_kind : parse_skeleton_kind(a.skeleton);
+  opt.threads = a.threads;
+  const bool critical = a.method == "critical-kernel";
+  if (!critical && a.method != "sequential") {
+    throw InvalidArgument("--method '" + a.method + "' is not sequential or critical-kernel");
+  }
+  if (critical && !(opt.pair.object == 26 || opt.pair.object == 8)) {
+    throw InvalidArgument("--method critical-kernel needs --adjacency " +
+                          std::string(mask.dim() == 3 ? "26,6" : "8,4") + " (got " +
+                          opt.pair.name() + ")");
+  }
+  Image<std::int64_t> priority;
+  if (a.priority != "dt") {
+    if (critical) throw InvalidArgument("--priority is for --method sequential only");
+    priority = read_values(a.priority);
+    if (!(priority.domain().extents() == mask.domain().extents())) {
+      throw InvalidArgument("--priority " + a.priority + ": an image of another size than " +
+                            a.input);
+    }
+    priority = Image<std::int64_t>(mask.domain(), std::move(priority.values()));
+    opt.priority = &priority;
+  }
+  Image<std::uint8_t> anchors;
+  if (!a.anchors.empty()) {
+    const auto v = read_values(a.anchors);
+    if (!(v.domain().extents() == mask.domain().extents())) {
+      throw InvalidArgument("--anchors " + a.anchors + ": an image of another size than " +
+                            a.input);
+    }
+    anchors = Image<std::uint8_t>(mask.domain(), std::uint8_t{0});
+    for (std::int64_t i = 0; i < v.size(); ++i) anchors[i] = v[i] != 0;
+    opt.anchors = &anchors;
+  }
+  const bool progress = !a.quiet && isatty(2) != 0;
+  if (progress) {
+    opt.progress = [](const ThinningProgress& p) {
+      std::fprintf(stderr, "\rzdg topology: %lld points left, %lld deleted, pass %lld   ",
+                   static_cast<long long>(p.remaining), static_cast<long long>(p.deleted),
+                   static_cast<long long>(p.passes));
+      std::fflush(stderr);
+    };
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const ThinningResult r =
+      critical ? critical_kernel_thinning(mask, opt) : homotopic_thinning(mask, opt);
+  const double secs = since(t0);
+  if (progress) std::fprintf(stderr, "\n");
+  write_image(staging, a.output, mask.domain(),
+              std::vector<std::uint64_t>(r.skeleton.values().begin(), r.skeleton.values().end()),
+              DType::U8);
+  out->commit();
+  report(a, opt.pair, r.skeleton, secs,
+         {{"method", a.method},
+          {"skeleton", skeleton_kind_name(opt.skeleton)},
+          {"deleted", std::to_string(r.deleted)},
+          {"passes", std::to_string(r.passes)}});
+}
+
+} // namespace
+
+void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
+  auto* top = app.add_subcommand(
+      "topology", "digital topology of 2D/3D binary images: components, Betti numbers, simple "
+                  "points, thinning, skeletons");
+  top->require_subcommand(1);
+  struct Spec {
+    const char* name;
+    const char* help;
+  };
+  static const Spec specs[] = {
+      {"components", "connected components: labels (uint32, 1 = largest) in -o, sizes"},
+      {"betti", "Euler characteristic and Betti numbers b0 b1 (b2) of the object"},
+      {"simple", "simple points of the object (uint8 mask in -o)"},
+      {"thin", "homotopic thinning (default --skeleton ultimate): same topology, fewer points"},
+      {"skeleton", "skeleton by homotopic thinning (default --skeleton curve)"},
+  };
+  for (const auto& s : specs) {
+    auto args = std::make_shared<TopologyArgs>();
+    args->command = s.name;
+    auto* sub = top->add_subcommand(s.name, s.help);
+    sub->add_option("INPUT", args->input, "input image (.npy 2D/3D, .pgm, .vol)")->required();
+    sub->add_option("-o,--output", args->output, "output image (.npy, .vol, .pgm)");
+    sub->add_option("--threshold", args->threshold,
+                    "object = values >= T (default: nonzero values)");
+    sub->add_option("--adjacency", args->adjacency,
+                    "pair K,KBAR: 26,6 (default 3D), 6,26, 18,6, 6,18; 8,4 (default 2D), 4,8");
+    sub->add_option("--threads", args->threads, "worker threads (0 = all cores)")
+        ->capture_default_str();
+    sub->add_flag("--json", args->json,
+                  "print {\"voxels\",\"components\",\"betti\",\"seconds\",...} on stdout");
+    sub->add_flag("--force", args->force, "replace an existing output file");
+    sub->add_flag("--quiet", args->quiet, "no progress on stderr");
+    const std::string name = s.name;
+    if (name == "thin" || name == "skeleton") {
+      sub->add_option("--method", args->method, "sequential or critical-kernel (parallel)")
+          ->capture_default_str();
+      sub->add_option("--skeleton", args->skeleton, "ultimate, curve, surface or medial-axis");
+      sub->add_option("--priority", args->priority,
+                      "dt (squared distance to the background) or an image FILE of the same "
+                      "size (smaller first; sequential only)")
+          ->capture_default_str();
+      sub->add_option("--anchors", args->anchors, "image FILE: nonzero points are never deleted");
+    }
+    sub->callback([args, name] {
+      if (name == "components") run_components(*args);
+      if (name == "betti") run_betti(*args);
+      if (name == "simple") run_simple(*args);
+      if (name == "thin") run_thin(*args, SkeletonKind::ultimate);
+      if (name == "skeleton") run_thin(*args, SkeletonKind::curve);
+    });
+  }
+}
+
+} // namespace zdg::cli

@@ -1,0 +1,818 @@
+// zdg transform dt|voronoi|power|rdt|rma: the separable exact l_p transforms on images read
+// from .npy (any dimension), .pgm (2D) or .vol (3D); the result is written through an
+// OutputSet (checked before any work, staged, renamed at the end), never over the input and
+// never over an existing file unless --force.
+#include <zdg/arith/error.hpp>
+#include <zdg/cli/commands.hpp>
+#include <zdg/cli/mpi_session.hpp>
+#include <zdg/kernel/io/mapped_file.hpp>
+#include <zdg/kernel/io/npy_io.hpp>
+#include <zdg/kernel/io/output_files.hpp>
+#include <zdg/kernel/io/pgm_io.hpp>
+#include <zdg/kernel/io/vol_io.hpp>
+#include <zdg/kernel/parallel/populate_pages.hpp>
+#include <zdg/kernel/transforms/distance_transform.hpp>
+#include <zdg/kernel/transforms/distributed_transform.hpp>
+#include <zdg/kernel/transforms/out_of_core_transform.hpp>
+#include <zdg/kernel/transforms/power_map.hpp>
+#include <zdg/kernel/transforms/reduced_medial_axis.hpp>
+#include <zdg/kernel/transforms/reverse_distance_transform.hpp>
+#include <zdg/kernel/transforms/separable_engine.hpp>
+#include <zdg/kernel/transforms/voronoi_map.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <type_traits>
+#include <vector>
+
+#include <unistd.h>
+
+namespace zdg::cli {
+
+namespace {
+
+struct TransformArgs {
+  std::string input, output, metric = "l2", torus, lower, memory;
+  unsigned threads = 0;
+  bool json = false, force = false, out_of_core = false, quiet = false, mpi = false;
+  // The file the result is written to before it is moved onto `output` (set by check_paths).
+  std::shared_ptr<OutputSet> outputs;
+  std::string staged;
+};
+
+std::string extension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+std::vector<std::int64_t> parse_int_list(const std::string& text, const std::string& what) {
+  std::vector<std::int64_t> out;
+  std::string_view rest = text;
+  for (;;) {
+    const auto comma = rest.find(',');
+    const std::string_view item = rest.substr(0, comma);
+    try {
+      out.push_back(parse_integer<std::int64_t>(item));
+    } catch (const Error& e) {
+      throw InvalidArgument(what + ": " + e.what() + " (in the list '" + text + "')");
+    }
+    if (comma == std::string_view::npos) break;
+    rest.remove_prefix(comma + 1);
+  }
+  return out;
+}
+
+// The input as int64 values, whatever its format.
+Image<std::int64_t> read_values(const TransformArgs& a) {
+  std::string e = extension(a.input);
+  if (!std::filesystem::exists(a.input)) throw IoError(a.input + ": no such file");
+  Image<std::int64_t> img;
+  if (e == ".npy") {
+    img = npy_to_int64(read_npy(a.input));
+  } else if (e == ".pgm") {
+    auto p = read_pgm(a.input);
+    img = Image<std::int64_t>(p.domain(),
+                              std::vector<std::int64_t>(p.values().begin(), p.values().end()));
+  } else if (e == ".vol") {
+    auto v = read_vol(a.input);
+    img = Image<std::int64_t>(v.domain(),
+                              std::vector<std::int64_t>(v.values().begin(), v.values().end()));
+  } else {
+    throw IoError(a.input + ": unknown image format '" + e + "' (.npy, .pgm or .vol)");
+  }
+  if (!a.lower.empty()) {
+    auto low = parse_int_list(a.lower, "--lower");
+    if (static_cast<int>(low.size()) != img.dim()) {
+      throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                            std::to_string(img.dim()) + "-D image");
+    }
+    img = Image<std::int64_t>(Domain(img.domain().extents(), low), std::move(img.values()));
+  }
+  return img;
+}
+
+Image<std::uint8_t> read_mask(const TransformArgs& a) {
+  if (extension(a.input) == ".npy") {
+    auto arr = read_npy(a.input);
+    std::vector<std::int64_t> low;
+    if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
+    if (!low.empty() && low.size() != arr.shape.size()) {
+      throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                            std::to_string(arr.shape.size()) + "-D image");
+    }
+    return npy_to_mask(arr, low);
+  }
+  auto v = read_values(a);
+  Image<std::uint8_t> m(v.domain());
+  for (std::int64_t i = 0; i < v.size(); ++i) m[i] = v[i] != 0 ? 1 : 0;
+  return m;
+}
+
+TransformOptions make_options(const TransformArgs& a, int dim) {
+  TransformOptions opt;
+  opt.metric = parse_metric(a.metric);
+  opt.threads = a.threads;
+  if (!a.torus.empty()) {
+    opt.torus.assign(static_cast<std::size_t>(dim), false);
+    if (a.torus == "all") {
+      opt.torus.assign(static_cast<std::size_t>(dim), true);
+    } else {
+      for (auto k : parse_int_list(a.torus, "--torus")) {
+        if (k < 0 || k >= dim) {
+          throw InvalidArgument("--torus: axis " + std::to_string(k) + " of a " +
+                                std::to_string(dim) + "-D image (axes 0.." +
+                                std::to_string(dim - 1) + ")");
+        }
+        opt.torus[static_cast<std::size_t>(k)] = true;
+      }
+    }
+  }
+  return opt;
+}
+
+// Checks the output before any work (OutputSet: the folder exists, the output is not a
+// folder, an existing file is refused unless --force, the output is not the input) and
+// prepares its staging file.
+void check_paths(TransformArgs& a) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (a.output.empty()) throw InvalidArgument("no output file (-o OUT)");
+  parse_metric(a.metric); // a metric out of the supported range fails before the input is read
+  if (fs::exists(a.output, ec) && fs::equivalent(a.input, a.output, ec)) {
+    throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
+  }
+  const std::string e = extension(a.output);
+  if (e != ".npy" && e != ".pgm" && e != ".vol") {
+    throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
+  }
+  a.outputs = std::make_shared<OutputSet>(a.force ? Existing::replace : Existing::refuse);
+  a.staged = a.outputs->add(a.output).string();
+}
+
+void commit(const TransformArgs& a) {
+  a.outputs->commit();
+}
+
+std::vector<std::int64_t> shape_of(const Domain& d) {
+  return d.extents();
+}
+
+// Writes an image of unsigned values to the staging file, in the format of the output's
+// extension.
+void write_unsigned(const TransformArgs& a, const Domain& dom, const std::vector<std::uint64_t>& v,
+                    DType dtype) {
+  const std::string& path = a.staged;
+  std::string e = extension(a.output);
+  if (e == ".pgm") {
+    write_pgm(path, Image<std::uint64_t>(dom, v));
+  } else if (e == ".vol") {
+    write_vol(path, Image<std::uint64_t>(dom, v));
+  } else if (e == ".npy") {
+    std::vector<std::int64_t> s(v.begin(), v.end());
+    if (dtype == DType::U64) {
+      write_npy(path, make_npy<std::uint64_t>(shape_of(dom), v));
+    } else {
+      write_npy(path, make_npy(dtype, shape_of(dom), s));
+    }
+  } else {
+    throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
+  }
+}
+
+void require_npy(const std::string& path, const char* what) {
+  if (extension(path) != ".npy") {
+    throw IoError(path + ": " + what + " output is an .npy array (got '" + extension(path) + "')");
+  }
+}
+
+// Site coordinates (*dims, d) from linear site indices.
+NpyArray sites_array(const Domain& dom, const std::vector<std::int64_t>& site) {
+  const auto d = static_cast<std::size_t>(dom.dim());
+  std::vector<std::int64_t> coords(site.size() * d);
+  std::vector<std::int64_t> p(d);
+  for (std::size_t i = 0; i < site.size(); ++i) {
+    dom.point(site[i], p);
+    for (std::size_t k = 0; k < d; ++k) coords[i * d + k] = p[k];
+  }
+  auto shape = shape_of(dom);
+  shape.push_back(dom.dim());
+  return make_npy<std::int64_t>(shape, coords);
+}
+
+unsigned threads_used(unsigned requested) {
+  return requested == 0 ? std::max(1u, std::thread::hardware_concurrency()) : requested;
+}
+
+void report(const TransformArgs& a, const std::string& cmd, const Domain& dom,
+            const TransformOptions& opt, const std::string& dtype, const std::string& max_value,
+            double seconds, nlohmann::json extra = nlohmann::json::object()) {
+  if (a.json) {
+    nlohmann::json torus = nlohmann::json::array();
+    for (int k = 0; k < dom.dim(); ++k) {
+      if (opt.periodic(k)) torus.push_back(k);
+    }
+    nlohmann::json j = {{"command", cmd},
+                        {"input", a.input},
+                        {"output", a.output},
+                        {"shape", shape_of(dom)},
+                        {"lower", dom.lowers()},
+                        {"metric", opt.metric.name()},
+                        {"torus", torus},
+                        {"dtype", dtype},
+                        {"max_value", max_value},
+                        {"seconds", seconds},
+                        {"threads", threads_used(opt.threads)}};
+    for (auto& [k, v] : extra.items()) j[k] = v;
+    print_json(j);
+    return;
+  }
+  std::cout << "zdg transform " << cmd << ": " << a.output << " (" << dtype << ", "
+            << opt.metric.name();
+  if (!max_value.empty()) std::cout << ", max " << max_value;
+  std::cout << ") in " << seconds << " s\n";
+}
+
+double since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The narrowest unsigned dtype that holds every value up to `bound` (none past 64 bits): the
+// output type of every distance transform the command writes.
+std::optional<DType> narrowest_unsigned(const BigInt& bound) {
+  if (bound <= 255) return DType::U8;
+  if (bound <= 65535) return DType::U16;
+  if (bound <= BigInt(4294967295ULL)) return DType::U32;
+  if (bound <= BigInt(std::numeric_limits<std::uint64_t>::max())) return DType::U64;
+  return std::nullopt;
+}
+
+// fn(std::type_identity<T>{}) with T the unsigned type of the dtype (uint64 for any other).
+template <class Fn>
+void with_unsigned(DType dtype, Fn&& fn) {
+  switch (dtype) {
+  case DType::U8:
+    return fn(std::type_identity<std::uint8_t>{});
+  case DType::U16:
+    return fn(std::type_identity<std::uint16_t>{});
+  case DType::U32:
+    return fn(std::type_identity<std::uint32_t>{});
+  default:
+    return fn(std::type_identity<std::uint64_t>{});
+  }
+}
+
+template <class T>
+void run_dt_as(TransformArgs& a, const Image<std::uint8_t>& mask, const TransformOptions& opt,
+               DType dtype, std::chrono::steady_clock::time_point t0) {
+  auto dt = distance_transform<T>(mask, opt);
+  double secs = since(t0);
+  std::vector<std::uint64_t> v(dt.values().begin(), dt.values().end());
+  std::uint64_t mx = 0;
+  for (auto x : v) mx = std::max(mx, x);
+  write_unsigned(a, mask.domain(), v, dtype);
+  commit(a);
+  report(a, "dt", mask.domain(), opt, dtype_name(dtype), std::to_string(mx), secs);
+}
+
+// A byte count: an integer with an optional suffix K, M, G, T (powers of 1024; "16G").
+std::uint64_t parse_memory(const std::string& text) {
+  std::string digits = text;
+  std::uint64_t unit = 1;
+  if (!digits.empty()) {
+    const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(digits.back())));
+    const std::string units = "KMGT";
+    if (const auto k = units.find(c); k != std::string::npos) {
+      unit = std::uint64_t{1} << (10 * (k + 1));
+      digits.pop_back();
+    }
+  }
+  std::uint64_t v = 0;
+  try {
+    v = parse_integer<std::uint64_t>(digits);
+  } catch (const Error&) {
+    throw InvalidArgument("--memory '" + text + "': a byte count such as 512M, 16G or 1073741824");
+  }
+  std::uint64_t bytes = 0;
+  if (v == 0 || __builtin_mul_overflow(v, unit, &bytes)) {
+    throw InvalidArgument("--memory '" + text + "': out of range (1 byte to 2^64 - 1)");
+  }
+  return bytes;
+}
+
+std::string mb(std::uint64_t bytes) {
+  return std::to_string((bytes + 500'000) / 1'000'000) + " MB";
+}
+
+// Progress of a long run goes to stderr when it is a terminal and --quiet is not given.
+bool show_progress(const TransformArgs& a) {
+  return !a.quiet && ::isatty(2) != 0;
+}
+
+std::function<void(const OutOfCoreProgress&)> progress_printer(const TransformArgs& a) {
+  if (!show_progress(a)) return {};
+  return [](const OutOfCoreProgress& p) {
+    std::cerr << "\rzdg transform dt: " << p.phase << " " << p.done << "/" << p.total << ", read "
+              << mb(p.bytes_read) << ", written " << mb(p.bytes_written) << "   "
+              << (p.done == p.total ? "\n" : "") << std::flush;
+  };
+}
+
+// The same for an in-memory transform: the passes done (one per axis) and the seconds so far.
+std::function<void(int, int)> pass_printer(const TransformArgs& a) {
+  if (!show_progress(a)) return {};
+  return [t0 = std::chrono::steady_clock::now()](int done, int total) {
+    char secs[32];
+    std::snprintf(secs, sizeof secs, "%.1f s", since(t0));
+    std::cerr << "\rzdg transform dt: pass " << done << "/" << total << ", " << secs << "   "
+              << (done == total ? "\n" : "") << std::flush;
+  };
+}
+
+// The domain of an .npy input read in place (its shape, --lower): errors for a 0-D or empty
+// array and a --lower of the wrong length.
+Domain npy_domain(const TransformArgs& a, const NpyLayout& lay) {
+  if (lay.shape.empty()) throw IoError("a 0-dimensional array is not an image");
+  for (auto e : lay.shape) {
+    if (e == 0) throw IoError("empty array (an extent is 0)");
+  }
+  std::vector<std::int64_t> low;
+  if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
+  if (!low.empty() && low.size() != lay.shape.size()) {
+    throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                          std::to_string(lay.shape.size()) + "-D image");
+  }
+  return Domain(lay.shape, low);
+}
+
+// The lean path of `dt` (issue #15): an integer .npy in, an .npy out. The input file is mapped
+// and read in place (items of any integer width: background when all bytes are 0, as
+// npy_to_mask reads them), the values are computed in one buffer (or out of core) and written
+// once, in the narrowest unsigned dtype that holds the largest value: the peak memory is about
+// the input's bytes plus the output's, where the general path below holds the input twice and
+// the output three times. Returns false (nothing done) for what it does not take: other
+// formats, floats, values past 64 bits.
+template <class T>
+void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
+                const TransformOptions& opt, DType dtype) {
+  const auto t0 = std::chrono::steady_clock::now();
+  MappedInput in(a.input);
+  const std::uint8_t* mask = in.data() + lay.data_offset;
+  const int item = static_cast<int>(dtype_size(lay.dtype));
+  // Out of core when asked, or when the in-memory transform would pass the memory budget.
+  const std::uint64_t need = in_memory_transform_bytes<T>(dom, opt, item);
+  const bool budget_given = !a.memory.empty();
+  const std::uint64_t budget = budget_given ? parse_memory(a.memory) : std::uint64_t{4} << 30;
+  const bool out_of_core = a.out_of_core || (budget_given && need > budget);
+  // In memory, the background is checked before the output's space is reserved (out of core,
+  // the transform checks it slab by slab, within the budget).
+  if (!out_of_core) require_background(dom, mask, opt, item);
+  const std::string header = npy_header_bytes(dtype, lay.shape);
+  const auto n = static_cast<std::uint64_t>(dom.size());
+  ReservedFile out(a.staged, header.size() + n * sizeof(T)); // a disk too small fails here
+  out.write(0, header.data(), header.size());
+  if (out_of_core) {
+    OutOfCoreOptions ooc;
+    ooc.memory_budget = budget;
+    ooc.scratch_folder = std::filesystem::path(a.staged).parent_path().string();
+    if (ooc.scratch_folder.empty()) ooc.scratch_folder = ".";
+    ooc.mask_is_mapped_file = true;
+    ooc.progress = progress_printer(a);
+    const T mx = distance_transform_out_of_core<T>(dom, mask, item, opt, out, header.size(), ooc);
+    const double secs = since(t0);
+    out.finish();
+    commit(a);
+    report(a, "dt", dom, opt, dtype_name(dtype), std::to_string(mx), secs,
+           {{"out_of_core", true}, {"memory_budget", budget}, {"in_memory_bytes", need}});
+    return;
+  }
+  // In memory: the values in a buffer of the output's type (not zero-filled: the transform
+  // writes every value), then one sequential write.
+  std::unique_ptr<T[]> values(new T[n]);
+  // mapped (in huge pages where offered) by all the workers before the passes write it
+  populate_pages(values.get(), n * sizeof(T), threads_used(opt.threads));
+  distance_transform_into<T>(dom, mask, item, opt, values.get(), pass_printer(a));
+  const double secs = since(t0);
+  // The largest value and the write, in pieces by all the workers (write_values_max).
+  const T mx =
+      write_values_max<T>(out, header.size(), values.get(), dom.size(), threads_used(opt.threads));
+  values.reset();
+  out.finish();
+  commit(a);
+  report(a, "dt", dom, opt, dtype_name(dtype), std::to_string(mx), secs);
+}
+
+bool lean_dt(TransformArgs& a) {
+  const bool npy = extension(a.input) == ".npy" && extension(a.output) == ".npy";
+  if (a.out_of_core && !npy) {
+    throw InvalidArgument("--out-of-core reads and writes .npy files (got " + a.input + " and " +
+                          a.output + ")");
+  }
+  if (!a.memory.empty()) parse_memory(a.memory); // a bad value fails before the input is read
+  if (!npy) return false;
+  const NpyLayout lay = read_npy_layout(a.input);
+  if (dtype_is_float(lay.dtype)) {
+    // -0.0 is background: not a bytewise test, so floats take the general path.
+    if (a.out_of_core) {
+      throw InvalidArgument("--out-of-core: " + a.input + " holds " + dtype_name(lay.dtype) +
+                            " values; the out-of-core transform reads integer or bool masks");
+    }
+    return false;
+  }
+  const Domain dom = npy_domain(a, lay);
+  const auto opt = make_options(a, dom.dim());
+  const BigInt bound = distance_transform_max_value(dom, opt);
+  const auto dtype = narrowest_unsigned(bound);
+  if (!dtype) {
+    if (a.out_of_core) {
+      throw InvalidArgument("--out-of-core: values up to " + bound.str() +
+                            " do not fit 64 bits; use the in-memory transform");
+    }
+    return false;
+  }
+  with_unsigned(*dtype,
+                [&]<class T>(std::type_identity<T>) { lean_dt_as<T>(a, lay, dom, opt, *dtype); });
+  return true;
+}
+
+void run_dt(TransformArgs& a) {
+  check_paths(a);
+  if (lean_dt(a)) return;
+  auto mask = read_mask(a);
+  auto opt = make_options(a, mask.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  BigInt bound = distance_transform_max_value(mask.domain(), opt);
+  if (const auto dtype = narrowest_unsigned(bound)) {
+    with_unsigned(*dtype,
+                  [&]<class T>(std::type_identity<T>) { run_dt_as<T>(a, mask, opt, *dtype, t0); });
+  } else {
+    // Values might exceed 64 bits: compute exactly, then check what was reached.
+    auto dt = distance_transform<BigInt>(mask, opt);
+    double secs = since(t0);
+    BigInt mx = 0;
+    for (const auto& x : dt.values()) mx = std::max(mx, x);
+    if (mx > BigInt(std::numeric_limits<std::uint64_t>::max())) {
+      throw OverflowError("distance transform: the largest value " + mx.str() + " (" +
+                          opt.metric.name() + ") does not fit uint64, the widest npy type");
+    }
+    std::vector<std::uint64_t> v;
+    v.reserve(dt.values().size());
+    for (const auto& x : dt.values()) v.push_back(x.convert_to<std::uint64_t>());
+    write_unsigned(a, mask.domain(), v, DType::U64);
+    commit(a);
+    report(a, "dt", mask.domain(), opt, "uint64", mx.str(), secs);
+  }
+}
+
+void run_voronoi(TransformArgs& a) {
+  check_paths(a);
+  require_npy(a.output, "the Voronoi map");
+  auto mask = read_mask(a);
+  auto opt = make_options(a, mask.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  auto map = voronoi_map(mask, opt);
+  double secs = since(t0);
+  write_npy(a.staged, sites_array(mask.domain(), map.site));
+  commit(a);
+  report(a, "voronoi", mask.domain(), opt, "int64", "", secs);
+}
+
+void run_power(TransformArgs& a) {
+  check_paths(a);
+  require_npy(a.output, "the power map");
+  auto w = read_values(a);
+  auto opt = make_options(a, w.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  auto map = power_map(w, opt);
+  double secs = since(t0);
+  write_npy(a.staged, sites_array(w.domain(), map.site));
+  commit(a);
+  report(a, "power", w.domain(), opt, "int64", "", secs);
+}
+
+void run_rdt(TransformArgs& a) {
+  check_paths(a);
+  auto v = read_values(a);
+  auto opt = make_options(a, v.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  auto r = reverse_distance_transform(v, opt);
+  double secs = since(t0);
+  std::uint64_t count = 0;
+  for (auto x : r.values()) count += x;
+  write_unsigned(a, r.domain(), std::vector<std::uint64_t>(r.values().begin(), r.values().end()),
+                 DType::U8);
+  commit(a);
+  report(a, "rdt", r.domain(), opt, "uint8", count > 0 ? "1" : "0", secs,
+         {{"points", std::to_string(count)}});
+}
+
+void run_rma(TransformArgs& a) {
+  check_paths(a);
+  require_npy(a.output, "the medial axis");
+  auto mask = read_mask(a);
+  auto opt = make_options(a, mask.dim());
+  auto t0 = std::chrono::steady_clock::now();
+  auto balls = reduced_medial_axis(mask, opt);
+  double secs = since(t0);
+  const auto d = static_cast<std::size_t>(mask.dim());
+  std::vector<std::int64_t> rows;
+  std::int64_t mx = 0;
+  for (const auto& b : balls) {
+    rows.insert(rows.end(), b.centre.begin(), b.centre.end());
+    rows.push_back(b.value);
+    mx = std::max(mx, b.value);
+  }
+  write_npy(a.staged,
+            make_npy<std::int64_t>(
+                {static_cast<std::int64_t>(balls.size()), static_cast<std::int64_t>(d + 1)}, rows));
+  commit(a);
+  report(a, "rma", mask.domain(), opt, "int64", std::to_string(mx), secs,
+         {{"balls", balls.size()}});
+}
+
+// A failure on some ranks only: its line, the staged output removed (MPI_Abort kills rank 0
+// wherever it is, before its OutputSet could remove it; the ranks share the output's folder;
+// empty: nothing staged on this rank), then the whole job ends with status 2.
+[[noreturn]] void abort_job(MpiSession& mpi, const std::string& what, const std::string& staged) {
+  std::cerr << "zdg: " << what << " (rank " << mpi.rank() << " of " << mpi.size() << ")"
+            << std::endl;
+  if (!staged.empty()) {
+    std::error_code ec;
+    std::filesystem::remove(staged, ec);
+  }
+  mpi.abort(2);
+}
+
+// `zdg transform dt|voronoi --mpi` (issue #15, kernel/transforms/distributed_transform.hpp): one
+// rank of an MPI job. Rank r reads the slices it owns of the input .npy (MPI-IO), the ranks
+// transform their slabs, exchange them, transform whole columns, and write their column blocks into
+// the output with one collective MPI-IO write; rank 0 prepares the staged output (header, space
+// reserved) and renames it when every rank has written. Failures: what every rank checks
+// before any exchange (the input, the options, the output path, the background) is agreed on
+// and reported once, by the lowest rank that met it (exit 2, nothing written); a failure after
+// (the file system, the memory), on some ranks only, ends the whole job (MPI_Abort, exit 2).
+template <class T>
+void mpi_transform_as(TransformArgs& a, MpiSession& mpi, const std::string& cmd,
+                      const NpyLayout& lay, const Domain& dom, const TransformOptions& opt,
+                      DType dtype, std::vector<std::uint8_t>& slab, const std::string& header,
+                      std::chrono::steady_clock::time_point t0) {
+  const bool voronoi = cmd == "voronoi";
+  const int d = dom.dim();
+  const DistributedPart part = distributed_part(dom, mpi.rank(), mpi.size());
+  const std::int64_t n0 = dom.extent(0), slice = dom.stride(0), w = part.columns.size();
+  const std::string staged = mpi.broadcast(mpi.rank() == 0 ? a.staged : std::string(), 0);
+  const std::uint64_t out_bytes =
+      header.size() + static_cast<std::uint64_t>(dom.size()) *
+                          (voronoi ? 8 * static_cast<std::uint64_t>(d) : sizeof(T));
+  const bool show = mpi.rank() == 0 && show_progress(a);
+  nlohmann::json stages = nlohmann::json::object();
+  auto stage = [&](const std::string& name, double seconds) {
+    // Each stage's time is the slowest rank's (a collective step: every rank reports it).
+    const double slowest =
+        static_cast<double>(mpi.max_over_ranks(static_cast<std::uint64_t>(seconds * 1e6))) / 1e6;
+    stages[name] = slowest;
+    if (!show) return;
+    char secs[32];
+    std::snprintf(secs, sizeof secs, "%.2f s", slowest);
+    std::cerr << "zdg transform " << cmd << " --mpi (" << mpi.size() << " ranks): " << name << " "
+              << secs;
+    if (name == "read")
+      std::cerr << ", " << mb(static_cast<std::uint64_t>(dom.size()) * dtype_size(lay.dtype))
+                << " read";
+    if (name == "write") std::cerr << ", " << mb(out_bytes) << " written";
+    std::cerr << "\n";
+  };
+  stage("read", since(t0));
+  std::string max_text;
+  try {
+    std::vector<T> out(static_cast<std::size_t>(n0 * w));
+    std::vector<std::int64_t> sites;
+    const T mx =
+        distance_transform_distributed<T>(dom, slab.data(), static_cast<int>(dtype_size(lay.dtype)),
+                                          opt, mpi, out.data(), voronoi ? &sites : nullptr, stage);
+    std::vector<std::uint8_t>().swap(slab);
+    const auto t_write = std::chrono::steady_clock::now();
+    if (voronoi) {
+      std::vector<T>().swap(out);
+      const auto ud = static_cast<std::size_t>(d);
+      std::vector<std::int64_t> coords(sites.size() * ud);
+      for (std::size_t i = 0; i < sites.size(); ++i)
+        dom.point(sites[i], std::span<std::int64_t>(coords.data() + i * ud, ud));
+      const std::uint64_t item = 8 * ud;
+      mpi.write_rows(staged, header.size() + static_cast<std::uint64_t>(part.columns.begin) * item,
+                     static_cast<std::uint64_t>(w) * item, static_cast<std::uint64_t>(slice) * item,
+                     n0, coords.data());
+    } else {
+      max_text = std::to_string(mx);
+      mpi.write_rows(staged,
+                     header.size() + static_cast<std::uint64_t>(part.columns.begin) * sizeof(T),
+                     static_cast<std::uint64_t>(w) * sizeof(T),
+                     static_cast<std::uint64_t>(slice) * sizeof(T), n0, out.data());
+    }
+    stage("write", since(t_write));
+  } catch (const std::exception& e) {
+    abort_job(mpi, e.what(), staged);
+  }
+  const double secs = since(t0);
+  if (mpi.rank() != 0) return;
+  commit(a);
+  report(a, cmd, dom, opt, voronoi ? "int64" : dtype_name(dtype), max_text, secs,
+         {{"mpi", true}, {"ranks", mpi.size()}, {"stages", stages}});
+}
+
+void run_mpi_rank(TransformArgs& a, Context& ctx, const std::string& cmd, MpiSession& mpi) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int r = mpi.rank(), P = mpi.size();
+  // Checks and reads without any exchange; a failure is agreed on below.
+  std::string failure;
+  NpyLayout lay;
+  Domain dom;
+  TransformOptions opt;
+  DType dtype = DType::U64;
+  std::string header;
+  std::vector<std::uint8_t> slab;
+  bool background = false;
+  try {
+    if (a.out_of_core || !a.memory.empty()) {
+      throw InvalidArgument("--mpi with --out-of-core or --memory: the ranks hold the volume "
+                            "between them in memory (give one or the other)");
+    }
+    if (extension(a.input) != ".npy" || extension(a.output) != ".npy") {
+      throw InvalidArgument("--mpi reads and writes .npy files (got " + a.input + " and " +
+                            a.output + ")");
+    }
+    if (!std::filesystem::exists(a.input)) throw IoError(a.input + ": no such file");
+    lay = read_npy_layout(a.input);
+    if (dtype_is_float(lay.dtype)) {
+      throw InvalidArgument("--mpi: " + a.input + " holds " + dtype_name(lay.dtype) +
+                            " values; the distributed transform reads integer or bool masks");
+    }
+    dom = npy_domain(a, lay);
+    opt = make_options(a, dom.dim());
+    // All cores by default: shared among the ranks of this machine.
+    if (a.threads == 0) {
+      opt.threads = std::max(1u, std::thread::hardware_concurrency() /
+                                     static_cast<unsigned>(std::max(1, mpi.local_size())));
+    }
+    const DistributedPart part = distributed_part(dom, r, P); // d >= 2
+    const auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
+    if (bounds.width != detail::ValueWidth::I32 && bounds.width != detail::ValueWidth::I64) {
+      throw InvalidArgument("--mpi: the intermediate values of " + opt.metric.name() +
+                            " on this domain need more than 64 bits; use the transform without "
+                            "--mpi");
+    }
+    std::vector<std::int64_t> out_shape = lay.shape;
+    std::uint64_t out_item = 8;
+    if (cmd == "voronoi") {
+      dtype = DType::I64;
+      out_shape.push_back(dom.dim());
+      out_item = 8 * static_cast<std::uint64_t>(dom.dim());
+    } else {
+      const BigInt bound = distance_transform_max_value(dom, opt);
+      dtype = narrowest_unsigned(bound).value_or(DType::U64);
+      out_item = dtype_size(dtype);
+    }
+    if (static_cast<std::uint64_t>(part.columns.size()) * out_item > INT_MAX ||
+        dom.extent(0) > INT_MAX) {
+      throw InvalidArgument("--mpi: a rank's rows of " + std::to_string(part.columns.size()) +
+                            " values pass MPI-IO's int counts: use more ranks");
+    }
+    header = npy_header_bytes(dtype, out_shape);
+    if (r == 0) {
+      check_paths(a);
+      ReservedFile f(a.staged, header.size() + static_cast<std::uint64_t>(dom.size()) * out_item);
+      f.write(0, header.data(), header.size());
+      f.finish();
+    }
+    const auto item = dtype_size(lay.dtype);
+    const auto uslice = static_cast<std::uint64_t>(dom.stride(0));
+    slab.resize(static_cast<std::size_t>(part.slices.size()) * uslice * item);
+    mpi.read(a.input,
+             lay.data_offset + static_cast<std::uint64_t>(part.slices.begin) * uslice * item,
+             slab.data(), slab.size());
+    for (std::size_t i = 0; i < slab.size() && !background; i += item) {
+      background = std::all_of(slab.begin() + static_cast<std::ptrdiff_t>(i),
+                               slab.begin() + static_cast<std::ptrdiff_t>(i + item),
+                               [](std::uint8_t b) { return b == 0; });
+    }
+  } catch (const std::bad_alloc&) {
+    failure = "out of memory";
+  } catch (const std::exception& e) {
+    failure = e.what();
+    if (failure.empty()) failure = "unknown error";
+  }
+  const bool any_background = mpi.max_over_ranks(background ? 1 : 0) != 0; // (every rank)
+  if (failure.empty() && !any_background) {
+    try {
+      detail::throw_no_background(opt);
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+  }
+  // Reported once, by the lowest failing rank, before any rank exits (mpiexec ends the whole
+  // job when a rank exits with a failure: a message still unwritten would be lost).
+  const auto first_failed = static_cast<int>(mpi.min_over_ranks(failure.empty() ? P : r));
+  if (first_failed < P) {
+    if (r == first_failed) std::cerr << "zdg: " << failure << std::endl;
+    // Rank 0's staged output goes before the last collective step: once a rank exits with a
+    // failure, mpiexec kills the others, and rank 0 could be killed before its OutputSet's
+    // destructor runs (1 run in 15 left the staging file behind).
+    // (check_paths may itself have failed: then nothing was staged.)
+    if (r == 0 && a.outputs && !a.staged.empty()) a.outputs->drop(a.output);
+    mpi.max_over_ranks(0);
+    ctx.exit_code = 2;
+    return;
+  }
+  with_unsigned(dtype, [&]<class T>(std::type_identity<T>) {
+    mpi_transform_as<T>(a, mpi, cmd, lay, dom, opt, dtype, slab, header, t0);
+  });
+}
+
+void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
+  MpiSession mpi; // refuses a zdg built without MPI, or a process not started by mpirun
+  try {
+    run_mpi_rank(a, ctx, cmd, mpi);
+  } catch (const std::exception& e) {
+    // A failure the ranks did not agree on (the agreed ones return): the other ranks may be
+    // waiting in a collective step, and this rank's MPI_Finalize would wait for them forever.
+    abort_job(mpi, e.what(), a.staged);
+  }
+}
+
+} // namespace
+
+void add_transform_commands(CLI::App& app, Context& ctx) {
+  auto* tr = app.add_subcommand("transform",
+                                "separable exact l_p transforms of n-D images (.npy, .pgm, .vol)");
+  tr->require_subcommand(1);
+  struct Spec {
+    const char* name;
+    const char* help;
+    void (*run)(TransformArgs&);
+  };
+  static const Spec specs[] = {
+      {"dt",
+       "distance transform: d^p to the nearest 0 (squared for l2, d for linf); output the "
+       "narrowest unsigned dtype holding the largest possible value",
+       run_dt},
+      {"voronoi", "Voronoi map: coordinates of a nearest background point, int64 (*dims, d)",
+       run_voronoi},
+      {"power",
+       "power map of the sites v > 0 (v = radius^p): coordinates of the site "
+       "minimising d^p - v, int64 (*dims, d)",
+       run_power},
+      {"rdt", "reverse distance transform: uint8 union of the open balls d(c, y)^p < v(c)",
+       run_rdt},
+      {"rma", "reduced discrete medial axis: int64 (k, d+1) rows centre..., DT value", run_rma},
+  };
+  for (const auto& s : specs) {
+    auto args = std::make_shared<TransformArgs>();
+    auto* sub = tr->add_subcommand(s.name, s.help);
+    sub->add_option("IN", args->input, "input image (.npy, .pgm, .vol)")->required();
+    sub->add_option("-o,--output", args->output, "output file (written atomically)")->required();
+    sub->add_option("--metric", args->metric,
+                    "l1, l2, linf or lP (1 <= P <= 1000 and L^P < 2^4096, L the longest line)")
+        ->capture_default_str();
+    sub->add_option("--torus", args->torus, "periodic axes: comma list (0,2) or 'all'");
+    sub->add_option("--lower", args->lower, "lower bounds of the domain, comma list (default 0)");
+    sub->add_option("--threads", args->threads, "worker threads, 0..1024 (0 = all cores)")
+        ->check(CLI::Range(0u, 1024u))
+        ->capture_default_str();
+    sub->add_flag("--force", args->force, "replace the output file if it exists");
+    sub->add_flag("--json", args->json, "print a JSON summary on stdout");
+    if (std::string(s.name) == "dt") {
+      sub->add_flag("--out-of-core", args->out_of_core,
+                    "transform by slabs and column blocks through the mapped .npy files, within "
+                    "--memory (default 4G): for volumes larger than the memory");
+      sub->add_option("--memory", args->memory,
+                      "memory budget (512M, 16G): past it, the transform runs out of core");
+    }
+    if (std::string(s.name) == "dt" || std::string(s.name) == "voronoi") {
+      sub->add_flag("--mpi", args->mpi,
+                    "one rank of an MPI job (mpirun -np P zdg transform ... --mpi): slabs of "
+                    "slices per rank, .npy in and out through MPI-IO; the same values");
+      sub->add_flag("--quiet", args->quiet, "no progress on stderr");
+    }
+    auto run = s.run;
+    const std::string name = s.name;
+    sub->callback([args, run, name, &ctx] {
+      if (args->mpi) {
+        run_mpi(*args, ctx, name);
+      } else {
+        run(*args);
+      }
+    });
+  }
+}
+
+} // namespace zdg::cli

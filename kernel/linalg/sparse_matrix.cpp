@@ -1,0 +1,132 @@
+#include <zdg/kernel/linalg/sparse_matrix.hpp>
+
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace zdg {
+
+SparseMatrix SparseMatrix::from_triplets(std::int64_t rows, std::int64_t cols,
+                                         std::vector<SparseTriplet> triplets) {
+  if (rows < 0 || cols < 0)
+    throw InvalidArgument("sparse matrix: negative size " + std::to_string(rows) + " x " +
+                          std::to_string(cols));
+  for (const auto& t : triplets) {
+    if (t.row < 0 || t.row >= rows || t.col < 0 || t.col >= cols)
+      throw InvalidArgument("sparse matrix: entry (" + std::to_string(t.row) + ", " +
+                            std::to_string(t.col) + ") outside " + std::to_string(rows) + " x " +
+                            std::to_string(cols));
+  }
+  std::sort(triplets.begin(), triplets.end(), [](const SparseTriplet& a, const SparseTriplet& b) {
+    return a.row != b.row ? a.row < b.row : a.col < b.col;
+  });
+  SparseMatrix m;
+  m.rows = rows;
+  m.cols = cols;
+  m.row_start.assign(static_cast<std::size_t>(rows) + 1, 0);
+  for (std::size_t k = 0; k < triplets.size();) {
+    std::size_t e = k;
+    double v = 0;
+    while (e < triplets.size() && triplets[e].row == triplets[k].row &&
+           triplets[e].col == triplets[k].col)
+      v += triplets[e++].value;
+    m.column.push_back(triplets[k].col);
+    m.value.push_back(v);
+    ++m.row_start[static_cast<std::size_t>(triplets[k].row) + 1];
+    k = e;
+  }
+  for (std::size_t i = 0; i < static_cast<std::size_t>(rows); ++i)
+    m.row_start[i + 1] += m.row_start[i];
+  return m;
+}
+
+SparseMatrix SparseMatrix::diagonal(std::span<const double> d) {
+  SparseMatrix m;
+  m.rows = m.cols = static_cast<std::int64_t>(d.size());
+  m.row_start.resize(d.size() + 1);
+  for (std::size_t i = 0; i <= d.size(); ++i) m.row_start[i] = static_cast<std::int64_t>(i);
+  m.column.resize(d.size());
+  for (std::size_t i = 0; i < d.size(); ++i) m.column[i] = static_cast<std::int64_t>(i);
+  m.value.assign(d.begin(), d.end());
+  return m;
+}
+
+std::vector<double> SparseMatrix::multiply(std::span<const double> x, unsigned threads) const {
+  if (static_cast<std::int64_t>(x.size()) != cols)
+    throw InvalidArgument("sparse matrix: a vector of " + std::to_string(x.size()) +
+                          " entries for " + std::to_string(cols) + " columns");
+  std::vector<double> y(static_cast<std::size_t>(rows), 0.0);
+  parallel_chunks(rows, threads, [&](std::int64_t begin, std::int64_t end) {
+    for (std::int64_t i = begin; i < end; ++i) {
+      double s = 0;
+      for (std::int64_t k = row_start[std::size_t(i)]; k < row_start[std::size_t(i) + 1]; ++k)
+        s += value[std::size_t(k)] * x[std::size_t(column[std::size_t(k)])];
+      y[std::size_t(i)] = s;
+    }
+  });
+  return y;
+}
+
+double SparseMatrix::at(std::int64_t i, std::int64_t j) const {
+  if (i < 0 || i >= rows || j < 0 || j >= cols) return 0;
+  const auto b = column.begin() + row_start[std::size_t(i)];
+  const auto e = column.begin() + row_start[std::size_t(i) + 1];
+  const auto it = std::lower_bound(b, e, j);
+  return it != e && *it == j ? value[std::size_t(it - column.begin())] : 0.0;
+}
+
+SparseMatrix SparseMatrix::transpose() const {
+  SparseMatrix t;
+  t.rows = cols;
+  t.cols = rows;
+  t.row_start.assign(static_cast<std::size_t>(cols) + 1, 0);
+  for (auto c : column) ++t.row_start[std::size_t(c) + 1];
+  for (std::size_t j = 0; j < static_cast<std::size_t>(cols); ++j)
+    t.row_start[j + 1] += t.row_start[j];
+  t.column.resize(column.size());
+  t.value.resize(value.size());
+  std::vector<std::int64_t> next(t.row_start.begin(), t.row_start.end() - 1);
+  for (std::int64_t i = 0; i < rows; ++i) {
+    for (std::int64_t k = row_start[std::size_t(i)]; k < row_start[std::size_t(i) + 1]; ++k) {
+      const auto p = std::size_t(next[std::size_t(column[std::size_t(k)])]++);
+      t.column[p] = i;
+      t.value[p] = value[std::size_t(k)];
+    }
+  }
+  return t;
+}
+
+double SparseMatrix::asymmetry() const {
+  if (rows != cols)
+    throw InvalidArgument("sparse matrix: asymmetry of a " + std::to_string(rows) + " x " +
+                          std::to_string(cols) + " matrix");
+  double worst = 0;
+  for (std::int64_t i = 0; i < rows; ++i) {
+    for (std::int64_t k = row_start[std::size_t(i)]; k < row_start[std::size_t(i) + 1]; ++k) {
+      const double d = std::abs(value[std::size_t(k)] - at(column[std::size_t(k)], i));
+      if (!(d <= worst)) worst = d;
+    }
+  }
+  return worst;
+}
+
+SparseMatrix add(double s, const SparseMatrix& a, double t, const SparseMatrix& b) {
+  if (a.rows != b.rows || a.cols != b.cols)
+    throw InvalidArgument("sparse matrix: sum of a " + std::to_string(a.rows) + " x " +
+                          std::to_string(a.cols) + " and a " + std::to_string(b.rows) + " x " +
+                          std::to_string(b.cols) + " matrix");
+  std::vector<SparseTriplet> tr;
+  tr.reserve(a.column.size() + b.column.size());
+  for (const auto* m : {&a, &b}) {
+    const double f = m == &a ? s : t;
+    for (std::int64_t i = 0; i < m->rows; ++i)
+      for (std::int64_t k = m->row_start[std::size_t(i)]; k < m->row_start[std::size_t(i) + 1]; ++k)
+        tr.push_back({i, m->column[std::size_t(k)], f * m->value[std::size_t(k)]});
+  }
+  return SparseMatrix::from_triplets(a.rows, a.cols, std::move(tr));
+}
+
+} // namespace zdg

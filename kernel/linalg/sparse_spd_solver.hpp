@@ -1,0 +1,69 @@
+// Direct solver of sparse symmetric positive definite systems A x = b: one sparse Cholesky
+// factorization (fill-reducing ordering, then A = L D L^T or L L^T), then any number of solves
+// by two triangular sweeps. The systems of the discrete calculus (the Ambrosio-Tortorelli
+// steps, the heat method's (M - t L) u = delta and L phi = div X) are of this kind.
+//
+// Backends: SuiteSparse CHOLMOD (supernodal Cholesky, Chen, Davis, Hager, Rajamanickam, ACM
+// TOMS 2008) when zdg was built with it (CMake option ZDG_CHOLMOD, default AUTO: used when
+// Debian's libsuitesparse-dev is found), else Eigen's SimplicialLDLT (AMD ordering). CHOLMOD is
+// not linked: its shared library (and OpenBLAS, LAPACK, METIS behind it) is loaded at the first
+// solver that asks for it, so that processes that solve nothing do not pay for loading them.
+// `automatic` takes CHOLMOD when it loads; backend() says which served. Cost: O(nnz(L))
+// memory and about sum over columns of nnz(L_j)^2 flops to factor; for the 2-manifold surface
+// meshes here (nested-dissection-like orderings) nnz(L) is about n log n and the factorization
+// about n^{3/2}; a solve is O(nnz(L)).
+//
+// Input requirements: A square, symmetric (only its lower triangle is read), positive definite;
+// otherwise the factorization fails and the constructor throws zdg::Error naming the backend.
+// Widths: the factorization uses 32-bit indices (Eigen's default), so n and nnz(A) must be
+// below 2^31 (InvalidArgument past it); values double. Not thread-safe (CHOLMOD's workspace is
+// shared by the solves of one factorization): one solver per thread.
+#pragma once
+
+#include <zdg/kernel/linalg/sparse_matrix.hpp>
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace zdg {
+
+enum class SpdBackend { automatic, cholmod, eigen_ldlt };
+
+/// "cholmod", "eigen-simplicial-ldlt" (automatic: "automatic").
+std::string spd_backend_name(SpdBackend backend);
+
+class SparseSpdSolver {
+public:
+  /// Factors A. InvalidArgument when A is not square or too large, or when `cholmod` is asked
+  /// for and zdg was built without it; Error when the factorization fails.
+  explicit SparseSpdSolver(const SparseMatrix& a, SpdBackend backend = SpdBackend::automatic);
+  ~SparseSpdSolver();
+  SparseSpdSolver(SparseSpdSolver&&) noexcept;
+  SparseSpdSolver& operator=(SparseSpdSolver&&) noexcept;
+
+  /// Factors B, a matrix with the same size and the same stored pattern as the A of the
+  /// constructor (the pattern of the last matrix factored), reusing the fill-reducing ordering
+  /// and the symbolic analysis: the numeric factorization only (the iterations of the
+  /// Ambrosio-Tortorelli minimisation change the values, not the pattern). InvalidArgument when
+  /// the pattern differs; Error when the factorization fails (the solver is then unusable).
+  void refactor(const SparseMatrix& b);
+  /// x with A x = b (b has n entries; InvalidArgument otherwise).
+  std::vector<double> solve(std::span<const double> b) const;
+  std::int64_t size() const;
+  /// The backend that factored A (never `automatic`).
+  SpdBackend backend() const;
+
+  /// Whether CHOLMOD serves: zdg was built with it and its library loads (at the first call).
+  static bool cholmod_available();
+  /// The CHOLMOD library zdg loads at its first use ("libcholmod.so.3"; empty when built
+  /// without CHOLMOD).
+  static std::string cholmod_library();
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+} // namespace zdg

@@ -1,0 +1,176 @@
+// zdg topology: JSON summaries, outputs checked against the kernel, bad-input rows.
+#include "tests/support/binary_images.hpp"
+#include "tests/support/cli.hpp"
+#include <zdg/kernel/io/npy_io.hpp>
+#include <zdg/kernel/io/pgm_io.hpp>
+#include <zdg/kernel/topology/betti_numbers.hpp>
+#include <zdg/kernel/topology/connected_components.hpp>
+#include <zdg/kernel/topology/critical_kernel_thinning.hpp>
+#include <zdg/kernel/topology/homotopic_thinning.hpp>
+#include <zdg/kernel/topology/simple_points.hpp>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+namespace zdg {
+namespace {
+
+struct Files {
+  std::filesystem::path dir = test::scratch_dir("topology");
+  ~Files() { std::filesystem::remove_all(dir); }
+  std::string operator()(const std::string& name) const {
+    return "'" + (dir / name).string() + "'";
+  }
+  std::string path(const std::string& name) const { return (dir / name).string(); }
+};
+
+void save(const std::string& path, const Image<std::uint8_t>& img) {
+  write_npy(path, make_npy<std::uint8_t>(img.domain().extents(), img.values()));
+}
+
+Image<std::uint8_t> load_mask(const std::string& path) {
+  return npy_to_mask(read_npy(path));
+}
+
+TEST(TopologyCommands, BettiJsonIn3DAnd2D) {
+  Files f;
+  const auto torus = test::torus_image(8, 3);
+  save(f.path("torus.npy"), torus);
+  for (const std::string pair : {"26,6", "6,26", "18,6", "6,18"}) {
+    auto r = test::run_zdg("topology betti " + f("torus.npy") + " --adjacency " + pair + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["betti"], nlohmann::json::array({"1", "1", "0"}));
+    EXPECT_EQ(j["components"], "1");
+    EXPECT_EQ(j["adjacency"], pair);
+    std::int64_t n = 0;
+    for (auto v : torus.values()) n += v;
+    EXPECT_EQ(j["voxels"], std::to_string(n));
+    EXPECT_TRUE(j["seconds"].is_number());
+  }
+  // 2D from a PGM with a threshold: an annulus of grey level 200 on 100: (1, 1).
+  const auto ring = test::annulus_image(10, 20, 90);
+  Image<std::uint64_t> grey(ring.domain(), std::uint64_t{100});
+  for (std::int64_t i = 0; i < ring.size(); ++i) {
+    if (ring[i] != 0) grey[i] = 200;
+  }
+  write_pgm(f.path("ring.pgm"), grey);
+  auto r = test::run_zdg("topology betti " + f("ring.pgm") + " --threshold 150 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["betti"], nlohmann::json::array({"1", "1"}));
+  EXPECT_EQ(j["adjacency"], "8,4");
+}
+
+TEST(TopologyCommands, OutputsEqualTheKernel) {
+  Files f;
+  const auto img = test::torus_image(9, 3);
+  save(f.path("in.npy"), img);
+  // Components: labels by decreasing size.
+  auto r = test::run_zdg("topology components " + f("in.npy") + " -o " + f("lab.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto labels = npy_to_int64(read_npy(f.path("lab.npy")));
+  const auto c = connected_components(img, 26);
+  for (std::int64_t i = 0; i < img.size(); ++i) EXPECT_EQ(labels[i], c.labels[i]);
+  // Skeleton (sequential, curve) and thin (critical kernel, ultimate).
+  r = test::run_zdg("topology skeleton " + f("in.npy") + " -o " + f("sk.npy") + " --json --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ThinningOptions opt;
+  opt.skeleton = SkeletonKind::curve;
+  const auto sk = homotopic_thinning(img, opt);
+  EXPECT_EQ(load_mask(f.path("sk.npy")), sk.skeleton);
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["deleted"], std::to_string(sk.deleted));
+  EXPECT_EQ(j["betti"], nlohmann::json::array({"1", "1", "0"}));
+  r = test::run_zdg("topology thin " + f("in.npy") + " -o " + f("th.npy") +
+                    " --method critical-kernel --threads 3 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(load_mask(f.path("th.npy")), critical_kernel_thinning(img).skeleton);
+  // A user priority (the opposite of the axis-0 coordinate) and anchors.
+  Image<std::int64_t> prio(img.domain(), std::int64_t{0});
+  Image<std::uint8_t> anchors(img.domain(), std::uint8_t{0});
+  for (std::int64_t i = 0; i < img.size(); ++i) prio[i] = -img.domain().point(i)[0];
+  anchors[img.size() / 2] = 1;
+  write_npy(f.path("prio.npy"), make_npy<std::int64_t>(img.domain().extents(), prio.values()));
+  save(f.path("anchors.npy"), anchors);
+  r = test::run_zdg("topology thin " + f("in.npy") + " -o " + f("p.npy") + " --priority " +
+                    f("prio.npy") + " --anchors " + f("anchors.npy") + " --adjacency 6,26");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ThinningOptions po;
+  po.pair = {3, 6, 26};
+  po.priority = &prio;
+  po.anchors = &anchors;
+  EXPECT_EQ(load_mask(f.path("p.npy")), homotopic_thinning(img, po).skeleton);
+  // Simple points.
+  r = test::run_zdg("topology simple " + f("in.npy") + " -o " + f("s.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto s = load_mask(f.path("s.npy"));
+  std::int64_t count = 0;
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    if (img[i] == 0) continue;
+    const bool simple = is_simple_by_definition({3, 26, 6}, neighbourhood_configuration(img, i));
+    EXPECT_EQ(s[i] != 0, simple);
+    count += simple;
+  }
+  EXPECT_EQ(nlohmann::json::parse(r.out)["simple"], std::to_string(count));
+}
+
+// Bad input: one line on stderr, exit 2, nothing created, an existing output untouched.
+TEST(TopologyCommands, BadInputRows) {
+  Files f;
+  save(f.path("in.npy"), test::torus_image(6, 2));
+  save(f.path("empty.npy"), Image<std::uint8_t>(Domain({4, 4, 4}), std::uint8_t{0}));
+  write_npy(f.path("prio.npy"),
+            make_npy<std::int64_t>({4, 4, 5}, std::vector<std::int64_t>(80, 0)));
+  save(f.path("line.npy"), Image<std::uint8_t>(Domain({5}), std::uint8_t{1}));
+  {
+    std::ofstream keep(f.path("existing.npy"));
+    keep << "keep me";
+  }
+  struct Row {
+    std::string args, message;
+  };
+  const Row rows[] = {
+      {"betti " + f("empty.npy"), "empty selection"},
+      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --threshold 2", "empty selection"},
+      {"betti " + f("in.npy") + " --adjacency 26,26", "not admissible"},
+      {"betti " + f("in.npy") + " --adjacency 8,4", "not admissible"},
+      {"components " + f("in.npy") + " --adjacency 6-26", "is not K,KBAR"},
+      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --priority " + f("prio.npy"),
+       "another size"},
+      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --anchors " + f("prio.npy"), "another size"},
+      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --method magic", "--method"},
+      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --skeleton bones", "skeleton"},
+      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --method critical-kernel --adjacency 6,26",
+       "critical-kernel"},
+      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --method critical-kernel --priority " +
+           f("in.npy"),
+       "sequential only"},
+      {"thin " + f("in.npy"), "no output"},
+      {"thin " + f("in.npy") + " -o " + f("o.txt"), "unknown output format"},
+      {"thin " + f("in.npy") + " -o " + f("o.pgm"), ".pgm image is 2D"},
+      {"thin " + f("in.npy") + " -o " + f("existing.npy"), "exists"},
+      {"components " + f("in.npy") + " -o " + f("in.npy") + " --force", "input file"},
+      {"betti " + f("missing.npy"), "no such file"},
+      {"betti " + f("line.npy"), "1-D image"},
+      {"betti " + f("in.npy") + " -o " + f("o.npy"), "writes no file"},
+  };
+  for (const auto& row : rows) {
+    const auto before = std::distance(std::filesystem::directory_iterator(f.dir),
+                                      std::filesystem::directory_iterator{});
+    auto r = test::run_zdg("topology " + row.args);
+    EXPECT_EQ(r.status, 2) << row.args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(row.message), std::string::npos) << row.args << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << row.args;
+    const auto after = std::distance(std::filesystem::directory_iterator(f.dir),
+                                     std::filesystem::directory_iterator{});
+    EXPECT_EQ(after, before) << row.args;
+    EXPECT_EQ(test::read_file(f.path("existing.npy")), "keep me");
+  }
+}
+
+} // namespace
+} // namespace zdg

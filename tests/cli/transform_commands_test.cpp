@@ -1,0 +1,197 @@
+// zdg transform: JSON summaries, outputs checked against the kernel, error exits.
+#include "tests/support/cli.hpp"
+#include <zdg/kernel/io/npy_io.hpp>
+#include <zdg/kernel/transforms/distance_transform.hpp>
+#include <zdg/kernel/transforms/reverse_distance_transform.hpp>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace zdg {
+namespace {
+
+struct Files {
+  std::filesystem::path dir = test::scratch_dir("transform");
+  ~Files() { std::filesystem::remove_all(dir); }
+  std::string operator()(const std::string& name) const {
+    std::string q(1, '\'');
+    q.append((dir / name).string());
+    q.push_back('\'');
+    return q;
+  }
+  std::string path(const std::string& name) const { return (dir / name).string(); }
+};
+
+// A 4 x 5 shape with one background point and a hole pattern.
+Image<std::uint8_t> small_shape() {
+  return Image<std::uint8_t>(
+      Domain({4, 5}),
+      std::vector<std::uint8_t>{1, 1, 1, 1, 1, 1, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 0, 1});
+}
+
+TEST(TransformCommands, DtWritesTheDistanceTransform) {
+  Files f;
+  auto shape = small_shape();
+  write_npy(f.path("in.npy"), make_npy<std::uint8_t>({4, 5}, shape.values()));
+  for (const std::string metric : {"l1", "l2", "l3", "linf"}) {
+    auto r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") +
+                           " --force --metric " + metric + " --torus 1 --threads 2 --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["metric"], metric);
+    EXPECT_EQ(j["shape"], nlohmann::json::array({4, 5}));
+    EXPECT_EQ(j["torus"], nlohmann::json::array({1}));
+    EXPECT_EQ(j["dtype"], "uint8");
+    TransformOptions opt;
+    opt.metric = parse_metric(metric);
+    opt.torus = {false, true};
+    auto dt = distance_transform<std::int64_t>(shape, opt);
+    EXPECT_EQ(npy_to_int64(read_npy(f.path("out.npy"))).values(), dt.values());
+    std::int64_t mx = *std::max_element(dt.values().begin(), dt.values().end());
+    EXPECT_EQ(j["max_value"], std::to_string(mx));
+  }
+}
+
+TEST(TransformCommands, OutputDtypeIsTheNarrowestForTheBound) {
+  Files f;
+  Image<std::uint8_t> img(Domain({300}), std::uint8_t{1});
+  img[0] = 0;
+  write_npy(f.path("in.npy"), make_npy<std::uint8_t>({300}, img.values()));
+  auto r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["dtype"], "uint32"); // 299^2 > 65535
+  EXPECT_EQ(read_npy(f.path("out.npy")).dtype, DType::U32);
+  EXPECT_EQ(npy_to_int64(read_npy(f.path("out.npy"))).values()[299], 299 * 299);
+  r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") +
+                    " --force --metric l1 --json");
+  EXPECT_EQ(nlohmann::json::parse(r.out)["dtype"], "uint16");
+}
+
+// The mapped path reads an integer .npy of any width in place (nonzero = foreground, negative
+// values included), as the general path reads it through npy_to_mask; float inputs take the
+// general path (-0.0 is background). Same transform for each.
+TEST(TransformCommands, DtReadsEveryDtypeOfTheInput) {
+  Files f;
+  const std::vector<std::int64_t> values{3, -1, 0, 7, 1, 1, 256, -32768, 1, 1, 0, 1};
+  Image<std::uint8_t> mask(Domain({3, 4}));
+  for (std::size_t i = 0; i < values.size(); ++i) mask.values()[i] = values[i] != 0 ? 1 : 0;
+  const auto expect = distance_transform<std::int64_t>(mask, {});
+  for (DType t : {DType::I16, DType::I32, DType::I64}) {
+    write_npy(f.path("in.npy"), make_npy(t, {3, 4}, values));
+    auto r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") + " --force");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(npy_to_int64(read_npy(f.path("out.npy"))).values(), expect.values()) << dtype_name(t);
+  }
+  std::vector<double> fv(values.begin(), values.end());
+  fv[2] = -0.0;
+  write_npy(f.path("in.npy"), make_npy<double>({3, 4}, fv));
+  auto r = test::run_zdg("transform dt " + f("in.npy") + " -o " + f("out.npy") + " --force");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(npy_to_int64(read_npy(f.path("out.npy"))).values(), expect.values());
+}
+
+// An output larger than the disk allows (here a file-size limit: the same EFBIG/ENOSPC from the
+// space reservation) is refused before the transform runs: one line, exit 2, no file left.
+TEST(TransformCommands, AnOutputThatDoesNotFitIsOneLineAndNoFile) {
+  Files f;
+  Image<std::uint8_t> img(Domain({128, 128, 128}), std::uint8_t{1});
+  img[0] = 0;
+  write_npy(f.path("in.npy"), make_npy<std::uint8_t>({128, 128, 128}, img.values()));
+  const std::string err = f.path("err");
+  // A 1 MiB limit on the files written (2048 blocks of 512 bytes): the 4 MiB uint16 output does
+  // not fit (the 2 MiB input is only read).
+  const std::string cmd = "ulimit -f 2048; '" + std::string(test::cli_path()) + "' transform dt " +
+                          f("in.npy") + " -o " + f("out.npy") + " 2>'" + err + "'";
+  const int raw = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 2);
+  const std::string text = test::read_file(err);
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_NE(text.find("does not fit on the disk"), std::string::npos) << text;
+  EXPECT_FALSE(std::filesystem::exists(f.path("out.npy")));
+  for (const auto& e : std::filesystem::directory_iterator(f.dir)) {
+    EXPECT_EQ(e.path().filename().string().find(".zdg-tmp"), std::string::npos) << e.path();
+  }
+}
+
+TEST(TransformCommands, VoronoiPowerRdtRma) {
+  Files f;
+  auto shape = small_shape();
+  write_npy(f.path("in.npy"), make_npy<std::uint8_t>({4, 5}, shape.values()));
+  auto r =
+      test::run_zdg("transform voronoi " + f("in.npy") + " -o " + f("vor.npy") + " --lower -2,3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto vor = read_npy(f.path("vor.npy"));
+  EXPECT_EQ(vor.shape, (std::vector<std::int64_t>{4, 5, 2}));
+  // point (0, 0) of the array is (-2, 3); its nearest background is array (1, 1) = (-1, 4)
+  EXPECT_EQ(vor.get(0), -1);
+  EXPECT_EQ(vor.get(1), 4);
+
+  r = test::run_zdg("transform rma " + f("in.npy") + " -o " + f("rma.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto rma = read_npy(f.path("rma.npy"));
+  ASSERT_EQ(rma.shape.size(), 2u);
+  EXPECT_EQ(rma.shape[1], 3);
+  EXPECT_EQ(nlohmann::json::parse(r.out)["balls"], rma.shape[0]);
+  // the medial balls, as an image of values, rebuild the shape through `zdg transform rdt`
+  std::vector<std::int64_t> v(20, 0);
+  for (std::int64_t b = 0; b < rma.shape[0]; ++b)
+    v[static_cast<std::size_t>(rma.get(3 * b) * 5 + rma.get(3 * b + 1))] = rma.get(3 * b + 2);
+  write_npy(f.path("balls.npy"), make_npy<std::int64_t>({4, 5}, v));
+  r = test::run_zdg("transform rdt " + f("balls.npy") + " -o " + f("rdt.npy"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(npy_to_mask(read_npy(f.path("rdt.npy"))).values(), shape.values());
+
+  r = test::run_zdg("transform power " + f("balls.npy") + " -o " + f("pow.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_npy(f.path("pow.npy")).shape, (std::vector<std::int64_t>{4, 5, 2}));
+}
+
+TEST(TransformCommands, PgmAndVolFormats) {
+  Files f;
+  std::ofstream(f.path("in.pgm")) << "P2\n3 2\n1\n1 1 1\n1 0 1\n";
+  auto r = test::run_zdg("transform dt " + f("in.pgm") + " -o " + f("out.pgm"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = test::run_zdg("transform dt " + f("out.pgm") + " -o " + f("out2.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ofstream(f.path("in.vol"), std::ios::binary) << "X: 3\nY: 1\nZ: 1\nVersion: 2\n.\n"
+                                                    << std::string("\x01\x00\x01", 3);
+  r = test::run_zdg("transform dt " + f("in.vol") + " -o " + f("out.vol") + " --metric l1");
+  ASSERT_EQ(r.status, 0) << r.err;
+}
+
+TEST(TransformCommands, ErrorsExitTwoAndLeaveNoOutput) {
+  Files f;
+  write_npy(f.path("full.npy"), make_npy<std::uint8_t>({3, 3}, std::vector<std::uint8_t>(9, 1)));
+  write_npy(f.path("in.npy"), make_npy<std::uint8_t>({4, 5}, small_shape().values()));
+  std::ofstream(f.path("empty.npy")) << "";
+  struct Case {
+    std::string args, message;
+  };
+  const Case cases[] = {
+      {"transform dt " + f("full.npy") + " -o " + f("out.npy"), "no background"},
+      {"transform dt " + f("empty.npy") + " -o " + f("out.npy"), "empty file"},
+      {"transform dt " + f("in.npy") + " -o " + f("out.npy") + " --metric l0", "p = 0"},
+      {"transform dt " + f("in.npy") + " -o " + f("out.npy") + " --torus 2", "axis 2"},
+      {"transform dt " + f("in.npy") + " -o " + f("out.npy") + " --lower 1,2,3", "--lower"},
+      {"transform dt " + f("in.npy") + " -o " + f("in.npy"), "refusing to overwrite"},
+      {"transform dt " + f("missing.npy") + " -o " + f("out.npy"), "missing.npy"},
+      {"transform power " + f("in.npy") + " -o " + f("out.npy") + " --metric linf", "linf"},
+      {"transform voronoi " + f("in.npy") + " -o " + f("out.pgm"), ".npy"},
+  };
+  for (const auto& c : cases) {
+    auto r = test::run_zdg(c.args);
+    EXPECT_EQ(r.status, 2) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << " -> " << r.err;
+    EXPECT_EQ(r.err.rfind("zdg: ", 0), 0u) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(f.path("out.npy"))) << c.args;
+  }
+  // the input was not touched
+  EXPECT_EQ(npy_to_mask(read_npy(f.path("in.npy"))).values(), small_shape().values());
+  auto r = test::run_zdg("transform dt --help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("--metric"), std::string::npos);
+}
+
+} // namespace
+} // namespace zdg

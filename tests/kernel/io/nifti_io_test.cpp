@@ -1,0 +1,340 @@
+// NIfTI through the reference library, checked against nibabel (Debian python3-nibabel) as
+// the independent reader and writer.
+#include <zdg/kernel/io/nifti_io.hpp>
+
+#include "tests/support/cli.hpp"
+#include "tests/support/python.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+namespace zdg {
+namespace {
+
+namespace fs = std::filesystem;
+
+void spit(const fs::path& p, const std::string& bytes) {
+  std::ofstream(p, std::ios::binary) << bytes;
+}
+
+// A volume of dtype t with values from `seed` (every byte pattern allowed for integers;
+// finite values for floats).
+ScalarVolume sample_volume(DType t, std::vector<std::int64_t> shape, unsigned seed) {
+  NpyArray a;
+  a.dtype = t;
+  a.shape = std::move(shape);
+  a.bytes.resize(static_cast<std::size_t>(a.count()) * dtype_size(t));
+  std::uint64_t x = seed * 0x9E3779B97F4A7C15ull + 1;
+  for (std::size_t i = 0; i < a.bytes.size(); ++i) {
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    a.bytes[i] = static_cast<unsigned char>(x);
+  }
+  if (t == DType::F32) {
+    for (std::int64_t i = 0; i < a.count(); ++i) {
+      const float f = static_cast<float>(i) * 0.25f - 3.0f;
+      std::memcpy(a.bytes.data() + 4 * i, &f, 4);
+    }
+  }
+  if (t == DType::F64) {
+    for (std::int64_t i = 0; i < a.count(); ++i) {
+      const double f = std::sin(static_cast<double>(i) + seed) * 1e3;
+      std::memcpy(a.bytes.data() + 8 * i, &f, 8);
+    }
+  }
+  return make_scalar_volume(std::move(a));
+}
+
+const DType kNiftiTypes[] = {DType::U8,  DType::I8,  DType::U16, DType::I16, DType::U32,
+                             DType::I32, DType::U64, DType::I64, DType::F32, DType::F64};
+
+// Round-trip theorem: read(write(V)) keeps the dtype, the shape, the bytes, and spacing,
+// origin and scaling as float32 (NIfTI-1 stores them so); write(read(F)) = F byte for byte,
+// compressed or not.
+RC_GTEST_PROP(NiftiIo, RoundTripIsBitIdentical, ()) {
+  const DType t =
+      *rc::gen::elementOf(std::vector<DType>(std::begin(kNiftiTypes), std::end(kNiftiTypes)));
+  const int d = *rc::gen::inRange(2, 4);
+  const auto shape = *rc::gen::container<std::vector<std::int64_t>>(static_cast<std::size_t>(d),
+                                                                    rc::gen::inRange(1, 6));
+  ScalarVolume v = sample_volume(t, shape, *rc::gen::inRange(0u, 1000u));
+  for (int k = 0; k < d; ++k) {
+    v.spacing[static_cast<std::size_t>(k)] = *rc::gen::inRange(1, 400) / 100.0;
+    v.origin[static_cast<std::size_t>(k)] = *rc::gen::inRange(-500, 500) / 10.0;
+  }
+  if (*rc::gen::arbitrary<bool>()) {
+    v.slope = *rc::gen::inRange(1, 50) / 8.0;
+    v.inter = *rc::gen::inRange(-100, 100) / 4.0;
+  }
+  const bool gz = *rc::gen::arbitrary<bool>();
+  const auto dir = test::scratch_dir("nifti");
+  const std::string a = (dir / (gz ? "a.nii.gz" : "a.nii")).string();
+  const std::string b = (dir / (gz ? "b.nii.gz" : "b.nii")).string();
+  write_nifti(a, v);
+  const ScalarVolume back = read_nifti(a);
+  RC_ASSERT(back.array.dtype == t);
+  RC_ASSERT(back.array.shape == shape);
+  RC_ASSERT(back.array.bytes == v.array.bytes);
+  RC_ASSERT(back.lower == std::vector<std::int64_t>(static_cast<std::size_t>(d), 0));
+  for (int k = 0; k < d; ++k) {
+    const auto kk = static_cast<std::size_t>(k);
+    RC_ASSERT(back.spacing[kk] == static_cast<double>(static_cast<float>(v.spacing[kk])));
+    RC_ASSERT(back.origin[kk] == static_cast<double>(static_cast<float>(v.origin[kk])));
+  }
+  RC_ASSERT(back.slope == static_cast<double>(static_cast<float>(v.slope)));
+  RC_ASSERT(back.inter == static_cast<double>(static_cast<float>(v.inter)));
+  write_nifti(b, back);
+  RC_ASSERT(test::read_file(a) == test::read_file(b));
+  fs::remove_all(dir);
+}
+
+TEST(NiftiIo, BoolIsStoredAsUint8AndNamesAreChecked) {
+  const auto dir = test::scratch_dir("nifti");
+  ScalarVolume v = sample_volume(DType::U8, {2, 3}, 1);
+  for (auto& b : v.array.bytes) b &= 1;
+  v.array.dtype = DType::Bool;
+  write_nifti((dir / "m.nii").string(), v);
+  const auto back = read_nifti((dir / "m.nii").string());
+  EXPECT_EQ(back.array.dtype, DType::U8);
+  EXPECT_EQ(back.array.bytes, v.array.bytes);
+  EXPECT_THROW(write_nifti((dir / "m.img").string(), v), IoError);
+  EXPECT_THROW(read_nifti((dir / "m.hdr").string()), IoError);
+  EXPECT_THROW(read_nifti((dir / "missing.nii").string()), IoError);
+  fs::remove_all(dir);
+}
+
+// What we write, nibabel reads: dtype, shape (nibabel's (x, y, z) is our (z, y, x)
+// reversed), pixdim, scaling, the qform offset and every value.
+TEST(NiftiIo, NibabelReadsWhatZdgWrites) {
+  if (!test::python_has("nibabel, numpy")) GTEST_SKIP() << "python3-nibabel is not installed";
+  const auto dir = test::scratch_dir("nifti");
+  // One Python run reads every file (importing nibabel costs about a second).
+  const std::string code = R"(
+import sys, json, numpy as np, nibabel as nib
+out = []
+for path in sys.argv[1:]:
+    img = nib.load(path)
+    raw = np.asarray(img.dataobj.get_unscaled())
+    slope, inter = img.dataobj.slope, img.dataobj.inter  # nibabel moves scl_* there on load
+    out.append({"dtype": str(img.header.get_data_dtype().newbyteorder('<')),
+      "shape": list(raw.shape), "pixdim": [float(x) for x in img.header['pixdim'][1:raw.ndim + 1]],
+      "slope": float(slope), "inter": float(inter),
+      "offset": [float(x) for x in img.affine[:3, 3]],
+      "bytes": np.ascontiguousarray(raw.transpose()).astype(raw.dtype.newbyteorder('<')).tobytes().hex()})
+print(json.dumps(out))
+)";
+  const char* names[] = {"uint8", "int8",   "uint16", "int16",   "uint32",
+                         "int32", "uint64", "int64",  "float32", "float64"};
+  std::vector<ScalarVolume> written;
+  std::vector<std::string> paths, expected_dtype;
+  int i = 0;
+  for (std::size_t ti = 0; ti < std::size(kNiftiTypes); ++ti) {
+    for (bool gz : {false, true}) {
+      ScalarVolume v = sample_volume(kNiftiTypes[ti],
+                                     i % 2 == 0 ? std::vector<std::int64_t>{3, 4, 5}
+                                                : std::vector<std::int64_t>{4, 5},
+                                     static_cast<unsigned>(i));
+      v.spacing.back() = 0.5;
+      v.spacing.front() = 2.25;
+      v.origin.back() = -10.5;
+      if (i % 3 == 0) {
+        v.slope = 2.5;
+        v.inter = -1.0;
+      }
+      paths.push_back((dir / (std::to_string(i) + (gz ? ".nii.gz" : ".nii"))).string());
+      write_nifti(paths.back(), v);
+      written.push_back(v);
+      expected_dtype.push_back(names[ti]);
+      ++i;
+    }
+  }
+  const auto r = test::run_python(code, paths);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto all = nlohmann::json::parse(r.out);
+  ASSERT_EQ(all.size(), written.size());
+  for (std::size_t k = 0; k < written.size(); ++k) {
+    SCOPED_TRACE(paths[k]);
+    const auto& v = written[k];
+    const auto& j = all[k];
+    EXPECT_EQ(j["dtype"], expected_dtype[k]);
+    std::vector<std::int64_t> shape(v.array.shape.rbegin(), v.array.shape.rend());
+    EXPECT_EQ(j["shape"].get<std::vector<std::int64_t>>(), shape);
+    std::vector<double> pixdim(v.spacing.rbegin(), v.spacing.rend());
+    EXPECT_EQ(j["pixdim"].get<std::vector<double>>(), pixdim);
+    EXPECT_EQ(j["offset"][0].get<double>(), -10.5);
+    EXPECT_EQ(j["slope"].get<double>(), v.slope);
+    EXPECT_EQ(j["inter"].get<double>(), v.inter);
+    std::string hex;
+    for (unsigned char c : v.array.bytes) {
+      const char* digits = "0123456789abcdef";
+      hex.push_back(digits[c >> 4]);
+      hex.push_back(digits[c & 15]);
+    }
+    EXPECT_EQ(j["bytes"], hex);
+  }
+  fs::remove_all(dir);
+}
+
+// What nibabel writes, we read: the physical values slope * stored + inter (compared with
+// nibabel's get_fdata), pixdim as spacing, a big-endian file, NIfTI-2, 2D images.
+TEST(NiftiIo, ZdgReadsWhatNibabelWrites) {
+  if (!test::python_has("nibabel, numpy")) GTEST_SKIP() << "python3-nibabel is not installed";
+  const auto dir = test::scratch_dir("nifti");
+  const std::string code = R"(
+import sys, numpy as np, nibabel as nib
+d = sys.argv[1]
+rng = np.random.default_rng(7)
+def save(name, data, cls=nib.Nifti1Image, slope=None, inter=None, dtype=None, zooms=None):
+    img = cls(data, np.diag([1.0, 1.0, 1.0, 1.0]))
+    if dtype is not None: img.set_data_dtype(dtype)
+    if zooms is not None: img.header.set_zooms(zooms)
+    if slope is not None: img.header.set_slope_inter(slope, inter)
+    nib.save(img, d + '/' + name)
+    back = nib.load(d + '/' + name)
+    np.ascontiguousarray(back.get_fdata(dtype=np.float64).transpose()).tofile(d + '/' + name + '.f64')
+save('i16.nii', rng.integers(-300, 300, size=(5, 4, 3)).astype(np.int16), slope=2.0, inter=-3.0, zooms=(0.5, 0.75, 1.5))
+save('f32.nii.gz', rng.normal(size=(6, 5, 4)).astype(np.float32), zooms=(1.0, 2.0, 3.0))
+save('u16.nii.gz', rng.integers(0, 60000, size=(3, 3, 3)).astype(np.uint16))
+save('big.nii', rng.integers(-3000, 3000, size=(4, 3, 2)).astype('>i2'), dtype='>i2')
+save('n2.nii', rng.integers(0, 255, size=(4, 3, 5)).astype(np.uint8), cls=nib.Nifti2Image)
+save('flat.nii', rng.integers(0, 2, size=(7, 5)).astype(np.uint8))
+save('f64.nii', rng.normal(size=(2, 3, 4)), zooms=(0.1, 0.2, 0.3))
+)";
+  const auto r = test::run_python(code, {dir.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const std::string name :
+       {"i16.nii", "f32.nii.gz", "u16.nii.gz", "big.nii", "n2.nii", "flat.nii", "f64.nii"}) {
+    SCOPED_TRACE(name);
+    const auto v = read_nifti((dir / name).string());
+    const std::string expected = test::read_file(dir / (name + ".f64"));
+    ASSERT_EQ(expected.size(), static_cast<std::size_t>(v.count()) * 8);
+    for (std::int64_t i = 0; i < v.count(); ++i) {
+      double e = 0;
+      std::memcpy(&e, expected.data() + 8 * i, 8);
+      ASSERT_EQ(v.value(i), e) << "voxel " << i;
+    }
+    if (name == "i16.nii") {
+      EXPECT_EQ(v.array.dtype, DType::I16);
+      EXPECT_EQ(v.array.shape, (std::vector<std::int64_t>{3, 4, 5}));
+      EXPECT_EQ(v.spacing, (std::vector<double>{1.5, 0.75, 0.5}));
+      EXPECT_EQ(v.slope, 2.0);
+      EXPECT_EQ(v.inter, -3.0);
+    }
+    if (name == "big.nii") {
+      EXPECT_EQ(v.array.dtype, DType::I16);
+    }
+    if (name == "flat.nii") {
+      EXPECT_EQ(v.array.shape, (std::vector<std::int64_t>{5, 7}));
+    }
+    if (name == "f64.nii") {
+      EXPECT_NEAR(v.spacing[0], 0.3, 1e-7);
+      EXPECT_NEAR(v.spacing[2], 0.1, 1e-7);
+    }
+  }
+  fs::remove_all(dir);
+}
+
+void expect_io_error(const std::string& path, const std::string& words) {
+  try {
+    read_nifti(path);
+    ADD_FAILURE() << path << " was read; expected: " << words;
+  } catch (const IoError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(path, 0), 0u) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    EXPECT_NE(what.find(words), std::string::npos) << what << " (expected '" << words << "')";
+  }
+}
+
+template <class T>
+void patch(std::string& bytes, std::size_t offset, T value) {
+  std::memcpy(bytes.data() + offset, &value, sizeof(T));
+}
+
+// Bad files: one IoError on one line naming the file; the sizes of the header are checked
+// against the file before anything is allocated.
+TEST(NiftiIo, BadFilesAreOneLineErrors) {
+  const auto dir = test::scratch_dir("nifti");
+  const ScalarVolume v = sample_volume(DType::I16, {6, 7, 8}, 3);
+  write_nifti((dir / "good.nii").string(), v);
+  write_nifti((dir / "good.nii.gz").string(), v);
+  const std::string nii = test::read_file(dir / "good.nii");
+  const std::string gz = test::read_file(dir / "good.nii.gz");
+  ASSERT_EQ(nii.size(), 352u + 6 * 7 * 8 * 2);
+
+  spit(dir / "short.nii", nii.substr(0, nii.size() - 10));
+  expect_io_error((dir / "short.nii").string(), "but the file has 1014 bytes");
+  spit(dir / "header_only.nii", nii.substr(0, 200));
+  expect_io_error((dir / "header_only.nii").string(), "not a NIfTI-1/2 file");
+  spit(dir / "cut.nii.gz", gz.substr(0, gz.size() / 2));
+  expect_io_error((dir / "cut.nii.gz").string(), "truncated or corrupt NIfTI data");
+  std::string garbled = gz;
+  for (std::size_t i = 40; i < garbled.size() - 8; i += 7)
+    garbled[i] = static_cast<char>(~garbled[i]);
+  spit(dir / "garbled.nii.gz", garbled);
+  expect_io_error((dir / "garbled.nii.gz").string(), "garbled.nii.gz");
+  // Every byte decompresses but the gzip CRC is wrong: refused (the reader reads to the
+  // trailer), on a volume large enough that the header read does not reach it.
+  const ScalarVolume big = sample_volume(DType::U8, {64, 64, 64}, 7);
+  write_nifti((dir / "big.nii.gz").string(), big);
+  std::string crc = test::read_file(dir / "big.nii.gz");
+  crc[crc.size() - 8] = static_cast<char>(crc[crc.size() - 8] ^ 0x55);
+  spit(dir / "crc.nii.gz", crc);
+  expect_io_error((dir / "crc.nii.gz").string(), "truncated or corrupt NIfTI data");
+  spit(dir / "text.nii", std::string(400, 'x'));
+  expect_io_error((dir / "text.nii").string(), "not a NIfTI-1/2 file");
+  spit(dir / "empty.nii", "");
+  expect_io_error((dir / "empty.nii").string(), "empty file");
+
+  // NIfTI-1 dims (int16 at byte 40): 32767^3 voxels of int16 in a 1 KB file.
+  std::string huge = nii;
+  patch<std::int16_t>(huge, 42, 32767);
+  patch<std::int16_t>(huge, 44, 32767);
+  patch<std::int16_t>(huge, 46, 32767);
+  spit(dir / "huge.nii", huge);
+  expect_io_error((dir / "huge.nii").string(), "bytes from offset 352) but the file has");
+  spit(dir / "huge.nii.gz", huge); // not gzip, but named so: the bound on deflate applies
+  expect_io_error((dir / "huge.nii.gz").string(), "compressed bytes can hold at most");
+  // A 4-D dataset.
+  std::string four = nii;
+  patch<std::int16_t>(four, 40, 4);
+  patch<std::int16_t>(four, 48, 2);
+  spit(dir / "four.nii", four);
+  expect_io_error((dir / "four.nii").string(), "4-D or larger");
+  // Complex data.
+  std::string complex = nii;
+  patch<std::int16_t>(complex, 70, 32); // DT_COMPLEX64
+  patch<std::int16_t>(complex, 72, 64);
+  spit(dir / "complex.nii", complex);
+  expect_io_error((dir / "complex.nii").string(), "is not supported");
+  fs::remove_all(dir);
+}
+
+// NIfTI-2 dims are int64: a product past 2^63 is refused before anything else happens.
+TEST(NiftiIo, Nifti2DimsWhoseProductOverflows) {
+  if (!test::python_has("nibabel, numpy")) GTEST_SKIP() << "python3-nibabel is not installed";
+  const auto dir = test::scratch_dir("nifti");
+  const auto r = test::run_python(R"(
+import sys, numpy as np, nibabel as nib
+nib.save(nib.Nifti2Image(np.zeros((2, 2, 2), np.uint8), np.eye(4)), sys.argv[1])
+)",
+                                  {(dir / "n2.nii").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::string n2 = test::read_file(dir / "n2.nii");
+  ASSERT_GT(n2.size(), 540u);
+  for (int k = 1; k <= 3; ++k)
+    patch<std::int64_t>(n2, 16 + 8 * static_cast<std::size_t>(k), std::int64_t{1} << 40);
+  spit(dir / "over.nii", n2);
+  expect_io_error((dir / "over.nii").string(), "more than 2^62 bytes");
+  fs::remove_all(dir);
+}
+
+} // namespace
+} // namespace zdg

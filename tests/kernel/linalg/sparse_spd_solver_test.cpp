@@ -1,0 +1,153 @@
+#include <zdg/kernel/linalg/sparse_spd_solver.hpp>
+
+#include "tests/support/tower.hpp"
+
+#include <zdg/arith/error.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace {
+
+// Whether a shared library whose path contains `name` is mapped into this process.
+bool mapped(const std::string& name) {
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line))
+    if (line.find(name) != std::string::npos) return true;
+  return false;
+}
+
+// A = B^T B + I for a random sparse B is SPD: the solver's x satisfies A x = b to rounding
+// (the residual is the oracle), with every backend zdg was built with, and both backends
+// agree.
+TEST(SparseSpdSolver, SolvesRandomSpdSystemsOnEveryBackend) {
+  zdg::test::check_property([] {
+    const auto n = *rc::gen::inRange<std::int64_t>(1, 30);
+    std::vector<zdg::SparseTriplet> tb;
+    const int nb = *rc::gen::inRange(0, 60);
+    for (int k = 0; k < nb; ++k)
+      tb.push_back({*rc::gen::inRange<std::int64_t>(0, n), *rc::gen::inRange<std::int64_t>(0, n),
+                    double(*rc::gen::inRange(-4, 5))});
+    const auto b = zdg::SparseMatrix::from_triplets(n, n, tb);
+    // B^T B as the sum over rows r of B of the outer products of the row.
+    std::vector<zdg::SparseTriplet> ta;
+    for (std::int64_t r = 0; r < n; ++r)
+      for (auto k = b.row_start[std::size_t(r)]; k < b.row_start[std::size_t(r) + 1]; ++k)
+        for (auto l = b.row_start[std::size_t(r)]; l < b.row_start[std::size_t(r) + 1]; ++l)
+          ta.push_back({b.column[std::size_t(k)], b.column[std::size_t(l)],
+                        b.value[std::size_t(k)] * b.value[std::size_t(l)]});
+    for (std::int64_t i = 0; i < n; ++i) ta.push_back({i, i, 1.0});
+    const auto a = zdg::SparseMatrix::from_triplets(n, n, ta);
+    std::vector<double> rhs(static_cast<std::size_t>(n));
+    for (auto& v : rhs) v = *rc::gen::inRange(-10, 11);
+    std::vector<zdg::SpdBackend> backends{zdg::SpdBackend::eigen_ldlt};
+    if (zdg::SparseSpdSolver::cholmod_available()) backends.push_back(zdg::SpdBackend::cholmod);
+    std::vector<std::vector<double>> xs;
+    for (auto be : backends) {
+      const zdg::SparseSpdSolver s(a, be);
+      RC_ASSERT(s.backend() == be);
+      const auto x = s.solve(rhs);
+      const auto ax = a.multiply(x);
+      double scale = 1;
+      for (auto v : a.value) scale = std::max(scale, std::abs(v));
+      for (std::size_t i = 0; i < rhs.size(); ++i)
+        RC_ASSERT(std::abs(ax[i] - rhs[i]) <= 1e-9 * scale * (1 + std::abs(rhs[i])));
+      xs.push_back(x);
+    }
+    for (std::size_t k = 1; k < xs.size(); ++k)
+      for (std::size_t i = 0; i < xs[0].size(); ++i)
+        RC_ASSERT(std::abs(xs[k][i] - xs[0][i]) <= 1e-8 * (1 + std::abs(xs[0][i])));
+  });
+}
+
+TEST(SparseSpdSolver, AutomaticTakesCholmodWhenBuiltWithIt) {
+  const auto a = zdg::SparseMatrix::diagonal(std::vector<double>{2, 3});
+  const zdg::SparseSpdSolver s(a);
+  EXPECT_EQ(s.backend(), zdg::SparseSpdSolver::cholmod_available() ? zdg::SpdBackend::cholmod
+                                                                   : zdg::SpdBackend::eigen_ldlt);
+  const auto x = s.solve(std::vector<double>{4, 9});
+  EXPECT_DOUBLE_EQ(x[0], 2.0);
+  EXPECT_DOUBLE_EQ(x[1], 3.0);
+  EXPECT_EQ(zdg::spd_backend_name(s.backend()),
+            zdg::SparseSpdSolver::cholmod_available() ? "cholmod" : "eigen-simplicial-ldlt");
+}
+
+// A zdg built with CHOLMOD finds its library at run time (it is loaded, not linked: a missing
+// or renamed library would silently fall back to Eigen's solver without this check).
+TEST(SparseSpdSolver, BuiltWithCholmodLoadsIt) {
+  if (zdg::SparseSpdSolver::cholmod_library().empty()) GTEST_SKIP() << "built without CHOLMOD";
+  EXPECT_TRUE(zdg::SparseSpdSolver::cholmod_available())
+      << zdg::SparseSpdSolver::cholmod_library() << " did not load";
+}
+
+// CHOLMOD (and OpenBLAS behind it) is loaded by the first solver that asks for it, not when a
+// process starts: in a fresh process (the death test's child runs this binary again with this
+// test alone) it is not mapped before the solver and is after.
+TEST(SparseSpdSolver, CholmodIsLoadedAtItsFirstUseOnly) {
+  if (zdg::SparseSpdSolver::cholmod_library().empty()) GTEST_SKIP() << "built without CHOLMOD";
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        const bool before = mapped("libcholmod");
+        const zdg::SparseSpdSolver s(zdg::SparseMatrix::diagonal(std::vector<double>{2, 3}),
+                                     zdg::SpdBackend::cholmod);
+        const bool after = mapped("libcholmod");
+        std::exit(!before && after && std::abs(s.solve(std::vector<double>{4, 9})[1] - 3.0) < 1e-12
+                      ? 0
+                      : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
+TEST(SparseSpdSolver, RefusesIndefiniteNonSquareAndWrongSizes) {
+  const auto indefinite = zdg::SparseMatrix::diagonal(std::vector<double>{1, -1});
+  EXPECT_THROW(zdg::SparseSpdSolver(indefinite, zdg::SpdBackend::eigen_ldlt), zdg::Error);
+  if (zdg::SparseSpdSolver::cholmod_available())
+    EXPECT_THROW(zdg::SparseSpdSolver(indefinite, zdg::SpdBackend::cholmod), zdg::Error);
+  else
+    EXPECT_THROW(zdg::SparseSpdSolver(indefinite, zdg::SpdBackend::cholmod), zdg::InvalidArgument);
+  EXPECT_THROW(zdg::SparseSpdSolver(zdg::SparseMatrix::from_triplets(2, 3, {})),
+               zdg::InvalidArgument);
+  const zdg::SparseSpdSolver s(zdg::SparseMatrix::diagonal(std::vector<double>{1, 1}));
+  EXPECT_THROW(s.solve(std::vector<double>{1}), zdg::InvalidArgument);
+}
+
+} // namespace
+
+// refactor: the numeric factorization of a matrix with the analysed pattern gives the solution
+// of the new system on every backend (a tridiagonal SPD matrix whose values change, explicit
+// zeros included); a different pattern is refused.
+TEST(SparseSpdSolver, RefactorReusesTheAnalysisOfThePattern) {
+  const auto tridiagonal = [](double diag, double off) {
+    std::vector<zdg::SparseTriplet> t;
+    for (std::int64_t i = 0; i < 50; ++i) {
+      t.push_back({i, i, diag + 0.01 * double(i)});
+      if (i > 0) {
+        t.push_back({i, i - 1, off});
+        t.push_back({i - 1, i, off});
+      }
+    }
+    return zdg::SparseMatrix::from_triplets(50, 50, std::move(t));
+  };
+  std::vector<zdg::SpdBackend> backends{zdg::SpdBackend::eigen_ldlt};
+  if (zdg::SparseSpdSolver::cholmod_available()) backends.push_back(zdg::SpdBackend::cholmod);
+  const std::vector<double> rhs(50, 1.0);
+  for (auto be : backends) {
+    zdg::SparseSpdSolver s(tridiagonal(4, -1), be);
+    for (double off : {-1.5, 0.0, 0.7}) { // 0: explicit zeros keep the pattern
+      const auto a = tridiagonal(3, off);
+      s.refactor(a);
+      const auto x = s.solve(rhs);
+      const auto ax = a.multiply(x);
+      for (std::size_t i = 0; i < rhs.size(); ++i) EXPECT_NEAR(ax[i], rhs[i], 1e-12);
+    }
+    EXPECT_THROW(s.refactor(zdg::SparseMatrix::diagonal(std::vector<double>(50, 1.0))),
+                 zdg::InvalidArgument);
+    EXPECT_THROW(s.refactor(tridiagonal(0.5, -2)), zdg::Error); // not positive definite
+  }
+}

@@ -1,0 +1,284 @@
+#include <zdg/kernel/transforms/distance_transform.hpp>
+#include <zdg/kernel/transforms/separable_engine.hpp>
+
+#include "tests/support/check_registry.hpp"
+#include "tests/support/tower.hpp"
+#include "tests/support/transform_oracle.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace zdg {
+namespace {
+
+using test::brute_distance_transform;
+using test::random_transform_case;
+
+template <class I>
+class DistanceTransformTyped : public ::testing::Test {};
+TYPED_TEST_SUITE(DistanceTransformTyped, test::TowerTypes, test::TowerNames);
+
+// Theorem (separability, Hirata 1996 / Meijster et al. 2000): the pass-by-pass lower
+// envelopes give min over the background of d_p^p; oracle: every pair of points.
+TYPED_TEST(DistanceTransformTyped, EqualsBruteForce) {
+  test::check_property([] {
+    auto c = random_transform_case();
+    c.opt.min_engine_bits = test::engine_bits<TypeParam>();
+    auto dt = distance_transform<std::int64_t>(c.shape, c.opt);
+    auto oracle = brute_distance_transform<std::int64_t>(c.shape, c.opt);
+    RC_ASSERT(dt.values() == oracle);
+  });
+}
+
+TEST(DistanceTransform, DefaultWidthEqualsBruteForce) {
+  test::check_property([] {
+    auto c = random_transform_case();
+    auto dt = distance_transform<std::uint64_t>(c.shape, c.opt);
+    auto oracle = brute_distance_transform<std::int64_t>(c.shape, c.opt);
+    for (std::size_t i = 0; i < oracle.size(); ++i) {
+      RC_ASSERT(dt.values()[i] == static_cast<std::uint64_t>(oracle[i]));
+    }
+  });
+}
+
+// Large p: d^p exceeds int64 and __int128 (l_40 on a 20 x 13 domain: 19^40 ~ 1.4e51), so the
+// engine runs on GMP integers; oracle in BigInt.
+TEST(DistanceTransform, HugePowersUseBigIntegers) {
+  Domain dom({20, 13}, {-3, 4});
+  std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()), 1);
+  v[0] = 0;
+  v[150] = 0;
+  Image<std::uint8_t> shape(dom, v);
+  TransformOptions opt;
+  opt.metric = Metric::lp(40);
+  EXPECT_GT(distance_transform_max_value(dom, opt), BigInt(1) << 160);
+  auto dt = distance_transform<BigInt>(shape, opt);
+  EXPECT_EQ(dt.values(), brute_distance_transform<BigInt>(shape, opt));
+  EXPECT_THROW(distance_transform<std::uint64_t>(shape, opt), OverflowError);
+}
+
+TEST(DistanceTransform, WorkedExamples) {
+  Image<std::uint8_t> line(Domain({7}), std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0, 1});
+  TransformOptions l2;
+  EXPECT_EQ(distance_transform<std::uint32_t>(line, l2).values(),
+            (std::vector<std::uint32_t>{0, 1, 4, 4, 1, 0, 1}));
+  TransformOptions torus = l2;
+  torus.torus = {true};
+  // the last point is next to the first one on the circle
+  EXPECT_EQ(distance_transform<std::uint32_t>(line, torus).values(),
+            (std::vector<std::uint32_t>{0, 1, 4, 4, 1, 0, 1}));
+  Image<std::uint8_t> ring(Domain({6}), std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1});
+  EXPECT_EQ(distance_transform<std::uint32_t>(ring, torus).values(),
+            (std::vector<std::uint32_t>{4, 9, 4, 1, 0, 1}));
+  // 3 x 3 with the background at the centre: l1, l2, linf rings.
+  Image<std::uint8_t> sq(Domain({3, 3}), std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1, 1, 1, 1});
+  TransformOptions o;
+  o.metric = Metric::l1();
+  EXPECT_EQ(distance_transform<std::uint8_t>(sq, o).values(),
+            (std::vector<std::uint8_t>{2, 1, 2, 1, 0, 1, 2, 1, 2}));
+  o.metric = Metric::l2();
+  EXPECT_EQ(distance_transform<std::uint8_t>(sq, o).values(),
+            (std::vector<std::uint8_t>{2, 1, 2, 1, 0, 1, 2, 1, 2}));
+  o.metric = Metric::linf();
+  EXPECT_EQ(distance_transform<std::uint8_t>(sq, o).values(),
+            (std::vector<std::uint8_t>{1, 1, 1, 1, 0, 1, 1, 1, 1}));
+  o.metric = Metric::lp(3);
+  EXPECT_EQ(distance_transform<std::uint8_t>(sq, o).values(),
+            (std::vector<std::uint8_t>{2, 1, 2, 1, 0, 1, 2, 1, 2}));
+}
+
+// Results do not depend on the thread count (lines are independent): a 3D image large enough
+// to be split (>= 2^15 points), every metric, with a torus axis.
+TEST(DistanceTransform, ThreadCountIndependence) {
+  Domain dom({33, 40, 29}, {-16, 0, 5});
+  std::mt19937 rng(7);
+  std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+  for (auto& x : v) x = rng() % 50 == 0 ? 0 : 1;
+  Image<std::uint8_t> shape(dom, v);
+  for (int p : {1, 2, 3, 0}) {
+    TransformOptions opt;
+    opt.metric = Metric{p};
+    opt.torus = {false, true, false};
+    opt.threads = 1;
+    auto ref = distance_transform<std::uint32_t>(shape, opt);
+    for (unsigned t : {2u, 3u, 8u}) {
+      opt.threads = t;
+      EXPECT_EQ(distance_transform<std::uint32_t>(shape, opt), ref) << p << " " << t;
+    }
+  }
+}
+
+// The buffer form (what `zdg transform` runs on a mapped .npy): a mask of 1-, 2-, 4- or 8-byte
+// items, an item background iff all its bytes are 0, gives the transform of the 0/1 mask, in
+// every output type that holds it.
+TEST(DistanceTransform, IntoBuffersReadsWideMaskItems) {
+  test::check_property([] {
+    auto c = random_transform_case();
+    const int item = *rc::gen::element(1, 2, 4, 8);
+    const auto n = static_cast<std::size_t>(c.shape.size());
+    std::vector<std::uint8_t> wide(n * static_cast<std::size_t>(item), 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (c.shape.values()[i] == 0) continue;
+      // a foreground item: any nonzero byte pattern (one byte, several, a sign bit alone)
+      const auto byte = *rc::gen::inRange<std::size_t>(0, static_cast<std::size_t>(item));
+      wide[i * static_cast<std::size_t>(item) + byte] = *rc::gen::inRange<int>(1, 256);
+    }
+    const auto expect = distance_transform<std::uint64_t>(c.shape, c.opt);
+    std::vector<std::uint64_t> out(n, 12345);
+    // With a progress callback: called once per pass, (1, d) .. (d, d), the values unchanged.
+    std::vector<std::pair<int, int>> calls;
+    distance_transform_into<std::uint64_t>(
+        c.shape.domain(), wide.data(), item, c.opt, out.data(),
+        [&](int done, int total) { calls.emplace_back(done, total); });
+    RC_ASSERT(out == expect.values());
+    const int d = c.shape.domain().dim();
+    RC_ASSERT(calls.size() == static_cast<std::size_t>(d));
+    for (int k = 0; k < d; ++k)
+      RC_ASSERT(calls[static_cast<std::size_t>(k)] == std::make_pair(k + 1, d));
+    if (distance_transform_max_value(c.shape.domain(), c.opt) <= BigInt(4294967295ULL)) {
+      std::vector<std::uint32_t> out32(n, 7);
+      distance_transform_into<std::uint32_t>(c.shape.domain(), wide.data(), item, c.opt,
+                                             out32.data());
+      RC_ASSERT(std::equal(out32.begin(), out32.end(), expect.values().begin()));
+    }
+  });
+  Image<std::uint8_t> img(Domain({3}), std::vector<std::uint8_t>{0, 1, 1});
+  std::vector<std::uint32_t> out(3);
+  EXPECT_THROW(
+      distance_transform_into<std::uint32_t>(img.domain(), img.values().data(), 3, {}, out.data()),
+      InvalidArgument);
+}
+
+TEST(DistanceTransform, Errors) {
+  Image<std::uint8_t> full(Domain({4, 5}), std::uint8_t{1});
+  EXPECT_THROW(distance_transform<std::uint32_t>(full, {}), InvalidArgument);
+  TransformOptions torus;
+  torus.torus = {true, true};
+  try {
+    distance_transform<std::uint32_t>(full, torus);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("torus"), std::string::npos);
+  }
+  Image<std::uint8_t> img(Domain({20, 20}), std::uint8_t{0});
+  EXPECT_THROW(distance_transform<std::uint8_t>(img, {}), OverflowError); // 2 * 19^2 > 255
+  TransformOptions bad;
+  bad.torus = {true};
+  EXPECT_THROW(distance_transform<std::uint32_t>(img, bad), InvalidArgument);
+  EXPECT_THROW(Metric::lp(0), InvalidArgument);
+  EXPECT_THROW(parse_metric("l0"), InvalidArgument);
+  EXPECT_THROW(parse_metric("l2.5"), InvalidArgument);
+  EXPECT_EQ(parse_metric("l7").p, 7);
+  EXPECT_TRUE(parse_metric("linf").is_inf());
+}
+
+// Allows the vectorized passes again when a test that compares them with the portable loop
+// ends (passes or fails).
+struct AllowSimdAtExit {
+  ~AllowSimdAtExit() { detail::set_envelope_simd(true); }
+};
+
+// The vectorized passes (kernel/transforms/separable_engine.cpp: the mask pass from the sites'
+// bits, the envelopes 16 lines per AVX-512 vector, peaks left out) give the values of the scalar
+// sweep to the bit for every metric (l1, l2, l3, l4, linf), in mask mode (distance transforms) and
+// in value mode (weighted sites, inf where none), on blocks of 16 columns and narrower ones, and
+// torus axes (lines of three copies). Oracle: the portable loop of the same engine.
+TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
+  if (!detail::envelope_simd_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  const AllowSimdAtExit allow;
+  test::check_property([] {
+    std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
+    auto pick = [&](int lo, int hi) {
+      return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1));
+    };
+    const int d = pick(2, 3);
+    std::vector<std::int64_t> ext;
+    for (int k = 0; k < d; ++k) ext.push_back(pick(1, d == 2 ? 70 : 37));
+    Domain dom(ext);
+    TransformOptions opt;
+    opt.metric = Metric{pick(0, 4)};
+    for (int k = 0; k < d; ++k) opt.torus.push_back(pick(0, 2) == 0);
+    opt.threads = static_cast<unsigned>(pick(1, 2));
+    std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+    if (pick(0, 2) == 0) {
+      // Background boxes in the object: the first pass's values have long plateaus and ramps
+      // (the peaks the vectorized envelopes leave out), where random masks have few.
+      for (auto& x : v) x = 1;
+      std::vector<std::int64_t> p(static_cast<std::size_t>(d));
+      for (int box = pick(1, 4); box-- > 0;) {
+        std::vector<std::int64_t> lo, hi;
+        for (int k = 0; k < d; ++k) {
+          lo.push_back(pick(0, static_cast<int>(ext[k]) - 1));
+          hi.push_back(std::min<std::int64_t>(ext[k], lo.back() + pick(1, 6)));
+        }
+        for (std::int64_t i = 0; i < dom.size(); ++i) {
+          dom.point(i, p);
+          bool in = true;
+          for (int k = 0; k < d; ++k)
+            in = in && p[k] - dom.lower(k) >= lo[k] && p[k] - dom.lower(k) < hi[k];
+          if (in) v[static_cast<std::size_t>(i)] = 0;
+        }
+      }
+    } else {
+      const int density = pick(0, 100);
+      for (auto& x : v) x = pick(0, 99) < density ? 1 : 0;
+    }
+    v[rng() % v.size()] = 0;
+    Image<std::uint8_t> shape(dom, v);
+    detail::set_envelope_simd(false);
+    auto ref = distance_transform<std::uint32_t>(shape, opt);
+    detail::set_envelope_simd(true);
+    RC_ASSERT(distance_transform<std::uint32_t>(shape, opt) == ref);
+
+    RC_TAG(opt.metric.name());
+    // Value mode: weights in [0, 1000] or no site, on the int32 engine.
+    const auto bounds = detail::envelope_bounds(dom, opt, BigInt(1000));
+    RC_PRE(bounds.width == detail::ValueWidth::I32);
+    const auto inf = detail::envelope_infinity<std::int32_t>(bounds);
+    std::vector<std::int32_t> f0(v.size());
+    for (auto& x : f0) x = pick(0, 3) == 0 ? pick(0, 1000) : inf;
+    std::vector<std::int32_t> a = f0, b = f0;
+    detail::set_envelope_simd(false);
+    detail::separable_envelope<std::int32_t>(dom, opt, nullptr, a.data(), inf, nullptr);
+    detail::set_envelope_simd(true);
+    detail::separable_envelope<std::int32_t>(dom, opt, nullptr, b.data(), inf, nullptr);
+    RC_ASSERT(a == b);
+  });
+}
+
+// Lines of 2^15 points or more (l1 and linf only on the int32 engine): the vectorized envelope
+// keeps sites and segment starts in separate tables instead of 16-bit halves of one.
+TEST(DistanceTransform, VectorizedEnvelopeOnLongLines) {
+  if (!detail::envelope_simd_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  const AllowSimdAtExit allow;
+  Domain dom({40000, 19});
+  std::mt19937 rng(11);
+  std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+  for (auto& x : v) x = rng() % 997 == 0 ? 0 : 1;
+  Image<std::uint8_t> shape(dom, v);
+  for (int p : {1, 0}) {
+    for (bool torus : {false, true}) {
+      TransformOptions opt;
+      opt.metric = Metric{p};
+      opt.torus = {torus, false};
+      detail::set_envelope_simd(false);
+      auto ref = distance_transform<std::uint32_t>(shape, opt);
+      detail::set_envelope_simd(true);
+      EXPECT_EQ(distance_transform<std::uint32_t>(shape, opt), ref) << p << " " << torus;
+    }
+  }
+}
+
+} // namespace
+// The registered property dt.l2.brute_force (zdg check): 2D images of side <= 12 and 3D ones of
+// side <= 6, against every pair of points.
+TEST(DistanceTransform, RegisteredBruteForcePropertyHolds) {
+  test::expect_registered_property("dt.l2.brute_force", IntKind::int64, 300);
+}
+
+} // namespace zdg
