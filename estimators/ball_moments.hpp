@@ -81,14 +81,14 @@ struct ColumnMoments {
 /// EPYC with AVX-512) or AVX2 (8), same integers.
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
                                       std::span<const Voxel> centres, std::int64_t r2,
-                                      int threads = 1, bool second_order = true);
+                                      unsigned threads = 0, bool second_order = true);
 
 namespace detail {
 /// ball_moments_by_columns with vectorized forms of at most max_lanes lanes (16: AVX-512 or
 /// AVX2, 8: AVX2 at most, 0: the portable loop), for tests that compare them.
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
-                                      std::span<const Voxel> centres, std::int64_t r2, int threads,
-                                      bool second_order, int max_lanes);
+                                      std::span<const Voxel> centres, std::int64_t r2,
+                                      unsigned threads, bool second_order, int max_lanes);
 /// The lanes of the widest vectorized form this CPU runs (16, 8 or 0).
 int ball_moments_simd_lanes();
 } // namespace detail

@@ -91,18 +91,18 @@ std::vector<std::array<Point3<double>, 4>> corner_normals(std::span<const Surfel
 /// The measures of every face of the surfels at grid step h with the given unit normals.
 std::vector<CorrectedMeasures> face_corrected_measures(std::span<const Surfel> surfels,
                                                        std::span<const Point3<double>> normals,
-                                                       double h, int threads = 1);
+                                                       double h, unsigned threads = 0);
 
 /// Curvatures at surfels[queries[i]] for each i, from the measures of the ball of radius R
 /// around its centre (the measures of all surfels count).
 std::vector<CorrectedCurvatures> cnc_curvatures(std::span<const Surfel> surfels,
                                                 std::span<const Point3<double>> normals, double h,
                                                 double R, std::span<const std::size_t> queries,
-                                                int threads = 1);
+                                                unsigned threads = 0);
 
 /// Curvatures at every surfel.
 std::vector<CorrectedCurvatures> cnc_curvatures(std::span<const Surfel> surfels,
                                                 std::span<const Point3<double>> normals, double h,
-                                                double R, int threads = 1);
+                                                double R, unsigned threads = 0);
 
 } // namespace zdg

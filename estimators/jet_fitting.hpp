@@ -45,6 +45,6 @@ struct JetEstimate {
 std::vector<JetEstimate> jet_fitting(std::span<const Point3<double>> points,
                                      std::span<const std::size_t> queries,
                                      std::span<const Point3<double>> outward, double radius,
-                                     int degree, int threads = 0);
+                                     int degree, unsigned threads = 0);
 
 } // namespace zdg

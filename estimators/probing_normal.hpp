@@ -93,6 +93,6 @@ SurfelProbe probing_surfel_normal(const VoxelPredicate& inside, const VoxelBox& 
 /// the predicate must be callable from several threads at once.
 std::vector<SurfelProbe> probing_normals(const VoxelPredicate& inside, const VoxelBox& box,
                                          std::span<const Surfel> surfels,
-                                         ProbingAlgorithm algorithm, int threads = 1);
+                                         ProbingAlgorithm algorithm, unsigned threads = 0);
 
 } // namespace zdg

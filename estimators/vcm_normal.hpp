@@ -50,6 +50,6 @@ namespace zdg {
 /// the offset radius R and the kernel radius r (continuous units, grid step h). Throws
 /// InvalidArgument unless h, R, r > 0, R/h <= 256, r/h <= 256 and surfels is non-empty.
 std::vector<Point3<double>> vcm_normals(std::span<const Surfel> surfels, double h, double R,
-                                        double r, int threads = 1);
+                                        double r, unsigned threads = 0);
 
 } // namespace zdg
