@@ -1,6 +1,6 @@
 // Uses the installed zdg: a continued fraction computed exactly by escalation, the same as an
-// operation with its JSON form, and an experiment description read by the library (which links toml++ privately: the package config
-// must bring it).
+// operation with its JSON form, and an experiment description read by the library (which links
+// toml++ privately: the package config must bring it).
 #include <zdg/arith/continued_fraction.hpp>
 #include <zdg/arith/escalate.hpp>
 #include <zdg/arith/floor_sum.hpp>
