@@ -172,7 +172,9 @@ CheckedHeader check_header(const std::string& path, const unsigned char* h, std:
     if (n < 540) fail("truncated NIfTI-2 header (" + std::to_string(n) + " of 540 bytes)");
     if (std::memcmp(h + 4, "ni2\0", 4) == 0)
       fail("the header of a .hdr/.img pair (magic ni2); zdg reads single-file .nii volumes");
-    if (std::memcmp(h + 4, "n+2\0\r\n\032\n", 8) != 0)
+    // The check bytes \r\n\032\n follow n+2 (zeros in the files libnifti 3.0 writes).
+    if (std::memcmp(h + 4, "n+2\0", 4) != 0 ||
+        (std::memcmp(h + 8, "\r\n\032\n", 4) != 0 && std::memcmp(h + 8, "\0\0\0\0", 4) != 0))
       fail("not a single-file NIfTI-2 volume (magic is not n+2 with its \\r\\n\\032\\n check "
            "bytes: damaged, or transferred as text)");
   }
@@ -306,7 +308,7 @@ ScalarVolume read_nifti(const std::string& path) {
     ~Close() {
       if (!znz_isnull(f)) znzclose(f);
     }
-  } close{f};
+  } closer{f};
   // The header, read by zdg and checked before the library converts it.
   static_assert(sizeof(nifti_1_header) == 348 && sizeof(nifti_2_header) == 540);
   unsigned char raw[540] = {};

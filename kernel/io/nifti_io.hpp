@@ -7,8 +7,9 @@
 // n2hdr2nim converts it (no extension is read: zdg does not use them), and zdg reads the
 // voxels itself (nifti_image_load would replace NaN and infinities by 0). The checks:
 //   - sizeof_hdr 348 (NIfTI-1) or 540 (NIfTI-2), in either byte order (that order is the
-//     file's); magic n+1 / n+2 with its check bytes \r\n\032\n (single-file only: a .hdr/.img
-//     pair, ANALYZE 7.5 or a damaged magic is refused);
+//     file's); magic n+1, or n+2 followed by its check bytes \r\n\032\n or by zeros (as
+//     libnifti 3.0 writes it); single-file only: a .hdr/.img pair, ANALYZE 7.5 or a damaged
+//     magic is refused;
 //   - dim[0] in 1..7, dim[1..dim[0]] >= 1, dims 4..7 equal to 1 (2D when dim[0] = 2, else 3D);
 //   - datatype uint8, int8, uint16, int16, uint32, int32, uint64, int64, float32 or float64,
 //     and bitpix its width in bits; nx * ny * nz * bytes per voxel <= 2^62 (overflow-checked);

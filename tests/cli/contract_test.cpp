@@ -564,7 +564,7 @@ std::vector<BadInput> bad_inputs() {
        "b.nii: NIfTI bitpix 32 disagrees with the datatype uint8"},
       {"NIfTI-2 magic without its check bytes",
        "convert {dir}/m.nii {dir}/out.npy",
-       {{"m.nii", zdg::test::patched<char>(zdg::test::nifti2_bytes(4, 3, 2), 9, '\n')}},
+       {{"m.nii", zdg::test::patched<char>(zdg::test::nifti2_bytes(4, 3, 2), 8, '\n')}},
        {},
        "m.nii: not a single-file NIfTI-2 volume"},
       {".nii.gz of 1 MB claiming 1000^3 voxels, corrupt after 4 MiB",

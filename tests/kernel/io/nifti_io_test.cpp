@@ -404,7 +404,7 @@ TEST(NiftiIo, Nifti2HeaderFieldsAreCheckedBeforeTheLibrary) {
   };
   const std::int64_t big = std::int64_t{1} << 31;
   std::string bad_magic = good;
-  bad_magic[9] = '\n'; // "\r\n\032\n" damaged as by a text-mode transfer
+  bad_magic[8] = '\n'; // "\r\n\032\n" damaged as by a text-mode transfer (CR to LF)
   std::string pair = good;
   pair[5] = 'i';
   const Case cases[] = {
