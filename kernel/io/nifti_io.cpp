@@ -216,8 +216,8 @@ CheckedHeader check_header(const std::string& path, const unsigned char* h, std:
   if (bitpix != 8 * static_cast<int>(dtype_size(c.dtype)))
     fail("NIfTI bitpix " + std::to_string(bitpix) + " disagrees with the datatype " +
          dtype_name(c.dtype) + " (" + std::to_string(8 * dtype_size(c.dtype)) + " bits)");
-  const std::string dims = std::to_string(c.dim[1]) + "x" + std::to_string(c.dim[2]) +
-                           (d == 3 ? "x" + std::to_string(c.dim[3]) : "");
+  std::string dims = std::to_string(c.dim[1]);
+  for (int k = 2; k <= d; ++k) dims.append("x").append(std::to_string(c.dim[k]));
   std::uint64_t bytes = dtype_size(c.dtype);
   for (int k = 1; k <= d; ++k) {
     if (__builtin_mul_overflow(bytes, static_cast<std::uint64_t>(c.dim[k]), &bytes) ||
@@ -336,7 +336,9 @@ ScalarVolume read_nifti(const std::string& path) {
       throw IoError(path + ": " + with_library_message("the NIfTI header is refused", cap.text()));
   }
   // The library read what zdg checked (dims, type, byte order), or the file is refused.
-  const int order = c.swapped ? REVERSE_ORDER(nifti_short_order()) : nifti_short_order();
+  // The library's byte orders are LSB_FIRST = 1 and MSB_FIRST = 2 (its REVERSE_ORDER is 3 - x,
+  // a macro it keeps private).
+  const int order = c.swapped ? 3 - nifti_short_order() : nifti_short_order();
   bool agree = nim->dim[0] == c.dim[0] && nim->datatype == c.datatype &&
                nim->nbyper == static_cast<int>(dtype_size(c.dtype)) && nim->byteorder == order;
   for (int k = 1; k <= d; ++k) agree = agree && nim->dim[k] == c.dim[k];

@@ -7,6 +7,7 @@
 
 #include <zlib.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -19,13 +20,13 @@ inline std::string good_then_garbage(const std::string& prefix, std::size_t good
   deflateInit2(&zs, 6, Z_DEFLATED, gzip ? 31 : 15, 8, Z_DEFAULT_STRATEGY);
   std::vector<unsigned char> in(prefix.begin(), prefix.end());
   in.resize(prefix.size() + good, 0);
-  std::string out(deflateBound(&zs, in.size()) + 64, '\0');
+  std::vector<unsigned char> buf(deflateBound(&zs, in.size()) + 64);
   zs.next_in = in.data();
   zs.avail_in = static_cast<uInt>(in.size());
-  zs.next_out = reinterpret_cast<Bytef*>(out.data());
-  zs.avail_out = static_cast<uInt>(out.size());
+  zs.next_out = buf.data();
+  zs.avail_out = static_cast<uInt>(buf.size());
   deflate(&zs, Z_SYNC_FLUSH);
-  out.resize(out.size() - zs.avail_out);
+  std::string out(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(zs.total_out));
   deflateEnd(&zs);
   std::uint64_t x = seed * 0x9E3779B97F4A7C15ull + 1;
   for (std::size_t i = 0; i < garbage; ++i) {

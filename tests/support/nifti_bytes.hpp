@@ -9,9 +9,11 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace zdg::test {
 
@@ -69,13 +71,13 @@ inline std::string nifti1_bytes(std::int16_t nx, std::int16_t ny, std::int16_t n
 inline std::string gzip_bytes(const std::string& bytes) {
   z_stream zs{};
   deflateInit2(&zs, 6, Z_DEFLATED, 31, 8, Z_DEFAULT_STRATEGY);
-  std::string out(deflateBound(&zs, bytes.size()) + 64, '\0');
+  std::vector<unsigned char> buf(deflateBound(&zs, bytes.size()) + 64);
   zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
   zs.avail_in = static_cast<uInt>(bytes.size());
-  zs.next_out = reinterpret_cast<Bytef*>(out.data());
-  zs.avail_out = static_cast<uInt>(out.size());
+  zs.next_out = buf.data();
+  zs.avail_out = static_cast<uInt>(buf.size());
   deflate(&zs, Z_FINISH);
-  out.resize(out.size() - zs.avail_out);
+  std::string out(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(zs.total_out));
   deflateEnd(&zs);
   return out;
 }

@@ -186,10 +186,10 @@ TEST(VolIo, DgtalHeaderAndErrors) {
 TEST(VolIo, CenterOutsideItsRangeIsRefusedBeforeArithmetic) {
   const std::int64_t m = std::int64_t{1} << 61;
   for (const std::string axis : {"X", "Y", "Z"}) {
-    for (const std::string center :
-         {std::to_string(m + 1), std::to_string(-m - 1), "9223372036854775806",
-          "9223372036854775805", "9223372036854775807", "-9223372036854775808",
-          "99999999999999999999", "-99999999999999999999"}) {
+    for (const std::string& center : std::vector<std::string>{
+             std::to_string(m + 1), std::to_string(-m - 1), "9223372036854775806",
+             "9223372036854775805", "9223372036854775807", "-9223372036854775808",
+             "99999999999999999999", "-99999999999999999999"}) {
       for (const std::string size : {"1", "2", "4"}) {
         std::string h = "Center-" + axis + ": " + center + "\n";
         for (const std::string a : {"X", "Y", "Z"}) h += a + ": " + (a == axis ? size : "1") + "\n";
