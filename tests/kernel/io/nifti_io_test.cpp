@@ -409,7 +409,8 @@ TEST(NiftiIo, Nifti2HeaderFieldsAreCheckedBeforeTheLibrary) {
   pair[5] = 'i';
   const Case cases[] = {
       {"dim0_2p31", with<std::int64_t>(good, 16, big), "NIfTI dim[0] = 2147483648 (1..7)"},
-      {"dim0_2p32", with<std::int64_t>(good, 16, (big << 1) + 3), "NIfTI dim[0] = 8589934595"},
+      {"dim0_2p32", with<std::int64_t>(good, 16, (big << 1) + 3),
+       "NIfTI dim[0] = 4294967299 (1..7)"},
       {"dim0_neg", with<std::int64_t>(good, 16, -1), "NIfTI dim[0] = -1 (1..7)"},
       {"dim0_min", with<std::int64_t>(good, 16, INT64_MIN), "NIfTI dim[0] = -9223372036854775808"},
       {"dim0_zero", with<std::int64_t>(good, 16, 0), "NIfTI dim[0] = 0 (1..7)"},
