@@ -2,10 +2,12 @@
 
 #include <zdg/arith/error.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
 
 #include <sys/stat.h>
 
@@ -63,6 +65,46 @@ std::string read_input_file(const std::string& path, std::uint64_t max_bytes) {
   if (std::ferror(f.get()) != 0)
     throw IoError(path + ": read error (" + std::strerror(errno) + ")");
   return data;
+}
+
+std::span<std::uint8_t> ArrivingBytes::room() {
+  if (size_ == claimed_) return {};
+  if (pieces_.empty() || last_used_ == pieces_.back().size()) {
+    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(kPiece, claimed_ - size_));
+    pieces_.emplace_back(n);
+    last_used_ = 0;
+  }
+  auto& p = pieces_.back();
+  return {p.data() + last_used_, p.size() - last_used_};
+}
+
+void ArrivingBytes::arrived(std::size_t n) {
+  if (pieces_.empty() || n > pieces_.back().size() - last_used_)
+    throw std::logic_error("ArrivingBytes::arrived: more bytes than the room given");
+  last_used_ += n;
+  size_ += n;
+}
+
+std::vector<std::uint8_t> ArrivingBytes::take() {
+  std::vector<std::uint8_t> out;
+  if (pieces_.size() == 1) {
+    out = std::move(pieces_.front());
+    out.resize(last_used_);
+  } else if (!pieces_.empty()) {
+    // reserve() maps the whole block without touching it: resident memory grows as each
+    // piece is copied in and freed.
+    out.reserve(static_cast<std::size_t>(size_));
+    for (std::size_t i = 0; i < pieces_.size(); ++i) {
+      const std::size_t used = i + 1 == pieces_.size() ? last_used_ : pieces_[i].size();
+      out.insert(out.end(), pieces_[i].begin(),
+                 pieces_[i].begin() + static_cast<std::ptrdiff_t>(used));
+      std::vector<std::uint8_t>().swap(pieces_[i]);
+    }
+  }
+  pieces_.clear();
+  size_ = claimed_ = 0;
+  last_used_ = 0;
+  return out;
 }
 
 } // namespace zdg

@@ -5,10 +5,18 @@
 // read_* functions are this plus the parser.
 //
 // Cost: one pass over the file; memory: its size. Errors are IoError naming the path.
+//
+// ArrivingBytes holds the output of a decompressor whose total a header claims: memory is
+// taken as the bytes arrive, in pieces of at most 16 MiB, never for the claim alone, so that
+// a small corrupt file claiming a large volume takes little memory before its error
+// (resident memory: the bytes that arrived plus one piece; take() then joins the pieces
+// into one vector, freeing each piece as it is copied).
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace zdg {
 
@@ -22,5 +30,28 @@ std::string read_input_file(const std::string& path, std::uint64_t max_bytes = k
 
 /// The size of a regular file at path (IoError as read_input_file for anything else).
 std::uint64_t input_file_size(const std::string& path);
+
+/// Bytes that arrive in pieces up to a claimed total (see above).
+class ArrivingBytes {
+public:
+  static constexpr std::size_t kPiece = std::size_t{1} << 24;
+
+  explicit ArrivingBytes(std::uint64_t claimed) : claimed_(claimed) {}
+  std::uint64_t claimed() const { return claimed_; }
+  /// The bytes that arrived so far.
+  std::uint64_t size() const { return size_; }
+  /// Writable room for the next bytes: min(kPiece, claimed - size()) bytes at most (allocated
+  /// now), empty once size() == claimed.
+  std::span<std::uint8_t> room();
+  /// n bytes were written at the start of room() (n <= its size).
+  void arrived(std::size_t n);
+  /// All the bytes, in order (the object is left empty).
+  std::vector<std::uint8_t> take();
+
+private:
+  std::uint64_t claimed_ = 0, size_ = 0;
+  std::vector<std::vector<std::uint8_t>> pieces_; // each full but the last
+  std::size_t last_used_ = 0;                     // bytes used in pieces_.back()
+};
 
 } // namespace zdg

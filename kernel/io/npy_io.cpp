@@ -37,6 +37,14 @@ constexpr DTypeInfo kTypes[] = {
     {DType::F64, "<f8", "float64", 8},
 };
 
+// The accepted dtypes by name, in kTypes' order ("bool, uint8, ..., float64"): the list every
+// message about an unsupported dtype gives, so that it cannot drift from what is read.
+std::string accepted_dtype_names() {
+  std::string out;
+  for (const auto& i : kTypes) out += (out.empty() ? "" : ", ") + std::string(i.name);
+  return out;
+}
+
 const DTypeInfo& info(DType t) {
   for (const auto& i : kTypes) {
     if (i.t == t) return i;
@@ -176,7 +184,8 @@ DType dtype_of(const std::string& source, const std::string& d) {
   if (!d.empty() && d[0] == '>') {
     fail(source, "big-endian dtype '" + shown + "' is not supported (use little-endian)");
   }
-  fail(source, "dtype '" + shown + "' is not supported (bool, uint8/16/32/64, int8/16/32/64 only)");
+  fail(source, "dtype '" + shown + "' is not supported (accepted: " + accepted_dtype_names() +
+                   ", little-endian)");
 }
 
 // Parses the dict {'descr': ..., 'fortran_order': ..., 'shape': (...), } (keys in any order,
@@ -398,7 +407,7 @@ DType dtype_from_name(const std::string& name) {
     if (name == i.name) return i.t;
   }
   throw InvalidArgument("dtype '" + name +
-                        "' (bool, uint8/16/32/64, int8/16/32/64, float32, float64)");
+                        "' is not supported (accepted: " + accepted_dtype_names() + ")");
 }
 
 namespace {
@@ -560,17 +569,25 @@ template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<float>&)
 template NpyArray make_npy(std::vector<std::int64_t>, const std::vector<double>&);
 
 namespace {
-Domain npy_domain(const NpyArray& a, const std::vector<std::int64_t>& lower) {
-  if (a.shape.empty()) throw IoError("a 0-dimensional array is not an image");
+Domain npy_domain(const NpyArray& a, const std::vector<std::int64_t>& lower,
+                  const std::string& source) {
+  const std::string at = source.empty() ? "" : source + ": ";
+  if (a.shape.empty()) throw IoError(at + "a 0-dimensional array is not an image");
   for (auto s : a.shape) {
-    if (s == 0) throw IoError("empty array (an extent is 0)");
+    if (s == 0) throw IoError(at + "empty array (an extent is 0)");
   }
-  return Domain(a.shape, lower);
+  if (at.empty()) return Domain(a.shape, lower);
+  try {
+    return Domain(a.shape, lower);
+  } catch (const Error& e) {
+    throw IoError(at + e.what());
+  }
 }
 } // namespace
 
-Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_t>& lower) {
-  Image<std::uint8_t> img(npy_domain(a, lower));
+Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_t>& lower,
+                                const std::string& source) {
+  Image<std::uint8_t> img(npy_domain(a, lower, source));
   const std::size_t sz = dtype_size(a.dtype);
   auto& v = img.values();
   if (dtype_is_float(a.dtype)) {
@@ -586,8 +603,12 @@ Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_
   return img;
 }
 
-Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64_t>& lower) {
-  Image<std::int64_t> img(npy_domain(a, lower));
+Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64_t>& lower,
+                                 const std::string& source) {
+  if (dtype_is_float(a.dtype))
+    throw IoError((source.empty() ? "" : source + ": ") + dtype_name(a.dtype) +
+                  " array where integers are needed");
+  Image<std::int64_t> img(npy_domain(a, lower, source));
   for (std::int64_t i = 0; i < img.size(); ++i) img[i] = a.get(i);
   return img;
 }

@@ -82,9 +82,12 @@ template <class T>
 NpyArray make_npy(std::vector<std::int64_t> shape, const std::vector<T>& v);
 
 /// The array as a binary image (nonzero = 1; for floats, value != 0, so -0.0 is 0 and NaN is 1) on
-/// the domain with these lower bounds (empty = all 0). A 0-D array is an IoError.
-Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_t>& lower = {});
-/// The array as int64 values (IoError for a float dtype).
-Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64_t>& lower = {});
+/// the domain with these lower bounds (empty = all 0). A 0-D array or an extent 0 is an IoError
+/// that starts with `source` (the file the array came from) when it is given.
+Image<std::uint8_t> npy_to_mask(const NpyArray& a, const std::vector<std::int64_t>& lower = {},
+                                const std::string& source = "");
+/// The array as int64 values (IoError for a float dtype, and as npy_to_mask).
+Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64_t>& lower = {},
+                                 const std::string& source = "");
 
 } // namespace zdg

@@ -1,5 +1,7 @@
 #include <zdg/kernel/io/vol_io.hpp>
 
+#include <zdg/arith/checked.hpp>
+#include <zdg/kernel/io/input_file.hpp>
 #include <zdg/kernel/io/output_files.hpp>
 
 #include <zlib.h>
@@ -18,6 +20,7 @@ namespace {
 constexpr int kMaxHeaderLines = 64;
 constexpr std::size_t kMaxLineLength = 256;
 constexpr std::int64_t kMaxExtent = std::numeric_limits<std::int32_t>::max();
+constexpr std::int64_t kMaxCenter = std::int64_t{1} << 61;
 // deflate never expands more than 1032:1 (zlib FAQ / RFC 1951 block structure).
 constexpr std::uint64_t kMaxInflateRatio = 1032;
 
@@ -67,25 +70,33 @@ Header read_header(std::istream& in, const std::string& name) {
   }
 }
 
+// The value of `key` as a decimal integer in [lo, hi] (range_text says which, in errors):
+// the one range check each header number gets before any arithmetic uses it.
 std::int64_t header_integer(const Header& h, const std::string& name, const std::string& key,
-                            bool required, std::int64_t fallback) {
+                            bool required, std::int64_t fallback, std::int64_t lo, std::int64_t hi,
+                            const char* range_text) {
   const auto it = h.keys.find(key);
   if (it == h.keys.end()) {
     if (required) fail(name, "vol header has no '" + key + "' line");
     return fallback;
   }
   const std::string& v = it->second;
+  const std::string shown = v.substr(0, 40);
   std::int64_t out = 0;
   const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), out);
-  if (ec == std::errc::result_out_of_range)
-    fail(name, "vol header '" + key + ": " + v + "' does not fit a 64-bit integer");
-  if (ec != std::errc() || end != v.data() + v.size() || v.empty())
-    fail(name, "vol header '" + key + ": " + v.substr(0, 40) + "' is not a decimal integer");
+  const bool decimal = !v.empty() && end == v.data() + v.size();
+  if (decimal && ec == std::errc::result_out_of_range)
+    fail(name, "vol header '" + key + ": " + shown + "' is not in " + range_text);
+  if (ec != std::errc() || !decimal)
+    fail(name, "vol header '" + key + ": " + shown + "' is not a decimal integer");
+  if (out < lo || out > hi)
+    fail(name, "vol header '" + key + ": " + shown + "' is not in " + range_text);
   return out;
 }
 
 // The voxel bytes of a Version 3 payload: one zlib stream that inflates to exactly `need`
-// bytes and ends at the end of the payload.
+// bytes and ends at the end of the payload. Memory is taken as the bytes arrive
+// (ArrivingBytes), not for the claim: a corrupt stream fails before its claim is allocated.
 std::vector<std::uint8_t> inflate_exactly(const std::string& name, const std::string& packed,
                                           std::uint64_t need) {
   if (need > kMaxInflateRatio * packed.size() + 64) {
@@ -94,7 +105,7 @@ std::vector<std::uint8_t> inflate_exactly(const std::string& name, const std::st
                    std::to_string(kMaxInflateRatio * packed.size() + 64) +
                    " (truncated file or wrong X, Y, Z)");
   }
-  std::vector<std::uint8_t> out(static_cast<std::size_t>(need));
+  ArrivingBytes out(need);
   z_stream zs{};
   if (inflateInit(&zs) != Z_OK) fail(name, "zlib: cannot start decompression");
   struct End {
@@ -102,7 +113,7 @@ std::vector<std::uint8_t> inflate_exactly(const std::string& name, const std::st
     ~End() { inflateEnd(s); }
   } end{&zs};
   constexpr std::uint64_t kChunk = 1u << 30;
-  std::uint64_t in_pos = 0, out_pos = 0;
+  std::uint64_t in_pos = 0;
   // Once the voxels are full, one spare byte detects a stream that inflates to more.
   std::uint8_t spare = 0;
   bool probing = false;
@@ -114,21 +125,20 @@ std::vector<std::uint8_t> inflate_exactly(const std::string& name, const std::st
       zs.avail_in = static_cast<uInt>(n);
       in_pos += n;
     }
-    if (zs.avail_out == 0 && !probing) {
-      if (out_pos < need) {
-        const auto n = std::min<std::uint64_t>(kChunk, need - out_pos);
-        zs.next_out = out.data() + out_pos;
-        zs.avail_out = static_cast<uInt>(n);
-        out_pos += n;
-      } else {
-        probing = true;
-        zs.next_out = &spare;
-        zs.avail_out = 1;
-      }
+    std::span<std::uint8_t> room;
+    if (!probing) room = out.room();
+    if (room.empty()) {
+      probing = true;
+      zs.next_out = &spare;
+      zs.avail_out = 1;
+    } else {
+      zs.next_out = room.data();
+      zs.avail_out = static_cast<uInt>(room.size());
     }
     rc = inflate(&zs, Z_NO_FLUSH);
     if (probing && zs.avail_out == 0)
       fail(name, "zlib data inflates to more than X*Y*Z = " + std::to_string(need) + " bytes");
+    if (!probing) out.arrived(room.size() - zs.avail_out);
     if (rc == Z_STREAM_END) break;
     if (rc == Z_BUF_ERROR && zs.avail_in == 0 && in_pos == packed.size()) {
       fail(name, "truncated zlib data: the stream stops after " + std::to_string(zs.total_out) +
@@ -142,13 +152,13 @@ std::vector<std::uint8_t> inflate_exactly(const std::string& name, const std::st
   }
   if (rc == Z_MEM_ERROR) fail(name, "zlib: out of memory");
   if (rc != Z_STREAM_END) fail(name, "zlib error " + std::to_string(rc));
-  if (zs.total_out != need) {
-    fail(name, "zlib data inflates to " + std::to_string(zs.total_out) +
+  if (out.size() != need) {
+    fail(name, "zlib data inflates to " + std::to_string(out.size()) +
                    " bytes, X*Y*Z = " + std::to_string(need) + " needed");
   }
   const std::uint64_t unused = zs.avail_in + (packed.size() - in_pos);
   if (unused != 0) fail(name, std::to_string(unused) + " bytes after the end of the zlib stream");
-  return out;
+  return out.take();
 }
 
 std::string deflate_all(const std::vector<std::uint8_t>& raw) {
@@ -193,27 +203,22 @@ Image<std::uint8_t> read_vol(std::istream& in, const std::string& name) {
     fail(name, "vol Voxel-Endian " + it->second.substr(0, 20) + " is not supported (0)");
   if (auto it = h.keys.find("Voxel-Size"); it != h.keys.end() && it->second != "1")
     fail(name, "vol Voxel-Size " + it->second.substr(0, 20) + " is not supported (1 byte)");
-  const std::int64_t size[3] = {header_integer(h, name, "Z", true, 0),
-                                header_integer(h, name, "Y", true, 0),
-                                header_integer(h, name, "X", true, 0)};
   const char* axis[3] = {"Z", "Y", "X"};
+  std::int64_t size[3] = {0, 0, 0};
+  for (int k = 0; k < 3; ++k)
+    size[k] = header_integer(h, name, axis[k], true, 0, 1, kMaxExtent, "[1, 2^31 - 1]");
   std::vector<std::int64_t> lower(3);
   std::uint64_t need = 1;
   for (int k = 0; k < 3; ++k) {
-    if (size[k] < 1 || size[k] > kMaxExtent) {
-      fail(name, std::string("vol size ") + axis[k] + ": " + std::to_string(size[k]) +
-                     " is not in [1, 2^31 - 1]");
-    }
-    const std::int64_t half = (size[k] - 1) / 2;
+    // Centers in [-2^61, 2^61] and sizes below 2^31: every coordinate of the volume lies in
+    // (-2^62, 2^62), so that the difference of any two fits in 64 bits (checked all the same).
+    const Int64 half = Int64(size[k] - 1) / Int64(2);
     const std::int64_t center =
-        header_integer(h, name, std::string("Center-") + axis[k], false, half);
-    std::int64_t low = 0, up = 0;
-    if (__builtin_sub_overflow(center, half, &low) ||
-        __builtin_add_overflow(low, size[k] - 1, &up)) {
-      fail(name, std::string("vol Center-") + axis[k] + ": " + std::to_string(center) +
-                     " puts the volume outside the 64-bit lattice");
-    }
-    lower[static_cast<std::size_t>(k)] = low;
+        header_integer(h, name, std::string("Center-") + axis[k], false, half.value(), -kMaxCenter,
+                       kMaxCenter, "[-2^61, 2^61]");
+    const Int64 low = Int64(center) - half;
+    (void)(low + Int64(size[k] - 1)); // the upper bound
+    lower[static_cast<std::size_t>(k)] = low.value();
   }
   {
     std::uint64_t n = 0;

@@ -12,14 +12,18 @@
 // Reading is hardened against hostile files (every failure is one IoError naming the file
 // and the problem, before any allocation the header cannot justify):
 //   - at most 64 header lines of at most 256 bytes, each key at most once;
-//   - X, Y, Z in [1, 2^31 - 1]; their product is computed with overflow checks;
+//   - every header number is range-checked before any arithmetic: X, Y, Z in [1, 2^31 - 1],
+//     Center-X/Y/Z in [-2^61, 2^61] (so every coordinate lies in (-2^62, 2^62) and the
+//     difference of two fits in 64 bits); sums and products are computed with overflow checks;
 //   - Version 2: the payload must be exactly X*Y*Z bytes (truncated or trailing data is an
 //     error); Version 3: X*Y*Z must not exceed 1032 times the compressed size plus 64 (the
 //     largest expansion deflate allows), the stream must inflate to exactly X*Y*Z bytes and
 //     end at the end of the file (truncated, corrupt or trailing data is an error);
-//   - Center values are any int64; Center - (size - 1) / 2 and the upper bound are computed
-//     with overflow checks (Center-X: -9223372036854775808 is an error, not UB).
-// Cost: O(X*Y*Z) time, memory the compressed payload plus the image. Writing is atomic
+//   - Version 3 takes memory as the inflated bytes arrive (kernel/io/input_file.hpp's
+//     ArrivingBytes), not for the claim: a small corrupt file claiming a large volume fails
+//     with little memory taken.
+// Cost: O(X*Y*Z) time, memory the compressed payload plus the image (Version 3: plus one
+// 16 MiB piece while the pieces are joined). Writing is atomic
 // (kernel/io/output_files.hpp); Version 3 uses zlib's default level (6), as DGtal does.
 #pragma once
 

@@ -13,11 +13,14 @@
 //    "a piece of the expected error line"}
 // Files may be in sub-folders ("out/results.csv"); a name ending in '/' makes a folder.
 #include "tests/support/cli.hpp"
+#include "tests/support/corrupt_zlib.hpp"
+#include "tests/support/nifti_bytes.hpp"
 #include "tests/support/paths.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -520,6 +523,86 @@ std::vector<BadInput> bad_inputs() {
        {},
        "name exactly one"},
       {"serve: unknown operation", "serve frobnicate", {}, {}, "unknown operation 'frobnicate'"},
+      // issue #41 (volume-file parsers: NIfTI header, .vol ranges, claims, npy dtypes)
+      {"NIfTI-1 vox_offset 0 (was read from byte 348)",
+       "convert {dir}/v.nii {dir}/out.npy",
+       {{"v.nii", zdg::test::patched<float>(zdg::test::nifti1_bytes(4, 3, 2), 108, 0.0f)}},
+       {},
+       "v.nii: NIfTI vox_offset 0 is not an integer in [352, 2^31)"},
+      {"NIfTI-1 vox_offset NaN",
+       "surface {dir}/v.nii -o {dir}/x.ply",
+       {{"v.nii", zdg::test::patched<float>(zdg::test::nifti1_bytes(4, 3, 2), 108, NAN)}},
+       {},
+       "v.nii: NIfTI vox_offset nan is not an integer"},
+      {"NIfTI-1 vox_offset 1e30",
+       "convert {dir}/v.nii.gz {dir}/out.npy",
+       {{"v.nii.gz", zdg::test::gzip_bytes(
+                         zdg::test::patched<float>(zdg::test::nifti1_bytes(4, 3, 2), 108, 1e30f))}},
+       {},
+       "v.nii.gz: NIfTI vox_offset 1.00000002e+30 is not an integer in [352, 2^31)"},
+      {"NIfTI-2 dim[0] = 2^31 (crashed inside the library)",
+       "surface {dir}/d.nii -o {dir}/x.ply",
+       {{"d.nii", zdg::test::patched<std::int64_t>(zdg::test::nifti2_bytes(4, 3, 2), 16,
+                                                   std::int64_t{1} << 31)}},
+       {},
+       "d.nii: NIfTI dim[0] = 2147483648 (1..7)"},
+      {"NIfTI-2 .nii.gz dim[0] = -2^63",
+       "convert {dir}/d.nii.gz {dir}/out.npy",
+       {{"d.nii.gz", zdg::test::gzip_bytes(zdg::test::patched<std::int64_t>(
+                         zdg::test::nifti2_bytes(4, 3, 2), 16, INT64_MIN))}},
+       {},
+       "d.nii.gz: NIfTI dim[0] = -9223372036854775808 (1..7)"},
+      {"NIfTI-2 vox_offset inside the header",
+       "convert {dir}/o.nii {dir}/out.npy",
+       {{"o.nii", zdg::test::patched<std::int64_t>(zdg::test::nifti2_bytes(4, 3, 2), 168, 348)}},
+       {},
+       "o.nii: NIfTI vox_offset 348 is not in [544, 2^62]"},
+      {"NIfTI-2 bitpix that disagrees with the datatype",
+       "convert {dir}/b.nii {dir}/out.npy",
+       {{"b.nii", zdg::test::patched<std::int16_t>(zdg::test::nifti2_bytes(4, 3, 2), 14, 32)}},
+       {},
+       "b.nii: NIfTI bitpix 32 disagrees with the datatype uint8"},
+      {"NIfTI-2 magic without its check bytes",
+       "convert {dir}/m.nii {dir}/out.npy",
+       {{"m.nii", zdg::test::patched<char>(zdg::test::nifti2_bytes(4, 3, 2), 8, '\n')}},
+       {},
+       "m.nii: not a single-file NIfTI-2 volume"},
+      {".nii.gz of 1 MB claiming 1000^3 voxels, corrupt after 4 MiB",
+       "convert {dir}/c.nii.gz {dir}/out.npy",
+       {{"c.nii.gz",
+         zdg::test::good_then_garbage(
+             zdg::test::patched<std::int16_t>(
+                 zdg::test::patched<std::int16_t>(
+                     zdg::test::patched<std::int16_t>(zdg::test::nifti1_bytes(1, 1, 1), 42, 1000),
+                     44, 1000),
+                 46, 1000)
+                 .substr(0, 352),
+             std::size_t{4} << 20, 1000000, true)}},
+       {},
+       "c.nii.gz: truncated or corrupt NIfTI data"},
+      {".vol Version 3 of 1 MB claiming 1000^3 voxels, corrupt after 4 MiB",
+       "surface {dir}/c.vol -o {dir}/x.ply",
+       {{"c.vol", "X: 1000\nY: 1000\nZ: 1000\nVersion: 3\n.\n" +
+                      zdg::test::good_then_garbage("", std::size_t{4} << 20, 1000000, false)}},
+       {},
+       "c.vol: corrupt zlib data"},
+      {".vol Center-X at INT64_MAX - 1 (its upper bound reached INT64_MAX)",
+       "surface {dir}/c.vol -o {dir}/x.ply",
+       {{"c.vol", "Center-X: 9223372036854775806\nX: 2\nY: 1\nZ: 1\nVersion: 2\n.\nab"}},
+       {},
+       "c.vol: vol header 'Center-X: 9223372036854775806' is not in [-2^61, 2^61]"},
+      {".vol Center-Y past 2^61",
+       "convert {dir}/c.vol {dir}/out.npy",
+       {{"c.vol", "Center-Y: 2305843009213693953\nX: 1\nY: 1\nZ: 1\nVersion: 2\n.\na"}},
+       {},
+       "c.vol: vol header 'Center-Y: 2305843009213693953' is not in [-2^61, 2^61]"},
+      {"npy dtype not accepted: the message lists every accepted dtype",
+       "convert {dir}/c.npy {dir}/out.vol",
+       {{"c.npy",
+         npy("{'descr': '<c8', 'fortran_order': False, 'shape': (1, 1), }", std::string(8, '\0'))}},
+       {},
+       "c.npy: dtype '<c8' is not supported (accepted: bool, uint8, uint16, uint32, uint64, "
+       "int8, int16, int32, int64, float32, float64, little-endian)"},
   };
 }
 

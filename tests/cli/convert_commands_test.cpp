@@ -160,7 +160,7 @@ void check_bad_inputs(bool files_half) {
       {"convert " + f("cut.nii.gz") + " " + out, "truncated or corrupt NIfTI data", "cut.nii.gz"},
       {"convert " + f("corrupt.nii.gz") + " " + out, "NIfTI", "corrupt.nii.gz"},
       {"convert " + f("big.vol") + " " + out, "more voxels than 2^63 - 1", "big.vol"},
-      {"convert " + f("center.vol") + " " + out, "outside the 64-bit lattice", "center.vol"},
+      {"convert " + f("center.vol") + " " + out, "is not in [-2^61, 2^61]", "center.vol"},
       {"convert " + f("four.raw") + " " + out +
            " --raw-shape 3037000500,3037000500,3037000500 "
            "--raw-dtype float64",

@@ -64,3 +64,50 @@ def test_metadata_and_existing_outputs(tmp_path):
     with pytest.raises(ValueError, match="dtype"):
         zdg.write_volume(str(tmp_path / "c.npy"), np.zeros(3, dtype=np.complex64))
     assert not os.path.exists(tmp_path / "c.npy")
+
+
+def _nifti2_bytes(dim0, nx=4, ny=3, nz=2, vox_offset=544):
+    """A NIfTI-2 single file of uint8 voxels built byte by byte (little-endian)."""
+    import struct
+    h = bytearray(544)
+    struct.pack_into("<i", h, 0, 540)
+    h[4:12] = b"n+2\0\r\n\x1a\n"
+    struct.pack_into("<hh", h, 12, 2, 8)  # DT_UINT8, 8 bits
+    struct.pack_into("<8q", h, 16, dim0, nx, ny, nz, 1, 1, 1, 1)
+    struct.pack_into("<8d", h, 104, *([1.0] * 8))
+    struct.pack_into("<q", h, 168, vox_offset)
+    return bytes(h) + bytes(range(nx * ny * nz))
+
+
+# Issue #41 item 5: a NIfTI-2 header with dim[0] >= 2^31 crashed the interpreter (SIGSEGV in the
+# NIfTI library's header conversion). It is an OSError naming the file, checked first in a
+# child interpreter so that a crash fails this test rather than the test runner.
+@pytest.mark.parametrize("dim0", [2**31, 2**32 + 3, -1, 0, 8, -2**63])
+@pytest.mark.parametrize("ext", [".nii", ".nii.gz"])
+def test_nifti2_dim0_out_of_range_is_an_error_not_a_crash(tmp_path, dim0, ext):
+    import gzip
+    import subprocess
+    import sys
+    path = str(tmp_path / ("d" + ext))
+    data = _nifti2_bytes(dim0)
+    with open(path, "wb") as f:
+        f.write(gzip.compress(data) if ext == ".nii.gz" else data)
+    child = subprocess.run(
+        [sys.executable, "-c",
+         "import sys, zdg\n"
+         "try:\n"
+         "    zdg.read_volume(sys.argv[1])\n"
+         "except OSError as e:\n"
+         "    print(e)\n"
+         "    sys.exit(3)\n",
+         path], capture_output=True, text=True, timeout=120)
+    assert child.returncode == 3, (child.returncode, child.stderr)
+    assert child.stdout.startswith(path + ": NIfTI dim[0] = %d (1..7)" % dim0), child.stdout
+    with pytest.raises(OSError, match=r"dim\[0\]"):
+        zdg.read_volume(path)
+    # The same bytes with dim[0] = 3 read as the volume they hold.
+    with open(path, "wb") as f:
+        data = _nifti2_bytes(3)
+        f.write(gzip.compress(data) if ext == ".nii.gz" else data)
+    assert np.array_equal(zdg.read_volume(path),
+                          np.arange(24, dtype=np.uint8).reshape(2, 3, 4))

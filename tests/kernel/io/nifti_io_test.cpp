@@ -3,6 +3,9 @@
 #include <zdg/kernel/io/nifti_io.hpp>
 
 #include "tests/support/cli.hpp"
+#include "tests/support/corrupt_zlib.hpp"
+#include "tests/support/nifti_bytes.hpp"
+#include "tests/support/peak_memory.hpp"
 #include "tests/support/python.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +16,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+
+#include <zlib.h>
 
 namespace zdg {
 namespace {
@@ -333,6 +338,186 @@ nib.save(nib.Nifti2Image(np.zeros((2, 2, 2), np.uint8), np.eye(4)), sys.argv[1])
     patch<std::int64_t>(n2, 16 + 8 * static_cast<std::size_t>(k), std::int64_t{1} << 40);
   spit(dir / "over.nii", n2);
   expect_io_error((dir / "over.nii").string(), "more than 2^62 bytes");
+  fs::remove_all(dir);
+}
+
+// ---- Issue #41 items 1, 5 and 8: the header is checked by zdg before the library sees it.
+
+void spit_gz(const fs::path& p, const std::string& bytes) {
+  gzFile f = gzopen(p.string().c_str(), "wb6");
+  ASSERT_NE(f, nullptr);
+  if (!bytes.empty()) gzwrite(f, bytes.data(), static_cast<unsigned>(bytes.size()));
+  gzclose(f);
+}
+
+// The field at `off` of a hand-built NIfTI-2 file (little-endian), replaced.
+template <class T>
+std::string with(std::string bytes, std::size_t off, T v) {
+  patch<T>(bytes, off, v);
+  return bytes;
+}
+
+// Reads `path` in a child process: "ok", the IoError's text, or (crash) finished = false.
+test::ChildMemory read_in_child(const std::string& path) {
+  return test::run_in_child_measuring_memory([&] {
+    try {
+      read_nifti(path);
+      return std::string("ok");
+    } catch (const IoError& e) {
+      return std::string(e.what());
+    }
+  });
+}
+
+void expect_refused_in_child(const std::string& path, const std::string& words) {
+  const auto r = read_in_child(path);
+  ASSERT_TRUE(r.finished) << path << ": the reader crashed";
+  EXPECT_EQ(r.result.rfind(path + ": ", 0), 0u) << r.result;
+  EXPECT_EQ(r.result.find('\n'), std::string::npos) << r.result;
+  EXPECT_NE(r.result.find(words), std::string::npos) << r.result << " (expected '" << words << "')";
+}
+
+TEST(NiftiIo, HandBuiltNifti2ReadsInBothByteOrders) {
+  const auto dir = test::scratch_dir("nifti");
+  for (const bool big : {false, true}) {
+    for (const bool gz : {false, true}) {
+      const fs::path p = dir / (std::string(big ? "big" : "little") + (gz ? ".nii.gz" : ".nii"));
+      const std::string f = test::nifti2_bytes(5, 4, 3, big);
+      gz ? spit_gz(p, f) : spit(p, f);
+      const auto v = read_nifti(p.string());
+      EXPECT_EQ(v.array.dtype, DType::U8);
+      EXPECT_EQ(v.array.shape, (std::vector<std::int64_t>{3, 4, 5}));
+      EXPECT_EQ(std::string(v.array.bytes.begin(), v.array.bytes.end()), f.substr(544)) << p;
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// Item 5: dim[0] outside 1..7 (2^31 crashed the process inside the library's conversion,
+// which loops up to dim[0] over an 8-entry array) and every other field the library or the
+// reader trusts: one error naming the file, in a child so that a crash fails the test.
+TEST(NiftiIo, Nifti2HeaderFieldsAreCheckedBeforeTheLibrary) {
+  const auto dir = test::scratch_dir("nifti");
+  const std::string good = test::nifti2_bytes(4, 3, 2);
+  struct Case {
+    std::string name, bytes, words;
+  };
+  const std::int64_t big = std::int64_t{1} << 31;
+  std::string bad_magic = good;
+  bad_magic[8] = '\n'; // "\r\n\032\n" damaged as by a text-mode transfer (CR to LF)
+  std::string pair = good;
+  pair[5] = 'i';
+  const Case cases[] = {
+      {"dim0_2p31", with<std::int64_t>(good, 16, big), "NIfTI dim[0] = 2147483648 (1..7)"},
+      {"dim0_2p32", with<std::int64_t>(good, 16, (big << 1) + 3),
+       "NIfTI dim[0] = 4294967299 (1..7)"},
+      {"dim0_neg", with<std::int64_t>(good, 16, -1), "NIfTI dim[0] = -1 (1..7)"},
+      {"dim0_min", with<std::int64_t>(good, 16, INT64_MIN), "NIfTI dim[0] = -9223372036854775808"},
+      {"dim0_zero", with<std::int64_t>(good, 16, 0), "NIfTI dim[0] = 0 (1..7)"},
+      {"dim0_8", with<std::int64_t>(good, 16, 8), "NIfTI dim[0] = 8 (1..7)"},
+      {"dim2_zero", with<std::int64_t>(good, 32, 0), "dim[2] = 0 is not positive"},
+      {"dim3_neg", with<std::int64_t>(good, 40, -5), "dim[3] = -5 is not positive"},
+      {"dim_huge", with<std::int64_t>(good, 24, std::int64_t{1} << 62), "more than 2^62 bytes"},
+      {"bitpix", with<std::int16_t>(good, 14, 16), "bitpix 16 disagrees with the datatype uint8"},
+      {"datatype", with<std::int16_t>(good, 12, 0), "datatype 0"},
+      {"sizeof", with<std::int32_t>(good, 0, 541), "sizeof_hdr 541, 348 or 540"},
+      {"magic", bad_magic, "check bytes"},
+      {"pair", pair, ".hdr/.img pair"},
+      {"short_header", good.substr(0, 500), "truncated NIfTI-2 header (500 of 540 bytes)"},
+      {"off_zero", with<std::int64_t>(good, 168, 0), "vox_offset 0 is not in [544, 2^62]"},
+      {"off_540", with<std::int64_t>(good, 168, 540), "vox_offset 540 is not in [544"},
+      {"off_neg", with<std::int64_t>(good, 168, -544), "vox_offset -544"},
+      {"off_huge", with<std::int64_t>(good, 168, INT64_MAX), "vox_offset 9223372036854775807"},
+      {"off_past", with<std::int64_t>(good, 168, 560), "from offset 560) but the file has"},
+      {"pixdim_nan", with<double>(good, 112, std::nan("")), "pixdim[1] = nan"},
+      {"pixdim_inf", with<double>(good, 120, HUGE_VAL), "pixdim[2] = inf"},
+      {"inter_nan", with<double>(with<double>(good, 176, 2.0), 184, std::nan("")),
+       "scl_inter nan is not finite"},
+      {"qoffset_nan", with<double>(with<std::int32_t>(good, 344, 1), 384, std::nan("")),
+       "qoffset nan"},
+      {"srow_inf", with<double>(with<std::int32_t>(good, 348, 1), 400 + 24, -HUGE_VAL),
+       "srow translation -inf"},
+  };
+  for (const auto& c : cases) {
+    for (const bool gz : {false, true}) {
+      const fs::path p = dir / (c.name + (gz ? ".nii.gz" : ".nii"));
+      gz ? spit_gz(p, c.bytes) : spit(p, c.bytes);
+      std::string words = c.words;
+      if (gz && c.name == "off_past") words = "truncated or corrupt NIfTI data (8 of 24 bytes)";
+      expect_refused_in_child(p.string(), words);
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// Item 1: NIfTI-1's float vox_offset of 0, negative, NaN, infinite, 1e30, fractional or
+// inside the header was clamped to 348 by the library and the voxels read 4 bytes early
+// (exit 0, wrong data). Each is refused; 352 + 16 with 16 bytes of extension space reads.
+TEST(NiftiIo, Nifti1VoxOffsetIsChecked) {
+  const auto dir = test::scratch_dir("nifti");
+  const ScalarVolume v = sample_volume(DType::U8, {2, 3, 4}, 5);
+  write_nifti((dir / "good.nii").string(), v);
+  const std::string good = test::read_file(dir / "good.nii");
+  ASSERT_EQ(good.size(), 352u + 24);
+  const float bad[] = {0.0f,  -16.0f, std::nanf(""), HUGE_VALF, -HUGE_VALF,
+                       1e30f, 348.0f, 351.0f,        352.5f,    3e9f};
+  for (const float off : bad) {
+    for (const bool gz : {false, true}) {
+      const fs::path p = dir / (gz ? "off.nii.gz" : "off.nii");
+      gz ? spit_gz(p, with<float>(good, 108, off)) : spit(p, with<float>(good, 108, off));
+      expect_io_error(p.string(), "is not an integer in [352, 2^31)");
+    }
+  }
+  // One float past the file (the data does not fit after it).
+  spit(dir / "past.nii", with<float>(good, 108, 368.0f));
+  expect_io_error((dir / "past.nii").string(), "from offset 368) but the file has 376 bytes");
+  // An extension area of 16 bytes: the voxels start at 368 and read back exactly.
+  std::string ext = with<float>(good, 108, 368.0f);
+  ext.insert(352, std::string(16, '\x07'));
+  for (const bool gz : {false, true}) {
+    const fs::path p = dir / (gz ? "ext.nii.gz" : "ext.nii");
+    gz ? spit_gz(p, ext) : spit(p, ext);
+    EXPECT_EQ(read_nifti(p.string()).array.bytes, v.array.bytes) << p;
+  }
+  // dim[0] in neither byte order, a .hdr/.img pair's magic, ANALYZE (no magic), bitpix.
+  spit(dir / "d0.nii", with<std::int16_t>(good, 40, 1000));
+  expect_io_error((dir / "d0.nii").string(), "NIfTI dim[0] = 1000 (1..7)");
+  spit(dir / "d0neg.nii", with<std::int16_t>(good, 40, -3));
+  expect_io_error((dir / "d0neg.nii").string(), "NIfTI dim[0] = -3 (1..7)");
+  std::string pair = good;
+  pair[345] = 'i';
+  spit(dir / "pair.nii", pair);
+  expect_io_error((dir / "pair.nii").string(), ".hdr/.img pair");
+  std::string analyze = good;
+  std::memset(analyze.data() + 344, 0, 4);
+  spit(dir / "analyze.nii", analyze);
+  expect_io_error((dir / "analyze.nii").string(), "ANALYZE 7.5");
+  spit(dir / "bitpix.nii", with<std::int16_t>(good, 72, 16));
+  expect_io_error((dir / "bitpix.nii").string(), "bitpix 16 disagrees");
+  fs::remove_all(dir);
+}
+
+// Item 8: a 1 MB .nii.gz claiming 1000^3 uint8 voxels (within deflate's 1032:1 bound) whose
+// stream turns to garbage after 4 MiB: the error comes with little memory taken (the whole
+// claim, 1 GB, was allocated before); a good .nii.gz of several 16 MiB pieces reads exactly.
+TEST(NiftiIo, CorruptGzipTakesMemoryOnlyAsBytesArrive) {
+  const auto dir = test::scratch_dir("nifti");
+  write_nifti((dir / "one.nii").string(), sample_volume(DType::U8, {1, 1, 1}, 1));
+  std::string header = test::read_file(dir / "one.nii").substr(0, 352);
+  for (int k = 1; k <= 3; ++k)
+    patch<std::int16_t>(header, 40 + 2 * static_cast<std::size_t>(k), 1000);
+  const std::string file = test::good_then_garbage(header, std::size_t{4} << 20, 1000000, true);
+  ASSERT_LT(file.size(), 1100000u);
+  spit(dir / "claim.nii.gz", file);
+  const auto r = read_in_child((dir / "claim.nii.gz").string());
+  ASSERT_TRUE(r.finished);
+  EXPECT_NE(r.result.find("claim.nii.gz: truncated or corrupt NIfTI data"), std::string::npos)
+      << r.result;
+  EXPECT_LT(r.growth_kib, 96 * 1024) << "KiB taken by a corrupt 1 MB file";
+
+  const ScalarVolume big = sample_volume(DType::U16, {10, 1024, 1024}, 9);
+  write_nifti((dir / "big.nii.gz").string(), big);
+  EXPECT_EQ(read_nifti((dir / "big.nii.gz").string()).array.bytes, big.array.bytes);
   fs::remove_all(dir);
 }
 

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include <fstream>
+#include <functional>
 
 namespace zdg {
 namespace {
@@ -154,6 +155,70 @@ TEST(NpyIo, MalformedFilesAreClearErrors) {
             npy_bytes("{'descr': '|u1', 'fortran_order': False, 'shape': (0, 3), }", ""));
   EXPECT_THROW(npy_to_mask(read_npy((dir / "zero.npy").string())), IoError);
   std::filesystem::remove_all(dir);
+}
+
+// Issue #41 item 14: the unsupported-dtype messages list every dtype that is read, float32
+// and float64 included (they were omitted), and each listed name is accepted (by name and as
+// an npy descr); the conversions' errors name the file when it is given.
+TEST(NpyIo, DtypeMessagesListWhatIsAcceptedAndErrorsNameTheFile) {
+  std::string listed;
+  try {
+    parse_npy(npy_bytes("{'descr': '<c8', 'fortran_order': False, 'shape': (1,), }", "12345678"),
+              "c.npy");
+    ADD_FAILURE() << "<c8 accepted";
+  } catch (const IoError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("c.npy: dtype '<c8' is not supported (accepted: ", 0), 0u) << what;
+    const auto open = what.find("(accepted: ") + 11;
+    listed = what.substr(open, what.find(", little-endian)") - open);
+  }
+  std::vector<std::string> names;
+  for (std::size_t b = 0, e; b < listed.size(); b = e + 2) {
+    e = listed.find(", ", b);
+    if (e == std::string::npos) e = listed.size();
+    names.push_back(listed.substr(b, e - b));
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"bool", "uint8", "uint16", "uint32", "uint64", "int8",
+                                             "int16", "int32", "int64", "float32", "float64"}));
+  for (const auto& n : names) {
+    const DType t = dtype_from_name(n);
+    EXPECT_EQ(dtype_name(t), n);
+    // An array of that dtype goes through the file format and back.
+    NpyArray a;
+    a.dtype = t;
+    a.shape = {1};
+    a.bytes.assign(dtype_size(t), 0);
+    EXPECT_EQ(parse_npy(npy_file_bytes(a), "x.npy").dtype, t) << n;
+  }
+  try {
+    dtype_from_name("complex64");
+    ADD_FAILURE() << "complex64 accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("(accepted: " + listed + ")"), std::string::npos)
+        << e.what();
+  }
+  NpyArray empty;
+  empty.dtype = DType::U8;
+  empty.shape = {0, 3};
+  for (const auto& f : {std::function<void()>([&] { npy_to_mask(empty, {}, "e.npy"); }),
+                        std::function<void()>([&] { npy_to_int64(empty, {}, "e.npy"); })}) {
+    try {
+      f();
+      ADD_FAILURE() << "an empty array was converted";
+    } catch (const IoError& e) {
+      EXPECT_STREQ(e.what(), "e.npy: empty array (an extent is 0)");
+    }
+  }
+  NpyArray flt;
+  flt.dtype = DType::F32;
+  flt.shape = {1, 1};
+  flt.bytes.assign(4, 0);
+  try {
+    npy_to_int64(flt, {}, "f.npy");
+    ADD_FAILURE() << "float32 converted to integers";
+  } catch (const IoError& e) {
+    EXPECT_STREQ(e.what(), "f.npy: float32 array where integers are needed");
+  }
 }
 
 // Issue #18: headers past 65535 bytes wrapped the 2-byte length of version 1.0. Arrays with

@@ -1,6 +1,8 @@
 #include <zdg/kernel/io/vol_io.hpp>
 
 #include "tests/support/cli.hpp"
+#include "tests/support/corrupt_zlib.hpp"
+#include "tests/support/peak_memory.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
@@ -160,10 +162,10 @@ TEST(VolIo, DgtalHeaderAndErrors) {
   expect_io_error("X: 2\nY: 1\nZ: 1\nVersion: 4\n.\nxx", "Version 4 is not supported");
   expect_io_error("X: 2\nY: 1\nZ: 1\nVoxel-Size: 2\n.\nxxxx", "Voxel-Size 2");
   expect_io_error("X: 2\nY: 1\nZ: 1\nVoxel-Endian: 1\n.\nxx", "Voxel-Endian 1");
-  expect_io_error("X: 0\nY: 1\nZ: 1\n.\n", "X: 0 is not in");
-  expect_io_error("X: -4\nY: 1\nZ: 1\n.\n", "X: -4 is not in");
+  expect_io_error("X: 0\nY: 1\nZ: 1\n.\n", "'X: 0' is not in");
+  expect_io_error("X: -4\nY: 1\nZ: 1\n.\n", "'X: -4' is not in");
   expect_io_error("X: 2147483648\nY: 1\nZ: 1\n.\n", "is not in [1, 2^31 - 1]");
-  expect_io_error("X: 99999999999999999999\nY: 1\nZ: 1\n.\n", "does not fit a 64-bit integer");
+  expect_io_error("X: 99999999999999999999\nY: 1\nZ: 1\n.\n", "is not in [1, 2^31 - 1]");
   expect_io_error("no colon here\n.\n", "not a vol header line");
   expect_io_error(std::string(300, 'a') + "\n.\n", "longer than 256 bytes");
   std::string many;
@@ -176,16 +178,64 @@ TEST(VolIo, DgtalHeaderAndErrors) {
   std::filesystem::remove_all(dir);
 }
 
-// Issue #18 item 6: Center values at the ends of int64 are an error, not a signed overflow
-// (the test runs under UBSan in CI).
-TEST(VolIo, CenterAtInt64LimitsIsAnErrorNotOverflow) {
-  expect_io_error("Center-X: -9223372036854775808\nX: 4\nY: 1\nZ: 1\n.\nxxxx",
-                  "outside the 64-bit lattice");
-  expect_io_error("Center-Z: 9223372036854775807\nX: 1\nY: 1\nZ: 4\n.\nxxxx",
-                  "outside the 64-bit lattice");
-  // Extreme but representable: lower = INT64_MIN, upper = INT64_MIN + 1.
-  const auto img = read_bytes("Center-X: -9223372036854775808\nX: 2\nY: 1\nZ: 1\n.\nxx");
-  EXPECT_EQ(img.domain().lower(2), std::numeric_limits<std::int64_t>::min());
+// Issue #18 item 6 and #41 item 12: every header number is range-checked before any
+// arithmetic. Centers lie in [-2^61, 2^61] (every coordinate then in (-2^62, 2^62)); one
+// past either end is refused with the same message, whatever X: the upper bound
+// Center + X / 2 can no longer reach INT64_MAX (Center-X: 9223372036854775806, X: 2 was
+// accepted while ...805 was refused downstream with a message about 2^40).
+TEST(VolIo, CenterOutsideItsRangeIsRefusedBeforeArithmetic) {
+  const std::int64_t m = std::int64_t{1} << 61;
+  for (const std::string axis : {"X", "Y", "Z"}) {
+    for (const std::string& center : std::vector<std::string>{
+             std::to_string(m + 1), std::to_string(-m - 1), "9223372036854775806",
+             "9223372036854775805", "9223372036854775807", "-9223372036854775808",
+             "99999999999999999999", "-99999999999999999999"}) {
+      for (const std::string size : {"1", "2", "4"}) {
+        std::string h = "Center-" + axis + ": " + center + "\n";
+        for (const std::string a : {"X", "Y", "Z"}) h += a + ": " + (a == axis ? size : "1") + "\n";
+        expect_io_error(h + ".\n" + std::string(static_cast<std::size_t>(std::stoi(size)), 'x'),
+                        "'Center-" + axis + ": " + center + "' is not in [-2^61, 2^61]");
+      }
+    }
+  }
+  // The ends of the range are read: lower = Center - (X - 1) / 2.
+  const auto at = [](std::int64_t c, int x) {
+    return read_bytes("Center-X: " + std::to_string(c) + "\nX: " + std::to_string(x) +
+                      "\nY: 1\nZ: 1\n.\n" + std::string(static_cast<std::size_t>(x), 'x'));
+  };
+  EXPECT_EQ(at(m, 2).domain().lower(2), m);
+  EXPECT_EQ(at(m, 2).domain().upper(2), m + 1);
+  EXPECT_EQ(at(-m, 3).domain().lower(2), -m - 1);
+  EXPECT_EQ(at(-m, 3).domain().upper(2), -m + 1);
+}
+
+// Issue #41 item 8: a 1 MB Version 3 file claiming 1000^3 voxels (within deflate's 1032:1
+// bound) whose stream turns to garbage after 4 MiB: the error comes with little memory taken
+// (it took the whole claim, 1 GB, before), and a good stream of several 16 MiB pieces still
+// reads back exactly.
+TEST(VolIo, CorruptStreamTakesMemoryOnlyAsBytesArrive) {
+  const std::string file = "X: 1000\nY: 1000\nZ: 1000\nVersion: 3\n.\n" +
+                           test::good_then_garbage("", std::size_t{4} << 20, 1000000, false);
+  ASSERT_LT(file.size(), 1100000u);
+  const auto run = test::run_in_child_measuring_memory([&] {
+    try {
+      read_bytes(file);
+      return std::string("read");
+    } catch (const IoError& e) {
+      return std::string(e.what());
+    }
+  });
+  ASSERT_TRUE(run.finished);
+  EXPECT_EQ(run.result.rfind("mem.vol: corrupt zlib data", 0), 0u) << run.result;
+  EXPECT_LT(run.growth_kib, 96 * 1024) << "KiB taken by a corrupt 1 MB file";
+  EXPECT_GE(run.growth_kib, 0);
+
+  std::string voxels(std::size_t{40} << 20, '\0');
+  for (std::size_t i = 0; i < voxels.size(); i += 4099) voxels[i] = static_cast<char>(i % 251);
+  const auto img = read_bytes(dgtal_v3(1024, 1024, 40, voxels));
+  ASSERT_EQ(img.values().size(), voxels.size());
+  EXPECT_TRUE(std::equal(img.values().begin(), img.values().end(), voxels.begin(),
+                         [](std::uint8_t a, char b) { return a == static_cast<std::uint8_t>(b); }));
 }
 
 // Issue #18 item 5: sizes are checked against the file before anything is allocated: a
