@@ -32,16 +32,12 @@ void gmp_free(void* p, std::size_t /*size*/) {
   std::free(p);
 }
 
-// Installed when the library is loaded (this file defines BigInt's conversions, which every
-// program using BigInt links), and again by install_gmp_allocation() for callers that need
-// the guarantee before static initialization is over.
-[[maybe_unused]] const bool gmp_allocation_installed = (install_gmp_allocation(), true);
+// Installed when the library is loaded: this file defines BigInt's conversions (to_string,
+// parse_integer), which every program using BigInt links.
+[[maybe_unused]] const bool gmp_allocation_installed =
+    (mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free), true);
 
 } // namespace
-
-void install_gmp_allocation() {
-  mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
-}
 
 namespace detail {
 

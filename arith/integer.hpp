@@ -37,10 +37,6 @@ namespace zdg {
 using BigInt =
     boost::multiprecision::number<boost::multiprecision::gmp_int, boost::multiprecision::et_off>;
 
-/// Makes GMP report a failed allocation as std::bad_alloc instead of aborting the process.
-/// Done when the library is loaded; idempotent; not thread-safe against concurrent GMP work.
-void install_gmp_allocation();
-
 /// The three shipped integer types, for tests and explicit instantiations.
 template <class I>
 concept TowerInt = std::same_as<I, Int64> || std::same_as<I, Int128> || std::same_as<I, BigInt>;
