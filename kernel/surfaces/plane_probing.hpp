@@ -336,9 +336,9 @@ PlaneProbingResult<I> probe_plane(InSet&& in_set, const Point3<I>& origin,
 
 /// Probes the standard plane {x : 0 <= N . x < ||N||_1} from the origin (computed on I).
 /// The run ends within ||N||_1 - 3 steps (the proven bound); when that bound exceeds
-/// max_steps, the H-algorithm, which needs Theta(||N||_1) steps on such normals, is refused
-/// before any work, and the R-algorithm runs until it ends or max_steps steps are done
-/// (InvalidArgument naming the proven bound).
+/// max_steps, the H-algorithm, which takes a sizeable fraction of it (7% to 100% of ||N||_1 on
+/// the normals measured), is refused before any work, and the R-algorithm runs until it ends or
+/// max_steps steps are done (InvalidArgument naming the proven bound).
 template <TowerInt I>
 PlaneProbingResult<I> probe_standard_plane(const Point3<I>& normal, ProbingAlgorithm algorithm,
                                            std::uint64_t max_steps = kPlaneProbingMaxSteps);
