@@ -110,13 +110,12 @@ private:
     if (auto s = node.value_exact<std::string>()) return *s;
     if (const auto* i = node.as_integer()) {
       // TOML's 0x.., 0o.., 0b.. integers: zdg's numbers are decimal everywhere.
-      const toml::value_flags f = i->flags();
-      const char* base =
-          (f & toml::value_flags::format_as_hexadecimal) != toml::value_flags::none
-              ? "a hexadecimal"
-          : (f & toml::value_flags::format_as_octal) != toml::value_flags::none  ? "an octal"
-          : (f & toml::value_flags::format_as_binary) != toml::value_flags::none ? "a binary"
-                                                                                 : nullptr;
+      // The base is a two-bit field of the flags (binary 1, octal 2, hexadecimal 3).
+      const toml::value_flags f = i->flags() & toml::value_flags::format_as_hexadecimal;
+      const char* base = f == toml::value_flags::format_as_hexadecimal ? "a hexadecimal"
+                         : f == toml::value_flags::format_as_octal     ? "an octal"
+                         : f == toml::value_flags::format_as_binary    ? "a binary"
+                                                                       : nullptr;
       if (base != nullptr) {
         fail(node, what + " is " + base + " integer: zdg reads decimal numbers only (write " +
                        std::to_string(i->get()) + " if that value is meant)");

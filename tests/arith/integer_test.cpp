@@ -371,12 +371,12 @@ TEST(BigIntMemory, FailedGmpAllocationIsBadAlloc) {
       std::fclose(f);
     }
     const rlim_t limit = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) +
-                         (rlim_t{256} << 20);
+                         (rlim_t{64} << 20);
     const rlimit rl{limit, limit};
     if (::setrlimit(RLIMIT_AS, &rl) != 0) ::_exit(5);
     try {
-      zdg::BigInt x = (zdg::BigInt(1) << (1 << 20)) - 1;
-      for (int i = 0; i < 40; ++i) x = x * x; // 2^20 bits doubling: past 256 MiB at i = 11
+      zdg::BigInt x = (zdg::BigInt(1) << (1 << 22)) - 1;
+      for (int i = 0; i < 40; ++i) x = x * x; // 512 KiB doubling: past 64 MiB at i = 7
       ::_exit(4);
     } catch (const std::bad_alloc&) {
       // GMP still works after the failure.
