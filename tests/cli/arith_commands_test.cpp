@@ -112,15 +112,17 @@ TEST(CliCf, OutOfMemoryIsOneLine) {
                                  << "\"}\n{\"fraction\":\"415/93\"}\n";
   const std::string zdg = "'" + std::string(zdg::test::cli_path()) + "'";
   const std::string d = "'" + dir.string() + "'";
-  const int cli = std::system(
-      ("ulimit -v 400000; " + zdg + " cf \"$(cat " + d + "/fraction)\" >/dev/null 2>" + d + "/err")
-          .c_str());
+  std::string cmd = "ulimit -v 400000; ";
+  cmd.append(zdg).append(" cf \"$(cat ").append(d).append("/fraction)\" >/dev/null 2>");
+  cmd.append(d).append("/err");
+  const int cli = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(cli));
   EXPECT_EQ(WEXITSTATUS(cli), 2);
   EXPECT_EQ(zdg::test::read_file(dir / "err"), "zdg: out of memory\n");
-  const int serve = std::system(
-      ("ulimit -v 400000; " + zdg + " serve cf <" + d + "/request >" + d + "/out 2>" + d + "/err")
-          .c_str());
+  cmd = "ulimit -v 400000; ";
+  cmd.append(zdg).append(" serve cf <").append(d).append("/request >").append(d).append("/out 2>");
+  cmd.append(d).append("/err");
+  const int serve = std::system(cmd.c_str());
   ASSERT_TRUE(WIFEXITED(serve));
   EXPECT_EQ(WEXITSTATUS(serve), 0) << zdg::test::read_file(dir / "err");
   const std::string out = zdg::test::read_file(dir / "out");
