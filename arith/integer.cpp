@@ -1,10 +1,43 @@
 #include <zdg/arith/integer.hpp>
 
+#include <gmp.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
+#include <new>
 #include <optional>
 
 namespace zdg {
+
+namespace {
+
+// GMP's allocation functions: its default ones print "GNU MP: Cannot allocate memory" and
+// abort the process (the command line, `zdg serve`, the Python interpreter). These throw
+// std::bad_alloc instead, which every front end turns into its one-line "out of memory" error.
+// The exception unwinds through GMP's C frames (built with unwind tables on the supported
+// platforms: tests/arith/integer_test.cpp checks it under RLIMIT_AS). malloc/realloc/free as
+// GMP's defaults, so memory allocated before the installation is freed correctly.
+void* gmp_allocate(std::size_t n) {
+  void* p = std::malloc(n);
+  if (p == nullptr && n != 0) throw std::bad_alloc();
+  return p;
+}
+void* gmp_reallocate(void* p, std::size_t /*old*/, std::size_t n) {
+  void* q = std::realloc(p, n);
+  if (q == nullptr && n != 0) throw std::bad_alloc();
+  return q;
+}
+void gmp_free(void* p, std::size_t /*size*/) {
+  std::free(p);
+}
+
+// Installed when the library is loaded: this file defines BigInt's conversions (to_string,
+// parse_integer), which every program using BigInt links.
+[[maybe_unused]] const bool gmp_allocation_installed =
+    (mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free), true);
+
+} // namespace
 
 namespace detail {
 

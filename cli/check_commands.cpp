@@ -381,7 +381,16 @@ void add_check_commands(CLI::App& app, Context& ctx) {
                   "Longest wait for one answer of COMMAND (default 10s)");
   cmd->add_flag("--json", a->json, "Machine-readable output");
   cmd->add_flag("--quiet", a->quiet, "No progress on stderr");
-  cmd->callback([a, &ctx] { run_check_command(*a, ctx); });
+  cmd->callback([a, &ctx, cmd] {
+    // An empty value is refused, not taken for an absent option.
+    if (cmd->count("--against") > 0 && a->against.find_first_not_of(" \t") == std::string::npos) {
+      throw InvalidArgument("check: --against '" + a->against + "' is an empty command");
+    }
+    if (cmd->count("--replay") > 0 && a->replay.empty()) {
+      throw InvalidArgument("check: --replay '' is an empty replay token");
+    }
+    run_check_command(*a, ctx);
+  });
 }
 
 } // namespace zdg::cli

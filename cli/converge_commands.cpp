@@ -152,6 +152,7 @@ nlohmann::json fits_json(const ExperimentResult& r) {
                      {"h_max", f.hs.empty() ? 0.0 : f.hs.front()},
                      {"expected", f.expected ? nlohmann::json(*f.expected) : nlohmann::json()},
                      {"pass", f.pass ? nlohmann::json(*f.pass) : nlohmann::json()}};
+    if (!f.reason.empty()) j["reason"] = f.reason;
     if (f.expected) {
       j["theory"] = f.theory;
       j["hypotheses"] = f.hypotheses;
@@ -408,7 +409,8 @@ void run_converge(ConvergeOptions o, Context& ctx) {
       std::cout << std::left << std::setw(width) << f.shape << std::setw(ewidth) << f.estimator
                 << std::setw(6) << f.norm << std::setw(18) << slope.str() << std::setw(10)
                 << (f.expected ? expected.str() : "-")
-                << (f.pass ? (*f.pass ? "PASS" : "FAIL") : "-") << '\n';
+                << (f.pass ? (*f.pass ? "PASS" : "FAIL") : "-")
+                << (f.reason.empty() ? "" : " (" + f.reason + ")") << '\n';
     }
     if (!o.output.empty()) {
       std::cout << "results: " << (dir / "results.csv").string()

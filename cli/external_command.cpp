@@ -68,6 +68,9 @@ std::string shell_quote(const std::string& s) {
 
 ExternalCommand::ExternalCommand(std::string command, double request_timeout_s)
     : command_(std::move(command)), timeout_s_(request_timeout_s) {
+  if (command_.find_first_not_of(" \t") == std::string::npos) {
+    throw InvalidArgument("--against: the command is empty");
+  }
   int in[2], out[2];
   if (::pipe2(in, O_CLOEXEC) != 0) throw IoError(std::string("pipe: ") + std::strerror(errno));
   if (::pipe2(out, O_CLOEXEC) != 0) {
@@ -194,17 +197,24 @@ void ExternalCommand::receive(std::vector<std::string>& answers, std::size_t cou
                                  at);
   };
   while (answers.size() < want) {
-    for (auto nl = buffer_.find('\n'); nl != std::string::npos && answers.size() < want;
+    // scanned_: the bytes of buffer_ already known to hold no newline (a long line is scanned
+    // once, not once per read).
+    for (auto nl = buffer_.find('\n', scanned_); nl != std::string::npos && answers.size() < want;
          nl = buffer_.find('\n')) {
       answers.push_back(buffer_.substr(0, nl));
       buffer_.erase(0, nl + 1);
+      scanned_ = 0;
       deadline = Clock::now() + timeout;
     }
     if (answers.size() == want) break;
+    scanned_ = buffer_.size();
     if (buffer_.size() > (std::size_t{1} << 28)) {
       const std::size_t at = fail_at();
       throw check::ExternalFailure("malformed answer: a line longer than 256 MiB", at);
     }
+    // The timeout covers the whole answer: a line that keeps arriving (poll returns at once)
+    // but does not end in time is a hang too.
+    if (Clock::now() >= deadline) hang();
     // Write what the pipe takes and read what is there, never blocking on one while the
     // command waits on the other.
     pollfd fds[2] = {{from_child_, POLLIN, 0}, {to_child_, POLLOUT, 0}};

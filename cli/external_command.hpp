@@ -57,6 +57,7 @@ private:
   pid_t pid_ = -1;
   int to_child_ = -1, from_child_ = -1;
   std::string buffer_;                 // answer bytes read, not yet split into lines
+  std::size_t scanned_ = 0;            // the prefix of buffer_ known to hold no newline
   std::string pending_;                // request bytes not yet written
   std::vector<std::string> in_flight_; // requests sent and not yet answered
   [[noreturn]] void died(const std::string& when, std::size_t at);

@@ -40,7 +40,7 @@ namespace {
 struct HullOptions {
   std::string output;
   bool json = false, force = false, quiet = false;
-  std::uint64_t max_vertices = 100'000'000;
+  std::uint64_t max_vertices = kHullMaxVertices;
 };
 
 // Buffered output to stdout or to the staging file of -o: fast enough for millions of
@@ -236,37 +236,16 @@ private:
   }
 };
 
-std::string count_text(std::uint64_t n) {
-  if (n == UINT64_MAX) return "more than 4.6e18";
-  return std::to_string(n);
-}
-
-void check_vertex_bound(const std::string& cmd, std::uint64_t bound, std::uint64_t max_vertices,
-                        const std::string& expected) {
-  if (bound <= max_vertices) return;
-  throw InvalidArgument(cmd + ": the hull could have up to " + count_text(bound) + " vertices" +
-                        expected + ", more than --max-vertices " + std::to_string(max_vertices) +
-                        " (raise it to compute this hull)");
-}
-
 void run_disc(const std::vector<std::string>& args, const HullOptions& o) {
   auto cx = arg_rational("CX", args[0]), cy = arg_rational("CY", args[1]),
        r = arg_rational("R", args[2]);
-  if (r < Rational<BigInt>(0)) throw InvalidArgument("negative radius " + r.str());
-  const double rd = r.to_double();
-  std::string expected;
-  if (std::isfinite(rd) && rd >= 1) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, " (about %.3g expected: 3.45 R^(2/3))",
-                  3.45 * std::cbrt(rd * rd));
-    expected = buf;
-  }
-  check_vertex_bound("hull disc", disc_hull_max_vertices(r), o.max_vertices, expected);
+  // The vertex bound before the output is opened (the walk checks it again).
+  check_disc_hull_vertices(r, o.max_vertices);
   Writer out(o);
   StreamPrinter p(out, o.json, !o.quiet && isatty(2) != 0, "disc hull", cx.to_double(),
                   cy.to_double());
   p.begin();
-  auto h = disc_hull_stream(cx, cy, r, p);
+  auto h = disc_hull_stream(cx, cy, r, p, o.max_vertices);
   p.end(h);
   out.finish();
 }
@@ -275,12 +254,12 @@ void run_ellipse(const std::vector<std::string>& args, const HullOptions& o) {
   auto cx = arg_rational("CX", args[0]), cy = arg_rational("CY", args[1]),
        a = arg_rational("A", args[2]), b = arg_rational("B", args[3]);
   ellipse_body(cx, cy, a, b); // A, B > 0
-  check_vertex_bound("hull ellipse", ellipse_hull_max_vertices(a, b), o.max_vertices, "");
+  check_ellipse_hull_vertices(a, b, o.max_vertices);
   Writer out(o);
   StreamPrinter p(out, o.json, !o.quiet && isatty(2) != 0, "ellipse hull", cx.to_double(),
                   cy.to_double());
   p.begin();
-  auto h = ellipse_hull_stream(cx, cy, a, b, p);
+  auto h = ellipse_hull_stream(cx, cy, a, b, p, o.max_vertices);
   p.end(h);
   out.finish();
 }

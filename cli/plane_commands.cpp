@@ -118,7 +118,7 @@ void add_plane_commands(CLI::App& app, Context& /*ctx*/) {
                  "origin and print the normal found (H- or R-algorithm)");
     auto args = std::make_shared<std::vector<std::string>>();
     auto algorithm = std::make_shared<std::string>("r");
-    auto max_steps = std::make_shared<std::uint64_t>(100'000'000);
+    auto max_steps = std::make_shared<std::uint64_t>(kPlaneProbingMaxSteps);
     auto json = std::make_shared<bool>(false);
     cmd->add_option("A B C", *args,
                     "Primitive normal, three nonzero integers of any size and sign (use -- "

@@ -35,6 +35,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,18 @@ BigInt integer_field(const json& j, const std::string& name) {
   auto v = json_integer(j.at(name));
   if (!v) throw InvalidArgument("request: field '" + name + "' is not an integer");
   return *v;
+}
+
+// An optional bound (max_vertices, max_steps): a non-negative integer below 2^64, or the
+// library's default when the field is absent.
+std::uint64_t bound_field(const json& j, const std::string& name, std::uint64_t fallback) {
+  if (!j.contains(name)) return fallback;
+  const BigInt v = integer_field(j, name);
+  if (v < 0 || v > BigInt(UINT64_MAX)) {
+    throw InvalidArgument("request: field '" + name + "' = " + v.str().substr(0, 40) +
+                          " is not in 0..18446744073709551615");
+  }
+  return v.convert_to<std::uint64_t>();
 }
 
 std::string text_field(const json& j, const std::string& name) {
@@ -222,7 +235,7 @@ json serve_hull_disc(const json& j) {
   auto cy = parse_rational<BigInt>(text_field(j, "cy"));
   auto r = parse_rational<BigInt>(text_field(j, "r"));
   if (r <= Rational<BigInt>(0)) throw InvalidArgument("hull disc: r must be > 0");
-  auto h = disc_hull_exact(cx, cy, r);
+  auto h = disc_hull_exact(cx, cy, r, bound_field(j, "max_vertices", kHullMaxVertices));
   return polygon_json(h.value.vertices, h.served);
 }
 
@@ -340,7 +353,8 @@ json serve_plane_probe(const json& j) {
   const Point3<BigInt> n{integer_field(j, "a"), integer_field(j, "b"), integer_field(j, "c")};
   const std::string alg = j.contains("algorithm") ? text_field(j, "algorithm") : "r";
   if (alg != "h" && alg != "r") throw InvalidArgument("plane probe: algorithm is h or r");
-  auto r = probe_standard_plane_exact(n, alg == "h" ? ProbingAlgorithm::h : ProbingAlgorithm::r);
+  auto r = probe_standard_plane_exact(n, alg == "h" ? ProbingAlgorithm::h : ProbingAlgorithm::r,
+                                      bound_field(j, "max_steps", kPlaneProbingMaxSteps));
   const auto& p = r.value;
   auto point = [](const Point3<BigInt>& q) {
     return json::array({q.x.str(), q.y.str(), q.z.str()});
@@ -399,6 +413,9 @@ std::string serve_answer(const std::string& operation, const std::string& line) 
     answer = it->second(request);
   } catch (const Error& e) {
     answer = {{"error", e.what()}};
+  } catch (const std::bad_alloc&) {
+    // GMP's allocations included (arith/integer.cpp): the request is refused, the server goes on.
+    answer = {{"error", "out of memory"}};
   } catch (const json::exception& e) {
     answer = {{"error", std::string("request: ") + e.what()}};
   }

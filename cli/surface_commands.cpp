@@ -165,6 +165,11 @@ Radius parse_radius(const std::string& text) {
   return r;
 }
 
+// The --radius as given, or the default's text.
+std::string radius_text(const std::string& given) {
+  return given.empty() ? "5v (the default)" : given;
+}
+
 // The grid step of an isotropic image (the estimators need square pixels / cubic voxels).
 double isotropic_step(const std::vector<double>& spacing, const std::string& path) {
   const double h = spacing.at(0);
@@ -608,11 +613,12 @@ void run_surface(const SurfaceArgs& a) {
     est.R = radius.voxels ? radius.value * est.h : radius.value;
     const double rv = est.R / est.h;
     if (rv > double(extent))
-      throw InvalidArgument(a.in.path + ": --radius " + a.radius + " is " + fmt::format("{}", rv) +
-                            " voxels, larger than the volume (" + str(vol.array.shape[2]) + " x " +
-                            str(vol.array.shape[1]) + " x " + str(vol.array.shape[0]) + " voxels)");
+      throw InvalidArgument(a.in.path + ": --radius " + radius_text(a.radius) + " is " +
+                            fmt::format("{}", rv) + " voxels, larger than the volume (" +
+                            str(vol.array.shape[2]) + " x " + str(vol.array.shape[1]) + " x " +
+                            str(vol.array.shape[0]) + " voxels)");
     if (rv > 256)
-      throw InvalidArgument("--radius " + a.radius + " is " + fmt::format("{}", rv) +
+      throw InvalidArgument("--radius " + radius_text(a.radius) + " is " + fmt::format("{}", rv) +
                             " voxels; the integral invariants take at most 256");
   }
   // Grey values for marching cubes: the threshold's level (positions interpolated).
@@ -1016,9 +1022,9 @@ void run_contour(const ContourArgs& a) {
   const double R = radius.voxels ? radius.value * h : radius.value;
   const std::int64_t extent = std::max(vol.array.shape[0], vol.array.shape[1]);
   if ((req.ii_curvature || req.bc_tangent) && R / h > double(extent))
-    throw InvalidArgument(a.in.path + ": --radius " + a.radius + " is " + fmt::format("{}", R / h) +
-                          " pixels, larger than the image (" + str(vol.array.shape[1]) + " x " +
-                          str(vol.array.shape[0]) + " pixels)");
+    throw InvalidArgument(a.in.path + ": --radius " + radius_text(a.radius) + " is " +
+                          fmt::format("{}", R / h) + " pixels, larger than the image (" +
+                          str(vol.array.shape[1]) + " x " + str(vol.array.shape[0]) + " pixels)");
   Image<std::uint8_t> mask = std::move(obj.mask);
   std::vector<unsigned char>().swap(obj.volume.array.bytes); // frees (= {} keeps the capacity)
 

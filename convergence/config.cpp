@@ -108,7 +108,20 @@ private:
   // A scalar as text: strings as written, numbers in the shortest form that reads back.
   std::string scalar(const toml::node& node, const std::string& what) const {
     if (auto s = node.value_exact<std::string>()) return *s;
-    if (auto i = node.value_exact<std::int64_t>()) return std::to_string(*i);
+    if (const auto* i = node.as_integer()) {
+      // TOML's 0x.., 0o.., 0b.. integers: zdg's numbers are decimal everywhere.
+      // The base is a two-bit field of the flags (binary 1, octal 2, hexadecimal 3).
+      const toml::value_flags f = i->flags() & toml::value_flags::format_as_hexadecimal;
+      const char* base = f == toml::value_flags::format_as_hexadecimal ? "a hexadecimal"
+                         : f == toml::value_flags::format_as_octal     ? "an octal"
+                         : f == toml::value_flags::format_as_binary    ? "a binary"
+                                                                       : nullptr;
+      if (base != nullptr) {
+        fail(node, what + " is " + base + " integer: zdg reads decimal numbers only (write " +
+                       std::to_string(i->get()) + " if that value is meant)");
+      }
+      return std::to_string(i->get());
+    }
     if (auto d = node.value_exact<double>()) return real_text(*d);
     fail(node, what + " must be a string or a number");
   }

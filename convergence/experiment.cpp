@@ -341,11 +341,14 @@ std::vector<LevelErrors> aggregate_levels(std::vector<RunRecord> runs) {
     level.entry_index = runs[i].entry_index;
     level.h = runs[i].h;
     double l2 = 0, mean = 0;
+    level.elements = runs[i].errors.n;
     std::size_t j = i;
     for (; j < runs.size() && runs[j].shape_index == level.shape_index &&
            runs[j].entry_index == level.entry_index && runs[j].h == level.h;
          ++j) {
-      level.linf = std::max(level.linf, runs[j].errors.linf);
+      // The maximum, a NaN included (std::max would drop a NaN that comes second).
+      if (!(runs[j].errors.linf <= level.linf)) level.linf = runs[j].errors.linf;
+      level.elements = std::min(level.elements, runs[j].errors.n);
       l2 += runs[j].errors.l2;
       mean += runs[j].errors.mean;
     }
@@ -379,11 +382,13 @@ std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
     const EstimatorEntry& entry = plan.entries[levels[i].entry_index];
     const auto rate = entry.estimator->proven_rate(shape, entry.on_shape(levels[i].shape_index));
     std::vector<double> hs, linf, l2, mean;
+    std::vector<FitLevel> checked;
     for (std::size_t k = first; k < j; ++k) {
       hs.push_back(levels[k].h);
       linf.push_back(levels[k].linf);
       l2.push_back(levels[k].l2);
       mean.push_back(levels[k].mean);
+      checked.push_back({levels[k].h, levels[k].linf, levels[k].elements});
     }
     const std::pair<const char*, const std::vector<double>*> norms[] = {
         {"linf", &linf}, {"l2", &l2}, {"mean", &mean}};
@@ -400,15 +405,10 @@ std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
         f.hypotheses = rate->hypotheses;
         f.source = rate->source;
         if (std::string(name) == "linf") {
-          const bool all_zero =
-              std::all_of(values->begin(), values->end(), [](double v) { return v == 0; });
-          // Fewer than two levels with an error: no slope, hence no verdict (unless the
-          // estimator was exact everywhere).
-          if (all_zero || f.fit.n >= 2) {
-            const bool ok = all_zero || f.fit.slope >= rate->slope - tolerance;
-            f.pass = ok;
-            all_pass = all_pass && ok;
-          }
+          const RateVerdict v = check_rate(checked, rate->slope, tolerance);
+          f.pass = v.pass;
+          f.reason = v.reason;
+          all_pass = all_pass && v.pass;
         }
       }
       fits.push_back(std::move(f));

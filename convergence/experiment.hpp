@@ -112,8 +112,9 @@ struct RunRecord {
 struct LevelErrors {
   std::size_t shape_index = 0, entry_index = 0;
   double h = 0;
-  double linf = 0, l2 = 0, mean = 0; // max of l_inf, averages of l_2 and of the mean
+  double linf = 0, l2 = 0, mean = 0; // max of l_inf (NaN if one is), averages of l_2, mean
   int runs = 0;
+  std::int64_t elements = 0; // the fewest boundary elements measured by one of its runs
 };
 
 struct FitRecord {
@@ -122,7 +123,8 @@ struct FitRecord {
   std::vector<double> hs; // levels used
   std::optional<double> expected;
   std::string theory, hypotheses, source;
-  std::optional<bool> pass;
+  std::optional<bool> pass; // the l_inf verdict (check_rate), when theory proves a rate
+  std::string reason;       // why the verdict is not a pass (empty otherwise)
 };
 
 struct ExperimentResult {
@@ -147,8 +149,9 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
 std::vector<LevelErrors> aggregate_levels(std::vector<RunRecord> runs);
 
 /// The fits per (shape, entry) and norm (linf, l2, mean) on the `fit_levels` finest levels
-/// (0: all), with the proven rate and the l_inf verdict; all_pass is false when a verdict
-/// fails.
+/// (0: all), with the proven rate and the l_inf verdict (check_rate, convergence/fit.hpp: fewer
+/// than two levels that measured an element with a finite error is no pass); all_pass is false
+/// when a verdict fails.
 std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
                                       const std::vector<LevelErrors>& levels, int fit_levels,
                                       double tolerance, bool& all_pass);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace zdg {
 
@@ -46,6 +47,53 @@ LogLogFit fit_loglog(const std::vector<double>& h, const std::vector<double>& er
     f.stderr_slope = std::sqrt(sse / (f.n - 2) / sxx);
   }
   return f;
+}
+
+RateVerdict check_rate(const std::vector<FitLevel>& levels, double expected, double tolerance) {
+  RateVerdict v;
+  std::vector<double> hs, errors;
+  bool all_zero = true;
+  for (const auto& l : levels) {
+    std::ostringstream at;
+    at.precision(6);
+    at << "h = " << l.h;
+    if (!(std::isfinite(l.h) && l.h > 0)) {
+      v.reason = "no verdict: a level has " + at.str() + " (not a positive grid step)";
+    } else if (l.elements <= 0) {
+      v.reason = "no verdict: no element measured at " + at.str();
+    } else if (!(std::isfinite(l.error) && l.error >= 0)) {
+      v.reason = "the error at " + at.str() + " is not a finite number";
+    }
+    if (!v.reason.empty()) break;
+    hs.push_back(l.h);
+    errors.push_back(l.error);
+    all_zero = all_zero && l.error == 0;
+  }
+  v.fit = fit_loglog(hs, errors);
+  if (!v.reason.empty()) return v;
+  if (levels.size() < 2) {
+    v.reason = "no verdict: " + std::to_string(levels.size()) +
+               " level(s) measured, a slope needs at least 2";
+    return v;
+  }
+  if (all_zero) { // exact at every level: the error bound holds for every rate
+    v.pass = true;
+    return v;
+  }
+  if (v.fit.n < 2 || !std::isfinite(v.fit.slope)) {
+    v.reason = "no verdict: " + std::to_string(v.fit.n) +
+               " level(s) with a positive error, no slope (a fit needs at least 2 distinct grid "
+               "steps)";
+    return v;
+  }
+  v.pass = v.fit.slope >= expected - tolerance;
+  if (!v.pass) {
+    std::ostringstream r;
+    r.precision(4);
+    r << "slope " << v.fit.slope << " < expected " << expected << " - tolerance " << tolerance;
+    v.reason = r.str();
+  }
+  return v;
 }
 
 } // namespace zdg

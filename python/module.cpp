@@ -277,22 +277,13 @@ py::dict body_hull_dict(const Escalated<BodyHull>& r) {
   return d;
 }
 
-void check_bound(const char* what, std::uint64_t bound, std::uint64_t max_vertices) {
-  if (bound > max_vertices) {
-    throw InvalidArgument(std::string(what) + ": the hull could have up to " +
-                          std::to_string(bound) + " vertices, more than max_vertices " +
-                          std::to_string(max_vertices));
-  }
-}
-
 py::dict hull_disc_py(py::handle cx, py::handle cy, py::handle r, std::uint64_t max_vertices) {
   auto X = rational_of(cx, "hull_disc: cx"), Y = rational_of(cy, "hull_disc: cy"),
        R = rational_of(r, "hull_disc: r");
   if (R < Rational<BigInt>(0)) throw InvalidArgument("hull_disc: negative radius " + R.str());
-  check_bound("hull_disc", disc_hull_max_vertices(R), max_vertices);
   auto h = [&] {
     py::gil_scoped_release release;
-    return disc_hull_exact(X, Y, R);
+    return disc_hull_exact(X, Y, R, max_vertices);
   }();
   return body_hull_dict(h);
 }
@@ -302,10 +293,9 @@ py::dict hull_ellipse_py(py::handle cx, py::handle cy, py::handle a, py::handle 
   auto X = rational_of(cx, "hull_ellipse: cx"), Y = rational_of(cy, "hull_ellipse: cy"),
        A = rational_of(a, "hull_ellipse: a"), B = rational_of(b, "hull_ellipse: b");
   ellipse_body(X, Y, A, B); // a, b > 0
-  check_bound("hull_ellipse", ellipse_hull_max_vertices(A, B), max_vertices);
   auto h = [&] {
     py::gil_scoped_release release;
-    return ellipse_hull_exact(X, Y, A, B);
+    return ellipse_hull_exact(X, Y, A, B, max_vertices);
   }();
   return body_hull_dict(h);
 }
@@ -424,6 +414,7 @@ py::dict converge(const std::vector<std::string>& shapes,
     d["theory"] = f.theory;
     d["source"] = f.source;
     d["pass"] = f.pass ? py::object(py::bool_(*f.pass)) : py::object(py::none());
+    d["reason"] = f.reason;
     fits.append(d);
   }
   py::dict d;
@@ -498,13 +489,13 @@ PYBIND11_MODULE(_zdg, m) {
         "'facets' (vertex indices, counter-clockwise from outside), 'normals' (primitive, "
         "outward), 'volume6' (6 x volume), 'integer_type'}.");
   m.def("hull_disc", &hull_disc_py, py::arg("cx"), py::arg("cy"), py::arg("r"),
-        py::arg("max_vertices") = 100'000'000,
+        py::arg("max_vertices") = zdg::kHullMaxVertices,
         "Vertices of the convex hull of the lattice points of the closed disc of centre (cx, cy) "
         "and radius r (ints, fractions.Fraction or str rationals such as '1000.5'), counter-"
         "clockwise, exact (zdg hull disc). Refused when the proven vertex bound exceeds "
         "max_vertices. Returns {'vertices', 'integer_type'}.");
   m.def("hull_ellipse", &hull_ellipse_py, py::arg("cx"), py::arg("cy"), py::arg("a"), py::arg("b"),
-        py::arg("max_vertices") = 100'000'000,
+        py::arg("max_vertices") = zdg::kHullMaxVertices,
         "Vertices of the convex hull of the lattice points of ((x - cx)/a)^2 + ((y - cy)/b)^2 "
         "<= 1 (rationals as for hull_disc; a, b > 0), exact. Returns {'vertices', "
         "'integer_type'}.");
@@ -514,7 +505,7 @@ PYBIND11_MODULE(_zdg, m) {
         "Returns {'is_plane', 'normal', 'mu', 'omega', 'integer_type'} (normal, mu, omega "
         "when is_plane).");
   m.def("probe_plane", &probe_plane_py, py::arg("a"), py::arg("b"), py::arg("c"),
-        py::arg("algorithm") = "r", py::arg("max_steps") = 100'000'000,
+        py::arg("algorithm") = "r", py::arg("max_steps") = zdg::kPlaneProbingMaxSteps,
         "Plane probing (H or R algorithm, Lachaud-Provencal-Roussillon 2017) of the standard "
         "plane 0 <= a x + b y + c z < |a| + |b| + |c| from the origin: the normal found (the "
         "plane's own), steps, predicate calls, whether the final basis is reduced.");

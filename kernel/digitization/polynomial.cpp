@@ -197,6 +197,13 @@ private:
           fail_here("variable not allowed in " + std::to_string(nvars_) + "D:");
         }
         ++pos_;
+        // "x2" (x^2? x_2?) and the tail of "0x10": a digit right after a variable is refused.
+        if (pos_ < text_.size() &&
+            (std::isdigit(static_cast<unsigned char>(text_[pos_])) || text_[pos_] == '.')) {
+          --pos_;
+          fail_here("a digit right after the variable (write x*2 or x^2; numbers are decimal, "
+                    "no 0x, 0o, 0b)");
+        }
         return Polynomial::variable(v, nvars_);
       }
     }
@@ -238,6 +245,13 @@ private:
         fail_here("zero denominator after");
       }
       value = value / BigRational(den);
+    }
+    if (pos_ < text_.size() && std::isalpha(static_cast<unsigned char>(text_[pos_])) &&
+        std::find(kVariableNames.begin(), kVariableNames.end(), text_[pos_]) ==
+            kVariableNames.end()) {
+      // 1e5, 0b1, 0o7, 0X1F, 2a: not a decimal number, and not a product with a variable.
+      fail_here("a number followed by a letter (numbers are decimal: no exponent, no 0x, 0o, "
+                "0b):");
     }
     if (!std::isfinite(value.to_double())) {
       pos_ = start;

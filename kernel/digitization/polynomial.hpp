@@ -5,7 +5,10 @@
 // rational a/b, or decimal 1.25, all exact), a variable x, y or z, or a parenthesized
 // expression, optionally raised to a non-negative integer power `^k`. Multiplication is
 // explicit (`3*x^2`) or implicit between a number and a variable / parenthesis (`3x^2`,
-// `2(x+y)`). Unary minus is allowed. Errors name the offending position.
+// `2(x+y)`). Unary minus is allowed. Numbers are decimal: a number directly followed by a
+// letter other than x, y, z (`1e5`, `0b1`, `0o7`) or a variable directly followed by a digit
+// (`x2`, the tail of `0x10`) is refused, never read as a product. Errors name the offending
+// position.
 //
 // Limits (small text must not mean unbounded work): parentheses and unary signs nest at most
 // kPolynomialMaxNesting = 200 deep; every intermediate result of the expansion has total

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -525,8 +526,8 @@ std::vector<Point2<BigInt>> widen(const std::vector<Point2<I>>& v) {
 } // namespace
 
 Escalated<BodyHull> disc_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                                    const Rational<BigInt>& r) {
-  if (r < Rational<BigInt>(0)) throw InvalidArgument("negative radius " + r.str());
+                                    const Rational<BigInt>& r, std::uint64_t max_vertices) {
+  check_disc_hull_vertices(r, max_vertices);
   return escalate([&]<class I>(std::type_identity<I>) {
     return BodyHull{RegionKind::bounded,
                     widen(disc_hull<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(r)))};
@@ -534,8 +535,10 @@ Escalated<BodyHull> disc_hull_exact(const Rational<BigInt>& cx, const Rational<B
 }
 
 Escalated<BodyHull> ellipse_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                                       const Rational<BigInt>& a, const Rational<BigInt>& b) {
+                                       const Rational<BigInt>& a, const Rational<BigInt>& b,
+                                       std::uint64_t max_vertices) {
   ellipse_body(cx, cy, a, b); // validates a, b > 0 before any escalation
+  check_ellipse_hull_vertices(a, b, max_vertices);
   return escalate([&]<class I>(std::type_identity<I>) {
     return BodyHull{RegionKind::bounded, widen(ellipse_hull<I>(narrow<I>(cx), narrow<I>(cy),
                                                                narrow<I>(a), narrow<I>(b)))};
@@ -600,8 +603,9 @@ StreamedHull stream_quadratic(HullVertexSink& sink, MakeBody&& make_body) {
 } // namespace
 
 StreamedHull disc_hull_stream(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                              const Rational<BigInt>& r, HullVertexSink& sink) {
-  if (r < Rational<BigInt>(0)) throw InvalidArgument("negative radius " + r.str());
+                              const Rational<BigInt>& r, HullVertexSink& sink,
+                              std::uint64_t max_vertices) {
+  check_disc_hull_vertices(r, max_vertices);
   return stream_quadratic(sink, [&]<class I>(std::type_identity<I>) {
     return disc_body<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(r));
   });
@@ -609,8 +613,9 @@ StreamedHull disc_hull_stream(const Rational<BigInt>& cx, const Rational<BigInt>
 
 StreamedHull ellipse_hull_stream(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
                                  const Rational<BigInt>& a, const Rational<BigInt>& b,
-                                 HullVertexSink& sink) {
+                                 HullVertexSink& sink, std::uint64_t max_vertices) {
   ellipse_body(cx, cy, a, b); // validates a, b > 0 before any escalation
+  check_ellipse_hull_vertices(a, b, max_vertices);
   return stream_quadratic(sink, [&]<class I>(std::type_identity<I>) {
     return ellipse_body<I>(narrow<I>(cx), narrow<I>(cy), narrow<I>(a), narrow<I>(b));
   });
@@ -639,6 +644,42 @@ std::uint64_t ellipse_hull_max_vertices(const Rational<BigInt>& a, const Rationa
   const double A = upper_double(a), B = upper_double(b);
   return convex_lattice_polygon_max_vertices(std::numbers::pi * std::sqrt(2 * (A * A + B * B)) *
                                              (1 + 1e-12));
+}
+
+namespace {
+
+std::string count_text(std::uint64_t n) {
+  if (n == UINT64_MAX) return "more than 1.8e19";
+  return std::to_string(n);
+}
+
+void check_vertex_bound(const std::string& body, std::uint64_t bound, std::uint64_t max_vertices,
+                        const std::string& expected) {
+  if (bound <= max_vertices) return;
+  throw InvalidArgument(body + " hull: the hull could have up to " + count_text(bound) +
+                        " vertices" + expected + ", more than the vertex bound " +
+                        std::to_string(max_vertices) +
+                        " (max_vertices, --max-vertices: raise it to compute this hull)");
+}
+
+} // namespace
+
+void check_disc_hull_vertices(const Rational<BigInt>& r, std::uint64_t max_vertices) {
+  const std::uint64_t bound = disc_hull_max_vertices(r); // refuses r < 0
+  std::string expected;
+  const double rd = r.to_double();
+  if (std::isfinite(rd) && rd >= 1) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, " (about %.3g expected: 3.45 r^(2/3))",
+                  3.45 * std::cbrt(rd * rd));
+    expected = buf;
+  }
+  check_vertex_bound("disc", bound, max_vertices, expected);
+}
+
+void check_ellipse_hull_vertices(const Rational<BigInt>& a, const Rational<BigInt>& b,
+                                 std::uint64_t max_vertices) {
+  check_vertex_bound("ellipse", ellipse_hull_max_vertices(a, b), max_vertices, "");
 }
 
 #define ZDG_INSTANTIATE(I)                                                                         \

@@ -44,8 +44,10 @@
 // lattice polygon inside the body, so its perimeter is at most the body's (2 pi r for a disc,
 // pi sqrt(2 (a^2 + b^2)) for an ellipse) and convex_lattice_polygon_max_vertices
 // (kernel/hulls/lattice_polygon.hpp) bounds its vertex count: about 6.54 r^{2/3} for a disc,
-// against the observed 3.45 r^{2/3} (Balog-Barany 1991: Theta(r^{2/3})). Used to refuse a huge
-// request before any work.
+// against the observed 3.45 r^{2/3} (Balog-Barany 1991: Theta(r^{2/3})). The *_exact and
+// *_stream entry points refuse (InvalidArgument, before any work) a body whose bound exceeds
+// their max_vertices, kHullMaxVertices (10^8) by default: every front end (command line,
+// `zdg serve`, Python) shares that default.
 //
 // Width: the quadratic oracles square D x - Cx (D the common denominator of the data), so
 // Int64 needs about D r < 2^31 (a disc of integer radius 10^9 at an integer centre still
@@ -160,17 +162,23 @@ struct HalfPlaneHull {
 template <TowerInt I>
 HalfPlaneHull<I> halfplane_hull(std::span<const HalfPlane<I>> hs);
 
+/// The default vertex bound of the disc and ellipse entry points (see above).
+inline constexpr std::uint64_t kHullMaxVertices = 100'000'000;
+
 /// The region and the hull vertices, as BigInt (the result of the *_exact entry points).
 struct BodyHull {
   RegionKind region = RegionKind::bounded;
   std::vector<Point2<BigInt>> vertices;
 };
 /// Exact by escalation (Int64 -> Int128 -> BigInt): data as BigInt rationals, result vertices
-/// as BigInt, with the type that served.
+/// as BigInt, with the type that served. InvalidArgument before any work when the proven vertex
+/// bound exceeds max_vertices.
 Escalated<BodyHull> disc_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                                    const Rational<BigInt>& r);
+                                    const Rational<BigInt>& r,
+                                    std::uint64_t max_vertices = kHullMaxVertices);
 Escalated<BodyHull> ellipse_hull_exact(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                                       const Rational<BigInt>& a, const Rational<BigInt>& b);
+                                       const Rational<BigInt>& a, const Rational<BigInt>& b,
+                                       std::uint64_t max_vertices = kHullMaxVertices);
 Escalated<BodyHull> halfplane_hull_exact(std::span<const HalfPlane<BigInt>> hs);
 
 /// Receives the vertices of a hull one at a time, counterclockwise from the lowest-then-leftmost
@@ -191,17 +199,25 @@ struct StreamedHull {
 };
 
 /// The vertices of disc_hull_exact / ellipse_hull_exact, handed to the sink as they are found
-/// (same order, same validation).
+/// (same order, same validation, same vertex bound).
 StreamedHull disc_hull_stream(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
-                              const Rational<BigInt>& r, HullVertexSink& sink);
+                              const Rational<BigInt>& r, HullVertexSink& sink,
+                              std::uint64_t max_vertices = kHullMaxVertices);
 StreamedHull ellipse_hull_stream(const Rational<BigInt>& cx, const Rational<BigInt>& cy,
                                  const Rational<BigInt>& a, const Rational<BigInt>& b,
-                                 HullVertexSink& sink);
+                                 HullVertexSink& sink,
+                                 std::uint64_t max_vertices = kHullMaxVertices);
 
 /// Upper bounds on the number of vertices of the hull of the lattice points of a disc of
 /// radius r, of an ellipse of semi-axes a and b (UINT64_MAX when beyond; see above).
 std::uint64_t disc_hull_max_vertices(const Rational<BigInt>& r);
 std::uint64_t ellipse_hull_max_vertices(const Rational<BigInt>& a, const Rational<BigInt>& b);
+
+/// InvalidArgument (naming both numbers) when the bound exceeds max_vertices: the check of the
+/// entry points above, for a front end that must refuse before it opens its outputs.
+void check_disc_hull_vertices(const Rational<BigInt>& r, std::uint64_t max_vertices);
+void check_ellipse_hull_vertices(const Rational<BigInt>& a, const Rational<BigInt>& b,
+                                 std::uint64_t max_vertices);
 
 /// floor(sqrt(n)) for n >= 0.
 template <TowerInt I>

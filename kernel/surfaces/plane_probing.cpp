@@ -2,6 +2,7 @@
 #include <zdg/kernel/surfaces/plane_probing.hpp>
 
 #include <array>
+#include <string>
 
 namespace zdg {
 
@@ -41,7 +42,19 @@ PlaneProbingResult<I> probe_standard_plane(const Point3<I>& normal, ProbingAlgor
   };
   const std::array<Point3<I>, 3> unit = {Point3<I>{I(1), I(0), I(0)}, Point3<I>{I(0), I(1), I(0)},
                                          Point3<I>{I(0), I(0), I(1)}};
-  auto r = probe_plane<I>(in_plane, Point3<I>{I(0), I(0), I(0)}, unit, algorithm, max_steps);
+  // Each step lowers sum_k N . m_k from ||N||_1 and keeps it >= 3 (see the header).
+  const BigInt bound = int_cast<BigInt>(omega) - 3;
+  const std::string note =
+      " (the proven bound for this normal is ||N||_1 - 3 = " + bound.str().substr(0, 60) +
+      " steps)";
+  if (algorithm == ProbingAlgorithm::h && bound > BigInt(max_steps)) {
+    throw InvalidArgument(
+        "plane probing: the H-algorithm needs up to ||N||_1 - 3 = " + bound.str().substr(0, 60) +
+        " steps on this normal, more than max_steps " + std::to_string(max_steps) +
+        " (use the R-algorithm, or raise max_steps, --max-steps)");
+  }
+  auto r = probe_plane<I>(in_plane, Point3<I>{I(0), I(0), I(0)}, unit, algorithm, max_steps,
+                          bound > BigInt(max_steps) ? note : std::string());
   r.normal = reflect(r.normal, s);
   for (auto& m : r.frame) m = reflect(m, s);
   r.apex = reflect(r.apex, s);

@@ -75,6 +75,10 @@ namespace zdg {
 
 enum class ProbingAlgorithm { h, r };
 
+/// The default step budget of every front end (command line, `zdg serve`, Python): about a
+/// second of work at most on the widest normals measured (see above).
+inline constexpr std::uint64_t kPlaneProbingMaxSteps = 1'000'000;
+
 constexpr std::string_view to_string(ProbingAlgorithm a) {
   return a == ProbingAlgorithm::h ? "h" : "r";
 }
@@ -161,12 +165,13 @@ public:
          ProbingAlgorithm alg)
       : in_set_(in_set), alg_(alg), m_(frame), q_(origin + frame[0] + frame[1] + frame[2]) {}
 
-  PlaneProbingResult<I> run(std::uint64_t max_steps) {
+  // note: what the message adds about the steps the input needs.
+  PlaneProbingResult<I> run(std::uint64_t max_steps, const std::string& note = "") {
     PlaneProbingResult<I> res;
     while (step()) {
       if (++res.steps > max_steps) {
         throw InvalidArgument("plane probing: not ended after " + std::to_string(max_steps) +
-                              " steps (raise --max-steps)");
+                              " steps" + note + " (raise max_steps, --max-steps)");
       }
     }
     res.frame = m_;
@@ -307,7 +312,8 @@ private:
 template <TowerInt I, class InSet>
 PlaneProbingResult<I> probe_plane(InSet&& in_set, const Point3<I>& origin,
                                   const std::array<Point3<I>, 3>& frame, ProbingAlgorithm algorithm,
-                                  std::uint64_t max_steps = 100'000'000) {
+                                  std::uint64_t max_steps = kPlaneProbingMaxSteps,
+                                  const std::string& note = "") {
   const I d = detail::plane_probing::det3(frame[0], frame[1], frame[2]);
   if (d != I(1) && d != I(-1)) {
     throw InvalidArgument("plane probing: the initial frame has determinant " + to_string(d) +
@@ -325,18 +331,22 @@ PlaneProbingResult<I> probe_plane(InSet&& in_set, const Point3<I>& origin,
   }
   detail::plane_probing::Prober<I, std::remove_reference_t<InSet>> prober(in_set, origin, frame,
                                                                           algorithm);
-  return prober.run(max_steps);
+  return prober.run(max_steps, note);
 }
 
 /// Probes the standard plane {x : 0 <= N . x < ||N||_1} from the origin (computed on I).
+/// The run ends within ||N||_1 - 3 steps (the proven bound); when that bound exceeds
+/// max_steps, the H-algorithm, which takes a sizeable fraction of it (7% to 100% of ||N||_1 on
+/// the normals measured), is refused before any work, and the R-algorithm runs until it ends or
+/// max_steps steps are done (InvalidArgument naming the proven bound).
 template <TowerInt I>
 PlaneProbingResult<I> probe_standard_plane(const Point3<I>& normal, ProbingAlgorithm algorithm,
-                                           std::uint64_t max_steps = 100'000'000);
+                                           std::uint64_t max_steps = kPlaneProbingMaxSteps);
 
 /// The same for normals of any size, exact by escalation (results as BigInt).
 template <TowerInt I>
 Escalated<PlaneProbingResult<BigInt>>
 probe_standard_plane_exact(const Point3<I>& normal, ProbingAlgorithm algorithm,
-                           std::uint64_t max_steps = 100'000'000);
+                           std::uint64_t max_steps = kPlaneProbingMaxSteps);
 
 } // namespace zdg

@@ -5,10 +5,16 @@
 #include "tests/support/tower.hpp"
 
 #include <cstdint>
+#include <cstdio>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <string>
 #include <tuple>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace {
 
@@ -342,5 +348,49 @@ TEST(DecimalText, ErrorsNameAShortExcerptOfTheText) {
     EXPECT_NE(what.find("1001 characters"), std::string::npos) << what;
   }
 }
+
+} // namespace
+
+namespace {
+
+// Issue #41: a failed GMP allocation is std::bad_alloc (arith/integer.cpp installs GMP's
+// allocation functions), not GMP's abort. In a child process under RLIMIT_AS: squaring a
+// number until the address space is exhausted throws through GMP's C frames (mpz_mul and its
+// temporary allocations) and is caught here; the child exits 0, where GMP's default handler
+// would abort it (SIGABRT, "GNU MP: Cannot allocate memory").
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+TEST(BigIntMemory, DISABLED_FailedGmpAllocationIsBadAlloc) {} // the sanitizers reserve the space
+#else
+TEST(BigIntMemory, FailedGmpAllocationIsBadAlloc) {
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    long pages = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+      if (std::fscanf(f, "%ld", &pages) != 1) pages = 0;
+      std::fclose(f);
+    }
+    const rlim_t limit = static_cast<rlim_t>(pages) * static_cast<rlim_t>(::sysconf(_SC_PAGESIZE)) +
+                         (rlim_t{64} << 20);
+    const rlimit rl{limit, limit};
+    if (::setrlimit(RLIMIT_AS, &rl) != 0) ::_exit(5);
+    try {
+      zdg::BigInt x = (zdg::BigInt(1) << (1 << 22)) - 1;
+      for (int i = 0; i < 40; ++i) x = x * x; // 512 KiB doubling: past 64 MiB at i = 7
+      ::_exit(4);
+    } catch (const std::bad_alloc&) {
+      // GMP still works after the failure.
+      const zdg::BigInt y = zdg::BigInt(12345) * zdg::BigInt(67890);
+      ::_exit(y == zdg::BigInt(838102050) ? 0 : 6);
+    } catch (...) {
+      ::_exit(3);
+    }
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child was killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+#endif
 
 } // namespace

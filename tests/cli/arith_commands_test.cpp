@@ -3,6 +3,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <sys/wait.h>
+
 namespace {
 
 using zdg::test::run_zdg;
@@ -85,5 +93,43 @@ TEST(CliHelp, EverySubcommandHasHelp) {
     EXPECT_NE(r.out.find("--json"), std::string::npos) << sub;
   }
 }
+
+// Issue #41: GMP running out of memory is zdg's one-line error, not GMP's abort ("GNU MP: Cannot
+// allocate memory", SIGABRT): the convergents of a 200,000-bit fraction need gigabytes, under a
+// 400 MB address-space limit (ulimit -v). The same in zdg serve, which answers and goes on.
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+TEST(CliCf, OutOfMemoryIsOneLine) {
+  const auto dir = zdg::test::scratch_dir("oom");
+  std::string p = "1", q = "3";
+  std::uint64_t x = 41;
+  for (int i = 0; i < 60000; ++i) {
+    x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+    p += static_cast<char>('0' + (x >> 33) % 10);
+    if (i < 59990) q += static_cast<char>('0' + (x >> 43) % 10);
+  }
+  std::ofstream(dir / "fraction") << p << "/" << q;
+  std::ofstream(dir / "request") << "{\"fraction\":\"" << p << "/" << q
+                                 << "\"}\n{\"fraction\":\"415/93\"}\n";
+  const std::string zdg = "'" + std::string(zdg::test::cli_path()) + "'";
+  const std::string d = "'" + dir.string() + "'";
+  std::string cmd = "ulimit -v 400000; ";
+  cmd.append(zdg).append(" cf \"$(cat ").append(d).append("/fraction)\" >/dev/null 2>");
+  cmd.append(d).append("/err");
+  const int cli = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(cli));
+  EXPECT_EQ(WEXITSTATUS(cli), 2);
+  EXPECT_EQ(zdg::test::read_file(dir / "err"), "zdg: out of memory\n");
+  cmd = "ulimit -v 400000; ";
+  cmd.append(zdg).append(" serve cf <").append(d).append("/request >").append(d).append("/out 2>");
+  cmd.append(d).append("/err");
+  const int serve = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(serve));
+  EXPECT_EQ(WEXITSTATUS(serve), 0) << zdg::test::read_file(dir / "err");
+  const std::string out = zdg::test::read_file(dir / "out");
+  EXPECT_EQ(out.substr(0, out.find('\n')), "{\"error\":\"out of memory\"}");
+  EXPECT_NE(out.find("\"terms\":[\"4\",\"2\",\"6\",\"7\"]"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+#endif
 
 } // namespace

@@ -3,7 +3,7 @@
 // /usr/bin/python3) wrong only on negative inputs, only past 2^63, only for 4-connected paths,
 // only on one octant, are each caught within 2,000 runs and shrunk to a small input; zdg serve
 // passes 10,000 runs; a command that crashes, exits, hangs or answers garbage ends with exit 1
-// and one clear line.
+// and one clear line, within --request-timeout even when its answer line never ends.
 // What runs here: cli/serve_commands.cpp (the request loop) and serve_handlers.cpp
 // (the answers), cli/external_command.cpp and external_command.hpp (the pipes of
 // --against, two batches in flight), and the properties of convergence/check/
@@ -251,12 +251,64 @@ TEST(CheckCommand, CrashHangAndGarbageOfTheCommandAreReportedWithExitOne) {
   expect_command_failure("garbage", "malformed answer (not JSON): 'value = 42'");
 }
 
+// Issue #41: --request-timeout covers the whole answer line. A command that keeps writing one
+// line (data always waiting in the pipe, so the wait for data never times out) is a hang once the
+// timeout has passed since the request, not after the 256 MiB line limit (41 s before the fix).
+TEST(CheckCommand, AnAnswerLineThatNeverEndsIsAHangWithinTheTimeout) {
+  const auto t0 = std::chrono::steady_clock::now();
+  expect_command_failure("endless", "did not answer within 1.0");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 6);
+}
+
 TEST(CheckCommand, TimeBudgetEndsACampaignEarly) {
   const auto t0 = std::chrono::steady_clock::now();
   auto r = run_json("check floor_sum.oracle --type int64 --runs 100000000 --time-budget 500ms", 0);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10);
   EXPECT_TRUE(r["results"][0]["budget_exhausted"].get<bool>());
   EXPECT_LT(r["results"][0]["runs"].get<long long>(), 100000000);
+}
+
+// Issue #41: the library's bounds hold in zdg serve too: a disc whose proven vertex bound passes
+// max_vertices (default 10^8) and an H-probing past its step bound are refused at once, in the
+// answer, and the loop goes on; the bounds are request fields.
+TEST(ServeCommand, HullAndProbingBoundsAreTheLibrarys) {
+  const auto lines = [](const std::string& out) {
+    std::vector<json> v;
+    std::size_t start = 0;
+    for (std::size_t nl; (nl = out.find('\n', start)) != std::string::npos; start = nl + 1) {
+      v.push_back(json::parse(out.substr(start, nl - start)));
+    }
+    return v;
+  };
+  auto h = zdg::test::run_zdg("serve hull disc",
+                              "{\"cx\":\"0\",\"cy\":\"0\",\"r\":\"1000000000000000\"}\n"
+                              "{\"cx\":\"0\",\"cy\":\"0\",\"r\":\"18446744073709551616\"}\n"
+                              "{\"cx\":\"0\",\"cy\":\"0\",\"r\":\"1000\",\"max_vertices\":10}\n"
+                              "{\"cx\":\"0\",\"cy\":\"0\",\"r\":\"5\",\"max_vertices\":\"-1\"}\n"
+                              "{\"cx\":\"0\",\"cy\":\"0\",\"r\":\"5\",\"max_vertices\":24}\n");
+  EXPECT_EQ(h.status, 0) << h.err;
+  const auto hl = lines(h.out);
+  ASSERT_EQ(hl.size(), 5u) << h.out;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NE(hl[i].value("error", "").find("more than the vertex bound"), std::string::npos)
+        << hl[i].dump();
+  }
+  EXPECT_NE(hl[3].value("error", "").find("max_vertices"), std::string::npos) << hl[3].dump();
+  // r = 5: the proven bound is 24 vertices (refused under 24), the hull has 12.
+  EXPECT_EQ(hl[4]["vertices"].size(), 12u) << hl[4].dump();
+  auto p = zdg::test::run_zdg(
+      "serve plane probe",
+      "{\"a\":\"1000000007\",\"b\":\"1000000009\",\"c\":\"3\",\"algorithm\":\"h\"}\n"
+      "{\"a\":\"2\",\"b\":\"6\",\"c\":\"15\",\"algorithm\":\"h\",\"max_steps\":19}\n"
+      "{\"a\":\"2\",\"b\":\"6\",\"c\":\"15\",\"algorithm\":\"h\",\"max_steps\":\"20\"}\n");
+  EXPECT_EQ(p.status, 0) << p.err;
+  const auto pl = lines(p.out);
+  ASSERT_EQ(pl.size(), 3u) << p.out;
+  EXPECT_NE(pl[0].value("error", "").find("||N||_1 - 3 = 2000000016"), std::string::npos)
+      << pl[0].dump();
+  EXPECT_NE(pl[1].value("error", "").find("more than max_steps 19"), std::string::npos)
+      << pl[1].dump();
+  EXPECT_FALSE(pl[2].contains("error")) << pl[2].dump();
 }
 
 TEST(ServeCommand, AnswersEachLineAndReportsErrorsInTheAnswer) {

@@ -62,6 +62,35 @@ TEST(ConvergeCli, FailedTheoryCheckExitsWithStatusOne) {
   EXPECT_FALSE(j["fits"][0]["pass"].get<bool>());
 }
 
+// Issue #41: a check with nothing to check is not a pass. A box that misses the shape and an
+// empty shape measure no boundary element: exit 1, "pass": false with the reason, no NaN PASS.
+TEST(ConvergeCli, NoLevelToFitIsNotAPass) {
+  auto r = run_zdg("converge --shape ellipse:20,7 --estimator ii-curvature --h 1,0.5,0.25 "
+                   "--box 100:200 --json");
+  EXPECT_EQ(r.status, 1) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  bool checked = false;
+  for (const auto& f : j["fits"]) {
+    if (f["norm"] != "linf") continue;
+    checked = true;
+    EXPECT_EQ(f["pass"], false) << f.dump();
+    EXPECT_NE(f["reason"].get<std::string>().find("no verdict: no element measured"),
+              std::string::npos)
+        << f.dump();
+  }
+  EXPECT_TRUE(checked);
+  const auto dir = zdg::test::scratch_dir("nolevel");
+  auto t = run_zdg("converge --shape 'poly:x^2+y^2+1' --estimator ii-curvature --h 1,0.5,0.25 "
+                   "-o " +
+                   (dir / "out").string());
+  EXPECT_EQ(t.status, 1) << t.err;
+  EXPECT_EQ(t.out.find("PASS"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("FAIL (no verdict"), std::string::npos) << t.out;
+  const auto summary = nlohmann::json::parse(zdg::test::read_file(dir / "out" / "summary.json"));
+  EXPECT_EQ(summary["all_pass"], false);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ConvergeCli, TomlConfigWritesResultsAndRefusesToOverwrite) {
   auto dir = zdg::test::scratch_dir("converge");
   {

@@ -3,8 +3,12 @@
 // whose work is bounded by the size of the request; the rest is the line. Expected outcome:
 // one line of JSON, an object (the answer or {"error": ...}), never an exception. The
 // operations left out (christoffel, hull disc, plane probe) do work that grows with the
-// values asked for (a word of p + q letters, a disc of radius r, ||N||_1 probing steps):
-// their callers bound it (zdg check by the sizes it generates and --request-timeout).
+// values asked for (a word of p + q letters, a disc of radius r, up to ||N||_1 probing steps).
+// hull disc and plane probe are bounded for every front end by the library, before the work
+// (kHullMaxVertices vertices, kPlaneProbingMaxSteps steps), but a request may raise the bound
+// (its max_vertices, max_steps fields) and the default bounds allow seconds of work, more than a
+// fuzzer's time per input; christoffel is bounded by its callers (zdg check by the sizes it
+// generates and --request-timeout).
 #include <zdg/cli/serve.hpp>
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,7 @@
 """Exact arithmetic on Python ints: results checked against Python's own exact arithmetic
 (fractions, integer division), beyond 2^128 included."""
+import subprocess
+import sys
 from fractions import Fraction
 from math import gcd
 
@@ -162,3 +164,27 @@ def test_hull_vertices_are_a_convex_polygon_containing_the_points(points):
             assert all(orient(a, b, p) >= 0 for p in points)
     else:
         assert all(orient(v[0], v[-1], p) == 0 for p in points)
+
+
+def test_gmp_out_of_memory_is_memory_error():
+    """Issue #41: a failed GMP allocation raises MemoryError (zdg installs GMP's allocation
+    functions) instead of aborting the interpreter. In a child interpreter under RLIMIT_AS: the
+    convergents of a 200,000-bit fraction need gigabytes (their sizes add up quadratically)."""
+    code = (
+        "import os, random, resource, zdg\n"
+        "rng = random.Random(41)\n"
+        "p, q = rng.getrandbits(200000) | 1, rng.getrandbits(199990) | 1\n"
+        "pages = int(open('/proc/self/statm').read().split()[0])\n"
+        "limit = pages * os.sysconf('SC_PAGE_SIZE') + (256 << 20)\n"
+        "resource.setrlimit(resource.RLIMIT_AS, (limit, limit))\n"
+        "try:\n"
+        "    zdg.cf(p, q)\n"
+        "    print('no error')\n"
+        "except MemoryError:\n"
+        "    print('memory error')\n"
+        "assert zdg.cf(415, 93)['terms'] == [4, 2, 6, 7]\n"
+        "print('alive')\n")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, (r.returncode, r.stderr)
+    assert "GNU MP" not in r.stderr
+    assert r.stdout.split() == ["memory", "error", "alive"], r.stdout

@@ -89,6 +89,23 @@ def test_disc_and_ellipse_hulls_accept_ints_fractions_and_text():
         zdg.hull_disc(0, 0, -1)
     with pytest.raises(ValueError, match="max_vertices"):
         zdg.hull_disc(0, 0, 10**12, max_vertices=10)
+    # Issue #41: the library's default bound (10^8, as on the command line and in zdg serve).
+    with pytest.raises(ValueError, match="more than the vertex bound 100000000"):
+        zdg.hull_disc(0, 0, 10**15)
+    with pytest.raises(ValueError, match="more than the vertex bound 100000000"):
+        zdg.hull_ellipse(0, 0, 10**15, 10**15)
+
+
+def test_probe_plane_step_bounds():
+    """Issue #41: H past its proven step bound is refused before any work; R stops at the
+    default budget of 10^6 steps (about a second) naming the bound."""
+    with pytest.raises(ValueError, match=r"\|\|N\|\|_1 - 3 = 2000000016 steps"):
+        zdg.probe_plane(1000000007, 1000000009, 3, algorithm="h")
+    with pytest.raises(ValueError, match="not ended after 1000000 steps"):
+        zdg.probe_plane(1000000007, 1000000009, 3)
+    assert zdg.probe_plane(2, 6, 15, algorithm="h", max_steps=20)["normal"] == (2, 6, 15)
+    with pytest.raises(ValueError, match="more than max_steps 19"):
+        zdg.probe_plane(2, 6, 15, algorithm="h", max_steps=19)
 
 
 @given(st.integers(-30, 30), st.integers(-30, 30), st.integers(-30, 30))

@@ -357,6 +357,32 @@ TEST(ConvexBodyHullStream, VertexBoundAboveTheObservedCounts) {
   EXPECT_EQ(disc_hull_max_vertices(Rational<BigInt>(BigInt(1) << 200)), UINT64_MAX);
 }
 
+// Issue #41: the vertex bound is the library's, so every front end refuses a huge disc before
+// any work (a radius of 10^15 used to grow memory in `zdg serve hull disc`).
+TEST(ConvexBodyHullStream, VertexBoundIsCheckedBeforeAnyWork) {
+  const Rational<BigInt> zero(0), huge(BigInt("1000000000000000"));
+  EXPECT_GT(disc_hull_max_vertices(huge), kHullMaxVertices);
+  try {
+    disc_hull_exact(zero, zero, huge);
+    FAIL() << "no refusal";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("more than the vertex bound 100000000"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(disc_hull_exact(zero, zero, Rational<BigInt>(BigInt(1) << 64)), InvalidArgument);
+  EXPECT_THROW(ellipse_hull_exact(zero, zero, huge, huge), InvalidArgument);
+  RecordingSink s;
+  EXPECT_THROW(disc_hull_stream(zero, zero, huge, s), InvalidArgument);
+  EXPECT_THROW(ellipse_hull_stream(zero, zero, huge, Rational<BigInt>(1), s), InvalidArgument);
+  EXPECT_TRUE(s.v.empty());
+  // A lowered bound refuses a small disc; a raised one lets it through.
+  EXPECT_THROW(disc_hull_exact(zero, zero, Rational<BigInt>(1000), 10), InvalidArgument);
+  EXPECT_THROW(check_disc_hull_vertices(Rational<BigInt>(1000), 10), InvalidArgument);
+  EXPECT_EQ(disc_hull_exact(zero, zero, Rational<BigInt>(5), 1000).value.vertices.size(),
+            12u); // (+-5, 0), (0, +-5), (+-3, +-4), (+-4, +-3): all on the circle
+  EXPECT_THROW(disc_hull_exact(zero, zero, Rational<BigInt>(-1)), InvalidArgument);
+}
+
 // The registered property hull.disc.pick (zdg check): discs of radius <= 6 with rational centre
 // (denominators <= 12) anywhere up to 2^64, 2^128, 2^256, against the enumerated lattice points
 // and Pick's theorem.

@@ -25,6 +25,7 @@
 #include "tests/support/tower.hpp"
 
 #include <array>
+#include <chrono>
 #include <numeric>
 
 namespace {
@@ -145,6 +146,38 @@ TYPED_TEST(PlaneProbingTest, BadInputIsRefused) {
   EXPECT_THROW(probe_standard_plane<I>({I(2), I(4), I(6)}, ProbingAlgorithm::h), InvalidArgument);
   EXPECT_THROW(probe_standard_plane<I>({I(1), I(50), I(101)}, ProbingAlgorithm::h, 3),
                InvalidArgument);
+}
+
+// Issue #41: the step budget (default kPlaneProbingMaxSteps) is met within about a second,
+// and the H-algorithm past its proven bound ||N||_1 - 3 is refused before any work.
+TEST(PlaneProbing, StepBudgetAndProvenBound) {
+  const Point3<BigInt> n{BigInt(1000000007), BigInt(1000000009), BigInt(3)};
+  try {
+    probe_standard_plane_exact(n, ProbingAlgorithm::h);
+    FAIL() << "no refusal";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("||N||_1 - 3 = 2000000016 steps on this normal, more "
+                                         "than max_steps 1000000"),
+              std::string::npos)
+        << e.what();
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    probe_standard_plane_exact(n, ProbingAlgorithm::r);
+    FAIL() << "no refusal";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("not ended after 1000000 steps (the proven bound for "
+                                         "this normal is ||N||_1 - 3 = 2000000016 steps)"),
+              std::string::npos)
+        << e.what();
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_LT(seconds, 10.0); // about 1 s in a release build (80 s with the old default)
+  // Under the bound both run: the budget is never what ends a run that the bound allows.
+  const Point3<BigInt> small{BigInt(2), BigInt(6), BigInt(15)};
+  EXPECT_EQ(probe_standard_plane_exact(small, ProbingAlgorithm::h, 20).value.normal, small);
+  EXPECT_THROW(probe_standard_plane_exact(small, ProbingAlgorithm::h, 19), InvalidArgument);
 }
 
 template <TowerInt I>
