@@ -9,11 +9,9 @@
 // u v with u, v the lower words of the two Stern-Brocot parents of p/q (left then right;
 // the word of 1/0 is "1").
 //
-// Complexity: O(n) letters generated with one addition and one comparison each, no floating
-// point; single letters and prefix counts in O(1). Width: n + p must fit the type (escalate
-// otherwise). Materialized words are limited to christoffel_max_letters.
-// Source: Berstel, Lauve, Reutenauer, Saliola, Combinatorics on Words: Christoffel Words and
-// Repetitions in Words (CRM 2008), chapters 1-3; Borel and Laubie (1993).
+// Complexity: O(n) letters, one addition and one comparison each; single letters and prefix
+// counts in O(1). Width: n + p must fit the type (escalate otherwise); materialized words are
+// limited to christoffel_max_letters. Source: Berstel, Lauve, Reutenauer, Saliola, CRM 2008.
 #pragma once
 
 #include <zdg/arith/integer.hpp>

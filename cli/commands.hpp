@@ -1,7 +1,7 @@
 // The zdg command line: one program, subcommands registered by add_*_commands(). Only the
 // files of cli/ include CLI11 and nlohmann-json (precompiled once for them).
 //
-// Conventions every subcommand follows (DESIGN.md, "Command line"):
+// Conventions every subcommand follows (ARCHITECTURE.md, "Command line"):
 // - `--json` prints machine-readable output on stdout; integers that may exceed 64 bits are
 //   decimal strings;
 // - bad input throws zdg::Error (or a CLI11 parse error): main() prints one line

@@ -1,15 +1,17 @@
 // zdg topology components|betti|simple|thin|skeleton: digital topology of binary images read
-// from .npy (2D or 3D), .pgm (2D) or .vol (3D): connected components, Euler characteristic and
-// Betti numbers, simple points, homotopic thinning and skeletons (kernel/topology/adjacency.hpp,
-// connected_components.hpp, betti_numbers.hpp, simple_points.hpp, homotopic_thinning.hpp,
-// critical_kernel_thinning.hpp). Outputs go through OutputSet (all or nothing, existing files
-// refused without --force).
+// by the volume loader (cli/volume_input.hpp: every format, the selection options): connected
+// components, Euler characteristic and Betti numbers, simple points, homotopic thinning and
+// skeletons (kernel/topology/adjacency.hpp, connected_components.hpp, betti_numbers.hpp,
+// simple_points.hpp, homotopic_thinning.hpp, critical_kernel_thinning.hpp). Outputs go through
+// OutputSet (all or nothing, existing files refused without --force).
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
+#include <zdg/cli/volume_input.hpp>
 #include <zdg/kernel/io/npy_io.hpp>
 #include <zdg/kernel/io/output_files.hpp>
 #include <zdg/kernel/io/pgm_io.hpp>
 #include <zdg/kernel/io/vol_io.hpp>
+#include <zdg/kernel/io/volume_io.hpp>
 #include <zdg/kernel/topology/betti_numbers.hpp>
 #include <zdg/kernel/topology/connected_components.hpp>
 #include <zdg/kernel/topology/critical_kernel_thinning.hpp>
@@ -31,9 +33,8 @@ namespace zdg::cli {
 namespace {
 
 struct TopologyArgs {
-  std::string command, input, output, adjacency, method = "sequential", skeleton, priority = "dt",
-                                                 anchors;
-  std::optional<long long> threshold;
+  VolumeInputArgs in;
+  std::string command, output, adjacency, method = "sequential", skeleton, priority = "dt", anchors;
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
 };
@@ -44,47 +45,22 @@ std::string extension(const std::string& path) {
   return e;
 }
 
-// The values of an image file as int64 (.npy, .pgm, .vol).
-Image<std::int64_t> read_values(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw IoError(path + ": no such file");
-  const std::string e = extension(path);
-  if (e == ".npy") return npy_to_int64(read_npy(path));
-  if (e == ".pgm") {
-    auto p = read_pgm(path);
-    return Image<std::int64_t>(p.domain(),
-                               std::vector<std::int64_t>(p.values().begin(), p.values().end()));
+// A .pgm output holds a 2D image and a .vol output a 3D one: checked before any work.
+void check_output_dim(const TopologyArgs& a, int dim) {
+  if (a.output.empty()) return;
+  const std::string e = extension(a.output);
+  if ((e == ".pgm" && dim != 2) || (e == ".vol" && dim != 3)) {
+    throw InvalidArgument(a.output + ": a " + e + " image is " + (e == ".pgm" ? "2D" : "3D") +
+                          " and " + a.in.path + " is " + std::to_string(dim) + "D; use .npy or " +
+                          (dim == 2 ? ".pgm" : ".vol"));
   }
-  if (e == ".vol") {
-    auto v = read_vol(path);
-    return Image<std::int64_t>(v.domain(),
-                               std::vector<std::int64_t>(v.values().begin(), v.values().end()));
-  }
-  throw IoError(path + ": unknown image format '" + e + "' (.npy, .pgm or .vol)");
 }
 
-// The object: nonzero points, or points >= the threshold. An empty object is an error.
+// The object of the input (2D or 3D, any format; value != 0 unless a selection option is
+// given). An empty object is an error naming the file and the selection.
 Image<std::uint8_t> read_object(const TopologyArgs& a) {
-  Image<std::uint8_t> mask;
-  if (extension(a.input) == ".npy" && !a.threshold) {
-    if (!std::filesystem::exists(a.input)) throw IoError(a.input + ": no such file");
-    mask = npy_to_mask(read_npy(a.input));
-  } else {
-    const auto v = read_values(a.input);
-    mask = Image<std::uint8_t>(v.domain(), std::uint8_t{0});
-    for (std::int64_t i = 0; i < v.size(); ++i) {
-      mask[i] = (a.threshold ? v[i] >= *a.threshold : v[i] != 0) ? 1 : 0;
-    }
-  }
-  if (mask.dim() != 2 && mask.dim() != 3) {
-    throw InvalidArgument(a.input + ": a " + std::to_string(mask.dim()) +
-                          "-D image (topology works on 2D and 3D images)");
-  }
-  bool any = false;
-  for (auto x : mask.values()) any = any || x != 0;
-  if (!any) {
-    throw InvalidArgument(a.input + ": empty selection (no point is " +
-                          (a.threshold ? ">= " + std::to_string(*a.threshold) : "nonzero") + ")");
-  }
+  Image<std::uint8_t> mask = load_object(a.in, 0, a.threads).mask;
+  check_output_dim(a, mask.dim());
   return mask;
 }
 
@@ -94,10 +70,10 @@ void write_image(const std::string& path, const std::string& named, const Domain
                  const std::vector<std::uint64_t>& v, DType dtype) {
   const std::string e = extension(named);
   if (e == ".pgm") {
-    if (dom.dim() != 2) throw IoError(path + ": a .pgm image is 2D; use .npy or .vol");
+    if (dom.dim() != 2) throw IoError(named + ": a .pgm image is 2D; use .npy or .vol");
     write_pgm(path, Image<std::uint64_t>(dom, v));
   } else if (e == ".vol") {
-    if (dom.dim() != 3) throw IoError(path + ": a .vol image is 3D; use .npy or .pgm");
+    if (dom.dim() != 3) throw IoError(named + ": a .vol image is 3D; use .npy or .pgm");
     write_vol(path, Image<std::uint64_t>(dom, v));
   } else if (e == ".npy") {
     if (dtype == DType::U32) {
@@ -108,7 +84,7 @@ void write_image(const std::string& path, const std::string& named, const Domain
                                              std::vector<std::uint8_t>(v.begin(), v.end())));
     }
   } else {
-    throw IoError(path + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
+    throw IoError(named + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
   }
 }
 
@@ -123,7 +99,8 @@ std::unique_ptr<OutputSet> plan_output(const TopologyArgs& a, bool required, std
     throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
   }
   std::error_code ec;
-  if (std::filesystem::exists(a.output, ec) && std::filesystem::equivalent(a.input, a.output, ec)) {
+  if (std::filesystem::exists(a.output, ec) &&
+      std::filesystem::equivalent(a.in.path, a.output, ec)) {
     throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
   }
   auto out = std::make_unique<OutputSet>(a.force ? Existing::replace : Existing::refuse);
@@ -146,7 +123,7 @@ void report(const TopologyArgs& a, const AdjacencyPair& pair, const Image<std::u
     for (int k = 0; k < pair.dim; ++k)
       betti.push_back(std::to_string(b.b[static_cast<std::size_t>(k)]));
     nlohmann::json j = {{"command", a.command},
-                        {"input", a.input},
+                        {"input", a.in.path},
                         {"adjacency", pair.name()},
                         {"voxels", std::to_string(voxels)},
                         {"components", std::to_string(b.b[0])},
@@ -249,20 +226,20 @@ void run_thin(const TopologyArgs& a, SkeletonKind default_kind) {
   Image<std::int64_t> priority;
   if (a.priority != "dt") {
     if (critical) throw InvalidArgument("--priority is for --method sequential only");
-    priority = read_values(a.priority);
+    priority = read_integer_image(a.priority);
     if (!(priority.domain().extents() == mask.domain().extents())) {
       throw InvalidArgument("--priority " + a.priority + ": an image of another size than " +
-                            a.input);
+                            a.in.path);
     }
     priority = Image<std::int64_t>(mask.domain(), std::move(priority.values()));
     opt.priority = &priority;
   }
   Image<std::uint8_t> anchors;
   if (!a.anchors.empty()) {
-    const auto v = read_values(a.anchors);
+    const auto v = read_integer_image(a.anchors);
     if (!(v.domain().extents() == mask.domain().extents())) {
       throw InvalidArgument("--anchors " + a.anchors + ": an image of another size than " +
-                            a.input);
+                            a.in.path);
     }
     anchors = Image<std::uint8_t>(mask.domain(), std::uint8_t{0});
     for (std::int64_t i = 0; i < v.size(); ++i) anchors[i] = v[i] != 0;
@@ -315,10 +292,8 @@ void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
     auto args = std::make_shared<TopologyArgs>();
     args->command = s.name;
     auto* sub = top->add_subcommand(s.name, s.help);
-    sub->add_option("INPUT", args->input, "input image (.npy 2D/3D, .pgm, .vol)")->required();
+    add_volume_input_options(*sub, args->in, {.selection = true, .spacing = false});
     sub->add_option("-o,--output", args->output, "output image (.npy, .vol, .pgm)");
-    sub->add_option("--threshold", args->threshold,
-                    "object = values >= T (default: nonzero values)");
     sub->add_option("--adjacency", args->adjacency,
                     "pair K,KBAR: 26,6 (default 3D), 6,26, 18,6, 6,18; 8,4 (default 2D), 4,8");
     sub->add_option("--threads", args->threads, "worker threads (0 = all cores)")

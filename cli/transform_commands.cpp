@@ -1,15 +1,17 @@
-// zdg transform dt|voronoi|power|rdt|rma: the separable exact l_p transforms on images read
-// from .npy (any dimension), .pgm (2D) or .vol (3D); the result is written through an
-// OutputSet (checked before any work, staged, renamed at the end), never over the input and
-// never over an existing file unless --force.
+// zdg transform dt|voronoi|power|rdt|rma: the separable exact l_p transforms on images read by
+// the volume loader (cli/volume_input.hpp: every format and selection option; an .npy of any
+// dimension); the result is written through an OutputSet (checked before any work, staged,
+// renamed at the end), never over the input and never over an existing file unless --force.
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/cli/mpi_session.hpp>
+#include <zdg/cli/volume_input.hpp>
 #include <zdg/kernel/io/mapped_file.hpp>
 #include <zdg/kernel/io/npy_io.hpp>
 #include <zdg/kernel/io/output_files.hpp>
 #include <zdg/kernel/io/pgm_io.hpp>
 #include <zdg/kernel/io/vol_io.hpp>
+#include <zdg/kernel/io/volume_io.hpp>
 #include <zdg/kernel/parallel/populate_pages.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/distributed_transform.hpp>
@@ -42,7 +44,8 @@ namespace zdg::cli {
 namespace {
 
 struct TransformArgs {
-  std::string input, output, metric = "l2", torus, lower, memory;
+  VolumeInputArgs in;
+  std::string output, metric = "l2", torus, lower, memory;
   unsigned threads = 0;
   bool json = false, force = false, out_of_core = false, quiet = false, mpi = false;
   // The file the result is written to before it is moved onto `output` (set by check_paths).
@@ -73,50 +76,46 @@ std::vector<std::int64_t> parse_int_list(const std::string& text, const std::str
   return out;
 }
 
-// The input as int64 values, whatever its format.
-Image<std::int64_t> read_values(const TransformArgs& a) {
-  std::string e = extension(a.input);
-  if (!std::filesystem::exists(a.input)) throw IoError(a.input + ": no such file");
-  Image<std::int64_t> img;
-  if (e == ".npy") {
-    img = npy_to_int64(read_npy(a.input));
-  } else if (e == ".pgm") {
-    auto p = read_pgm(a.input);
-    img = Image<std::int64_t>(p.domain(),
-                              std::vector<std::int64_t>(p.values().begin(), p.values().end()));
-  } else if (e == ".vol") {
-    auto v = read_vol(a.input);
-    img = Image<std::int64_t>(v.domain(),
-                              std::vector<std::int64_t>(v.values().begin(), v.values().end()));
-  } else {
-    throw IoError(a.input + ": unknown image format '" + e + "' (.npy, .pgm or .vol)");
+std::vector<std::int64_t> lower_of(const TransformArgs& a, int dim) {
+  auto low = parse_int_list(a.lower, "--lower");
+  if (static_cast<int>(low.size()) != dim) {
+    throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
+                          std::to_string(dim) + "-D image");
   }
+  return low;
+}
+
+// The input's values as exact integers (power, rdt), in any format (read_integer_image).
+Image<std::int64_t> read_values(const TransformArgs& a) {
+  Image<std::int64_t> img = read_integer_image(a.in.path, raw_layout(a.in));
   if (!a.lower.empty()) {
-    auto low = parse_int_list(a.lower, "--lower");
-    if (static_cast<int>(low.size()) != img.dim()) {
-      throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
-                            std::to_string(img.dim()) + "-D image");
-    }
+    auto low = lower_of(a, img.dim());
     img = Image<std::int64_t>(Domain(img.domain().extents(), low), std::move(img.values()));
   }
   return img;
 }
 
+// The input's object (dt, voronoi, rma): value != 0 by default, else the selection options.
+// An .npy of any dimension is read directly; every other input through the volume loader.
 Image<std::uint8_t> read_mask(const TransformArgs& a) {
-  if (extension(a.input) == ".npy") {
-    auto arr = read_npy(a.input);
-    std::vector<std::int64_t> low;
-    if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
-    if (!low.empty() && low.size() != arr.shape.size()) {
-      throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
-                            std::to_string(arr.shape.size()) + "-D image");
-    }
-    return npy_to_mask(arr, low);
+  Image<std::uint8_t> m;
+  if (!has_selection(a.in) && !raw_layout(a.in).given() && extension(a.in.path) == ".npy") {
+    if (!std::filesystem::exists(a.in.path)) throw IoError(a.in.path + ": no such file");
+    m = npy_to_mask(read_npy(a.in.path));
+  } else {
+    const ObjectSelection selection = object_selection(a.in); // option errors before reading
+    m = select_object(load_volume(a.in, 0).volume, selection, a.threads).mask;
   }
-  auto v = read_values(a);
-  Image<std::uint8_t> m(v.domain());
-  for (std::int64_t i = 0; i < v.size(); ++i) m[i] = v[i] != 0 ? 1 : 0;
+  if (!a.lower.empty()) {
+    auto low = lower_of(a, m.dim());
+    m = Image<std::uint8_t>(Domain(m.domain().extents(), low), std::move(m.values()));
+  }
   return m;
+}
+
+// The lean, out-of-core and MPI paths map the .npy file itself: C order, no selection.
+bool mapped_input(const TransformArgs& a) {
+  return !has_selection(a.in) && !raw_layout(a.in).given() && extension(a.in.path) == ".npy";
 }
 
 TransformOptions make_options(const TransformArgs& a, int dim) {
@@ -149,7 +148,7 @@ void check_paths(TransformArgs& a) {
   std::error_code ec;
   if (a.output.empty()) throw InvalidArgument("no output file (-o OUT)");
   parse_metric(a.metric); // a metric out of the supported range fails before the input is read
-  if (fs::exists(a.output, ec) && fs::equivalent(a.input, a.output, ec)) {
+  if (fs::exists(a.output, ec) && fs::equivalent(a.in.path, a.output, ec)) {
     throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
   }
   const std::string e = extension(a.output);
@@ -210,10 +209,6 @@ NpyArray sites_array(const Domain& dom, const std::vector<std::int64_t>& site) {
   return make_npy<std::int64_t>(shape, coords);
 }
 
-unsigned threads_used(unsigned requested) {
-  return requested == 0 ? std::max(1u, std::thread::hardware_concurrency()) : requested;
-}
-
 void report(const TransformArgs& a, const std::string& cmd, const Domain& dom,
             const TransformOptions& opt, const std::string& dtype, const std::string& max_value,
             double seconds, nlohmann::json extra = nlohmann::json::object()) {
@@ -223,7 +218,7 @@ void report(const TransformArgs& a, const std::string& cmd, const Domain& dom,
       if (opt.periodic(k)) torus.push_back(k);
     }
     nlohmann::json j = {{"command", cmd},
-                        {"input", a.input},
+                        {"input", a.in.path},
                         {"output", a.output},
                         {"shape", shape_of(dom)},
                         {"lower", dom.lowers()},
@@ -232,7 +227,7 @@ void report(const TransformArgs& a, const std::string& cmd, const Domain& dom,
                         {"dtype", dtype},
                         {"max_value", max_value},
                         {"seconds", seconds},
-                        {"threads", threads_used(opt.threads)}};
+                        {"threads", detail::resolve_threads(opt.threads, dom.size())}};
     for (auto& [k, v] : extra.items()) j[k] = v;
     print_json(j);
     return;
@@ -342,16 +337,12 @@ std::function<void(int, int)> pass_printer(const TransformArgs& a) {
 // The domain of an .npy input read in place (its shape, --lower): errors for a 0-D or empty
 // array and a --lower of the wrong length.
 Domain npy_domain(const TransformArgs& a, const NpyLayout& lay) {
-  if (lay.shape.empty()) throw IoError("a 0-dimensional array is not an image");
+  if (lay.shape.empty()) throw IoError(a.in.path + ": a 0-dimensional array is not an image");
   for (auto e : lay.shape) {
-    if (e == 0) throw IoError("empty array (an extent is 0)");
+    if (e == 0) throw IoError(a.in.path + ": empty array (an extent is 0)");
   }
   std::vector<std::int64_t> low;
-  if (!a.lower.empty()) low = parse_int_list(a.lower, "--lower");
-  if (!low.empty() && low.size() != lay.shape.size()) {
-    throw InvalidArgument("--lower has " + std::to_string(low.size()) + " entries for a " +
-                          std::to_string(lay.shape.size()) + "-D image");
-  }
+  if (!a.lower.empty()) low = lower_of(a, static_cast<int>(lay.shape.size()));
   return Domain(lay.shape, low);
 }
 
@@ -366,7 +357,7 @@ template <class T>
 void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
                 const TransformOptions& opt, DType dtype) {
   const auto t0 = std::chrono::steady_clock::now();
-  MappedInput in(a.input);
+  MappedInput in(a.in.path);
   const std::uint8_t* mask = in.data() + lay.data_offset;
   const int item = static_cast<int>(dtype_size(lay.dtype));
   // Out of core when asked, or when the in-memory transform would pass the memory budget.
@@ -400,12 +391,12 @@ void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
   // writes every value), then one sequential write.
   std::unique_ptr<T[]> values(new T[n]);
   // mapped (in huge pages where offered) by all the workers before the passes write it
-  populate_pages(values.get(), n * sizeof(T), threads_used(opt.threads));
+  populate_pages(values.get(), n * sizeof(T), worker_count(opt.threads, dom.size()));
   distance_transform_into<T>(dom, mask, item, opt, values.get(), pass_printer(a));
   const double secs = since(t0);
   // The largest value and the write, in pieces by all the workers (write_values_max).
   const T mx =
-      write_values_max<T>(out, header.size(), values.get(), dom.size(), threads_used(opt.threads));
+      write_values_max<T>(out, header.size(), values.get(), dom.size(), worker_count(opt.threads, dom.size()));
   values.reset();
   out.finish();
   commit(a);
@@ -413,18 +404,31 @@ void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
 }
 
 bool lean_dt(TransformArgs& a) {
-  const bool npy = extension(a.input) == ".npy" && extension(a.output) == ".npy";
+  const bool npy = mapped_input(a) && extension(a.output) == ".npy";
   if (a.out_of_core && !npy) {
-    throw InvalidArgument("--out-of-core reads and writes .npy files (got " + a.input + " and " +
+    if (extension(a.in.path) == ".npy" && extension(a.output) == ".npy") {
+      throw InvalidArgument("--out-of-core maps the object value != 0 of an .npy file (no "
+                            "--threshold, --range, --label, --invert or raw options)");
+    }
+    throw InvalidArgument("--out-of-core reads and writes .npy files (got " + a.in.path + " and " +
                           a.output + ")");
   }
   if (!a.memory.empty()) parse_memory(a.memory); // a bad value fails before the input is read
   if (!npy) return false;
-  const NpyLayout lay = read_npy_layout(a.input);
+  const NpyLayout lay = read_npy_layout(a.in.path);
+  if (lay.fortran_order) {
+    // The mapped passes read the file in C order: a Fortran-order file is read and reordered.
+    if (a.out_of_core) {
+      throw InvalidArgument("--out-of-core: " + a.in.path +
+                            " is a Fortran-order array; the out-of-core transform maps C-order "
+                            "arrays (save it with np.ascontiguousarray)");
+    }
+    return false;
+  }
   if (dtype_is_float(lay.dtype)) {
     // -0.0 is background: not a bytewise test, so floats take the general path.
     if (a.out_of_core) {
-      throw InvalidArgument("--out-of-core: " + a.input + " holds " + dtype_name(lay.dtype) +
+      throw InvalidArgument("--out-of-core: " + a.in.path + " holds " + dtype_name(lay.dtype) +
                             " values; the out-of-core transform reads integer or bool masks");
     }
     return false;
@@ -647,14 +651,23 @@ void run_mpi_rank(TransformArgs& a, Context& ctx, const std::string& cmd, MpiSes
       throw InvalidArgument("--mpi with --out-of-core or --memory: the ranks hold the volume "
                             "between them in memory (give one or the other)");
     }
-    if (extension(a.input) != ".npy" || extension(a.output) != ".npy") {
-      throw InvalidArgument("--mpi reads and writes .npy files (got " + a.input + " and " +
+    if (extension(a.in.path) != ".npy" || extension(a.output) != ".npy") {
+      throw InvalidArgument("--mpi reads and writes .npy files (got " + a.in.path + " and " +
                             a.output + ")");
     }
-    if (!std::filesystem::exists(a.input)) throw IoError(a.input + ": no such file");
-    lay = read_npy_layout(a.input);
+    if (!mapped_input(a)) {
+      throw InvalidArgument("--mpi reads the object value != 0 of an .npy file (no --threshold, "
+                            "--range, --label, --invert or raw options)");
+    }
+    if (!std::filesystem::exists(a.in.path)) throw IoError(a.in.path + ": no such file");
+    lay = read_npy_layout(a.in.path);
+    if (lay.fortran_order) {
+      throw InvalidArgument("--mpi: " + a.in.path +
+                            " is a Fortran-order array; the ranks read C-order slices (save it "
+                            "with np.ascontiguousarray)");
+    }
     if (dtype_is_float(lay.dtype)) {
-      throw InvalidArgument("--mpi: " + a.input + " holds " + dtype_name(lay.dtype) +
+      throw InvalidArgument("--mpi: " + a.in.path + " holds " + dtype_name(lay.dtype) +
                             " values; the distributed transform reads integer or bool masks");
     }
     dom = npy_domain(a, lay);
@@ -697,7 +710,7 @@ void run_mpi_rank(TransformArgs& a, Context& ctx, const std::string& cmd, MpiSes
     const auto item = dtype_size(lay.dtype);
     const auto uslice = static_cast<std::uint64_t>(dom.stride(0));
     slab.resize(static_cast<std::size_t>(part.slices.size()) * uslice * item);
-    mpi.read(a.input,
+    mpi.read(a.in.path,
              lay.data_offset + static_cast<std::uint64_t>(part.slices.begin) * uslice * item,
              slab.data(), slab.size());
     for (std::size_t i = 0; i < slab.size() && !background; i += item) {
@@ -752,8 +765,9 @@ void run_mpi(TransformArgs& a, Context& ctx, const std::string& cmd) {
 } // namespace
 
 void add_transform_commands(CLI::App& app, Context& ctx) {
-  auto* tr = app.add_subcommand("transform",
-                                "separable exact l_p transforms of n-D images (.npy, .pgm, .vol)");
+  auto* tr = app.add_subcommand(
+      "transform",
+      "separable exact l_p transforms of images (n-D .npy; 2D/3D .vol, .nii, .pgm, raw)");
   tr->require_subcommand(1);
   struct Spec {
     const char* name;
@@ -778,7 +792,9 @@ void add_transform_commands(CLI::App& app, Context& ctx) {
   for (const auto& s : specs) {
     auto args = std::make_shared<TransformArgs>();
     auto* sub = tr->add_subcommand(s.name, s.help);
-    sub->add_option("IN", args->input, "input image (.npy, .pgm, .vol)")->required();
+    // The values commands read values; the others the object of the selection options.
+    const bool values = std::string(s.name) == "power" || std::string(s.name) == "rdt";
+    add_volume_input_options(*sub, args->in, {.selection = !values, .spacing = false});
     sub->add_option("-o,--output", args->output, "output file (written atomically)")->required();
     sub->add_option("--metric", args->metric,
                     "l1, l2, linf or lP (1 <= P <= 1000 and L^P < 2^4096, L the longest line)")

@@ -56,25 +56,30 @@ void drop_leading_axis(ScalarVolume& v) {
 
 } // namespace
 
-void add_volume_input_options(CLI::App& cmd, VolumeInputArgs& args) {
+void add_volume_input_options(CLI::App& cmd, VolumeInputArgs& args, VolumeOptionSet which) {
   cmd.add_option("INPUT", args.path,
-                 "input image: .vol (Version 2 or 3), .nii, .nii.gz, .npy, .pgm, or raw "
-                 "(with --raw-shape and --raw-dtype)")
+                 "input image: .vol (Version 2 or 3), .nii, .nii.gz, .npy (C or Fortran order), "
+                 ".pgm, or raw (with --raw-shape and --raw-dtype)")
       ->required();
   cmd.add_option("--raw-shape", args.raw_shape,
                  "shape of a raw input, Z,Y,X (3D) or Y,X (2D), x fastest");
   cmd.add_option("--raw-dtype", args.raw_dtype,
                  "value type of a raw input (little-endian): bool, uint8, int8, uint16, int16, "
                  "uint32, int32, uint64, int64, float32, float64");
-  auto* t = cmd.add_option("--threshold", args.threshold, "object = voxels with value >= T");
-  auto* r = cmd.add_option("--range", args.range, "object = voxels with LO <= value <= HI");
-  auto* l = cmd.add_option("--label", args.label, "object = voxels with value == L");
-  t->excludes(r)->excludes(l);
-  r->excludes(l);
-  cmd.add_flag("--invert", args.invert, "object = the complement of the selection");
-  cmd.add_option("--spacing", args.spacing,
-                 "physical voxel size SZ,SY,SX (2D: SY,SX), overriding the file's (NIfTI "
-                 "pixdim; 1 for the other formats)");
+  if (which.selection) {
+    auto* t = cmd.add_option("--threshold", args.threshold, "object = voxels with value >= T");
+    auto* r = cmd.add_option("--range", args.range, "object = voxels with LO <= value <= HI");
+    auto* l = cmd.add_option("--label", args.label, "object = voxels with value == L");
+    t->excludes(r)->excludes(l);
+    r->excludes(l);
+    cmd.add_flag("--invert", args.invert, "object = the complement of the selection");
+  }
+  args.physical = which.spacing;
+  if (which.spacing) {
+    cmd.add_option("--spacing", args.spacing,
+                   "physical voxel size SZ,SY,SX (2D: SY,SX), overriding the file's (NIfTI "
+                   "pixdim; 1 for the other formats)");
+  }
 }
 
 RawLayout raw_layout(const VolumeInputArgs& a) {
@@ -155,7 +160,7 @@ LoadedVolume load_volume(const VolumeInputArgs& args, int dim, bool progress) {
   }
   if (!args.spacing.empty()) {
     v.spacing = parse_spacing(args.spacing, v.dim());
-  } else {
+  } else if (args.physical) {
     for (int k = 0; k < v.dim(); ++k) {
       const double s = v.spacing[static_cast<std::size_t>(k)];
       if (!std::isfinite(s) || s <= 0.0)

@@ -45,11 +45,19 @@ struct VolumeInputArgs {
   std::string threshold, range, label;
   bool invert = false;
   std::string spacing;
+  bool physical = true; ///< the command uses the spacing (false: a file's spacing is not checked)
 };
 
-/// Adds INPUT (a required positional) and the selection, spacing and raw options to `cmd`;
-/// they are stored into `args` (which must outlive the parse).
-void add_volume_input_options(CLI::App& cmd, VolumeInputArgs& args);
+/// Which options besides INPUT and the raw layout (--raw-shape, --raw-dtype) a command takes.
+struct VolumeOptionSet {
+  bool selection = true; ///< --threshold, --range, --label, --invert
+  bool spacing = true;   ///< --spacing
+};
+
+/// Adds INPUT (a required positional), the raw options and those of `which` to `cmd`; they are
+/// stored into `args` (which must outlive the parse). Every command that reads an image calls
+/// it, so that every command reads every format with the same options and errors.
+void add_volume_input_options(CLI::App& cmd, VolumeInputArgs& args, VolumeOptionSet which = {});
 
 /// The raw layout of the arguments (empty when neither --raw-shape nor --raw-dtype is given).
 RawLayout raw_layout(const VolumeInputArgs& args);

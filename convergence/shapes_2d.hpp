@@ -11,38 +11,14 @@
 //   polygon:X1,Y1,...      convex polygon with rational vertices (exact)
 //   poly:EXPR              F(x, y) <= 0, F a polynomial with rational coefficients (exact)
 //
-// Ground truth. Parametric shapes (ball, ellipse, flowers) project a point by sampling
-// the parameter in a window around the polar guess then Newton on (C(s) - p).C'(s) = 0
-// (to 1e-14 in the parameter); tangent C'/|C'|, curvature (x'y'' - y'x'')/|C'|^3. Their
-// area, perimeter and moments come from closed forms where known (ball; ellipse area and
-// perimeter series pi (a+b) sum binom(1/2,n)^2 H^n; flower area pi (R0^2 + A^2/2)), otherwise
-// from the trapezoid rule on the periodic parameter with 2^16 samples (2^20 for accflower,
-// whose radius has a corner at t = +-pi): errors below 1e-10, far below the estimators'.
-//
-// Chains. project_chain warm-starts Newton from the previous point's parameter and accepts
-// the iterate x = C(s) without the robust search when a reach certificate holds: with
-// rho <= reach (reach_lower_bound), write p - x = d n + eps tau (n, tau the unit normal
-// and tangent at x; eps = |g| / |C'| the Newton residual). Federer's formula gives
-// |(y - x) . n| <= |y - x|^2 / (2 rho) for every boundary point y, so
-//   |y - p|^2 - |x - p|^2 = |y - x|^2 - 2 (y - x).(p - x)
-//                         >= |y - x|^2 (1 - d / rho) - 2 eps |y - x|,
-// positive as soon as |y - x| > 2 eps / (1 - d / rho): the nearest boundary point lies
-// within 4 eps of x when d <= rho / 2. Accepted: d <= rho / 2 and eps <= 1e-14 (1 + |x|),
-// i.e. x is the nearest point to 4e-14 (1 + |x|) (Federer 1959, Thm 4.18 for the bound on
-// |(y - x).n|; the inequality covers every boundary point y, so no sampling is needed; d
-// and eps are evaluated in double, from C(s) accurate to a few ulps). Otherwise (coarse h, d > rho
-// / 2, no convergence in 8 steps, or no reach bound) the point goes through `project`. About 3
-// curve evaluations per point instead of 25 + Newton.
-//
-// Reach. Ball R; ellipse b^2/a (b <= a, its minimal radius of curvature; the medial axis
-// ends at the centres of curvature of the vertices); flowers: Federer's formula
-// inf |y - x|^2 / (2 |(y - x).n_x|) over pairs of 4096 parameter samples together with
-// the minimal radius of curvature over 2^16 samples, divided by a safety factor 2
-// (sampled values only overestimate the infimum), 0 with a corner at the seam; polygon 0
-// (corners); poly: unknown.
-//
-// Polygons use closed forms. poly: projects by damped Newton on F (40 iterations at most),
-// with curvature (Fy^2 Fxx - 2 Fx Fy Fxy + Fx^2 Fyy) / |grad F|^3; no area or perimeter.
+// Ground truth: closed forms where known (ball; ellipse area and perimeter series; flower
+// area), otherwise Newton projection (to 1e-14 in the parameter) and trapezoid quadrature on
+// the parameter with 2^16 samples (2^20 for accflower): errors below 1e-10. project_chain
+// warm-starts Newton and skips the robust search when a reach certificate (Federer 1959,
+// Thm 4.18) proves the iterate is the nearest point to 4e-14 (1 + |x|). Reach: R for the
+// ball, b^2/a for the ellipse, sampled and halved for flowers, 0 for polygons, unknown for
+// poly: (damped Newton on F, no area or perimeter). Derivation and sampling details:
+// docs/NOTES.md, "convergence/shapes_2d.hpp".
 #pragma once
 
 #include <zdg/convergence/shape.hpp>

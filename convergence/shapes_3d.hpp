@@ -10,23 +10,11 @@
 // kernel/digitization/polynomial_sign.hpp (double with a rigorous error bound, Rational<BigInt>
 // when the bound does not certify it), the one predicate of the 2D polynomial shapes too.
 //
-// Ground truth (papers/THEORY.md, "Ground-truth formulas"). xi(p), the projection of p onto
-// F = 0: damped Newton q <- q - F(q) g / |g|^2 (the step halved while |F| does not
-// decrease, 40 iterations at most), then foot-point refinement: q <- Newton(q + P (p - q)),
-// P the projection on the tangent plane (8 rounds at most), polished by Newton on the
-// Lagrange system q - p + mu grad F(q) = 0, F(q) = 0 (12 steps at most), a step being kept
-// only when it reduces |P (p - q)|, until p - q is parallel to the normal (a foot point: the
-// nearest point of the surface near p, to 1e-12 relative). At q, with
-// g = grad F, M = Hessian F, n = g / |g| (outward):
-//   H = (|g|^2 tr M - g^T M g) / (2 |g|^3),  K = -det [[M, g], [g^T, 0]] / |g|^4,
-//   k1 <= k2 the eigenvalues of the shape operator (t_i^T M t_j) / |g| on an orthonormal
-//   basis (t1, t2) of the tangent plane (so k1 + k2 = 2H, k1 k2 = K), d1, d2 its unit
-//   eigenvectors. Sign convention: curvatures are positive where the solid is convex (a
-//   sphere of radius r has H = 1/r, K = 1/r^2).
-//
-// Cost: one membership test is O(#terms deg) flops, plus a BigInt evaluation when the point
-// lies within the filter bound of the surface (rare: about 1e-15 relative). The predicate
-// returned by digitize is safe to call from several threads.
+// Ground truth (formulas: papers/THEORY.md, "Ground-truth formulas"): xi(p) by damped Newton on
+// F, foot-point refinement and Newton on the Lagrange system, to 1e-12 relative (iteration
+// limits: docs/NOTES.md, "convergence/shapes_3d.hpp"); H, K, k1 <= k2, d1, d2 from grad F and
+// Hessian F, positive where the solid is convex. Membership: O(#terms deg) flops, plus a BigInt
+// evaluation within the filter bound (rare); the predicate is safe from several threads.
 #pragma once
 
 #include <zdg/convergence/shape.hpp>

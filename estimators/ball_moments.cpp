@@ -465,8 +465,8 @@ BallMoments direct_ball_moments(const VoxelPredicate& inside, const VoxelBox& bo
 }
 
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
-                                      std::span<const Voxel> centres, std::int64_t r2, int threads,
-                                      bool second_order) {
+                                      std::span<const Voxel> centres, std::int64_t r2,
+                                      unsigned threads, bool second_order) {
   return detail::ball_moments_by_columns(inside, box, centres, r2, threads, second_order, 16);
 }
 
@@ -476,12 +476,11 @@ int detail::ball_moments_simd_lanes() {
 
 ColumnMoments detail::ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
                                               std::span<const Voxel> centres, std::int64_t r2,
-                                              int threads, bool second_order, int max_lanes) {
+                                              unsigned threads, bool second_order, int max_lanes) {
   check_voxel_box(box);
   if (r2 < 0 || r2 > kMaxRadius * kMaxRadius)
     throw InvalidArgument("ball moments: squared digital radius " + std::to_string(r2) +
                           " is outside [0, 256^2]");
-  if (threads < 0) throw InvalidArgument("ball moments: threads = " + std::to_string(threads));
   ColumnMoments out;
   out.moments.resize(centres.size());
   out.stats.centres = centres.size();
@@ -535,7 +534,7 @@ ColumnMoments detail::ball_moments_by_columns(const VoxelPredicate& inside, cons
     i = j;
   }
 
-  const unsigned workers = unsigned(threads);
+  const unsigned workers = worker_count(threads, std::numeric_limits<std::int64_t>::max());
   // The vectorized forms: second order, r <= kInt32LineRadius (their int32 line sums).
   const int lanes = second_order && r <= kInt32LineRadius ? std::min(max_lanes >= 16  ? 16
                                                                      : max_lanes >= 8 ? 8

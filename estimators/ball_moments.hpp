@@ -4,26 +4,13 @@
 // coordinates relative to the centre (voxel units). These are the integral invariants of
 // Coeurjolly, Lachaud, Levallois (CVIU 2014) before scaling by h (estimators/ii_3d.hpp).
 //
-// Algorithm (ball_moments_by_columns). B is a union of column segments
-// { (u, v, t) : |t| <= w(u, v) }, w(u, v) = floor(sqrt(r2 - u^2 - v^2)), one per (u, v) of
-// the disc u^2 + v^2 <= r2. With the runs of X along z (kernel/images/column_runs.hpp), the part
-// of X in the segment of column (c.x + u, c.y + v) is the union of the intersections
-// [lo, hi] of its runs with [c.z - w, c.z + w], whose contributions are closed forms:
-//   count hi - lo + 1, sum t = (lo + hi)(hi - lo + 1)/2,
-//   sum t^2 = (P(hi) - P(lo - 1))/6 with P(m) = m (m + 1)(2m + 1),
-// times u, v, u^2, uv for the other moments. Cost: O(#runs in the columns of the disc),
-// about pi r2 column operations per centre whatever the shape (vectorized, no voxel is
-// touched), plus one predicate evaluation per voxel of the blocks of kBlock^3 voxels within
-// reach of a ball (kernel/images/column_runs.hpp; the blocks come from a dilation of the blocks of
-// the centres). The integers equal those of the brute-force count (direct_ball_moments) and
-// of the incremental walk (estimators/ii_3d.hpp), tested.
-//
-// Vectorized forms (CPUs with AVX-512F, or AVX2 with 8 lanes; r <= 100, second order): 16
-// columns per step, the
-// tail of a line by a masked load, 6 sum t^2 = cnt (2 (s^2 - lo hi) + hi - lo) with
-// s = lo + hi (each term carries the count, so empty intersections need no clamp), the six
-// int32 lane sums of a line folded into ten int64 vector accumulators of the ball (no
-// horizontal sum per line). Same integers as the portable loop (tested).
+// Algorithm (ball_moments_by_columns): B is a union of column segments |t| <= w(u, v) =
+// floor(sqrt(r2 - u^2 - v^2)); the runs of X along z (kernel/images/column_runs.hpp) meet them
+// in intervals [lo, hi] whose moments are closed forms (count, sum t, sum t^2 = (P(hi) -
+// P(lo - 1))/6, P(m) = m (m + 1)(2m + 1)). Cost: O(#runs in the columns of the disc), about pi r2
+// column operations per centre, plus one predicate evaluation per voxel of the blocks within
+// reach. Vectorized forms (AVX-512F or AVX2, r <= 100, second order) give the same integers as
+// the portable loop and the brute force (derivation: docs/NOTES.md, "estimators/ball_moments.hpp").
 //
 // Integer width: column arithmetic in int32 (|t| <= r <= 256: every term below 2^31), sums
 // of a line of the disc in int32 when r <= 100 (every term below 2 r (r+1)(2r+1) in
@@ -76,19 +63,18 @@ struct ColumnMoments {
 
 /// The moments of X in the ball of squared radius r2 around every centre, by column runs
 /// (above). threads: 0 = hardware concurrency. With second_order false only m0 is computed
-/// (m1, m2 are left zero). The second-order sums of radius <= 100 run in a hand-vectorized
-/// form on CPUs with AVX-512F (16 columns per step; about 1.5x the portable loop on an AMD
-/// EPYC with AVX-512) or AVX2 (8), same integers.
+/// (m1, m2 are left zero). The second-order sums of radius <= 100 run hand-vectorized on CPUs
+/// with AVX-512F (16 columns per step) or AVX2 (8), same integers.
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
                                       std::span<const Voxel> centres, std::int64_t r2,
-                                      int threads = 1, bool second_order = true);
+                                      unsigned threads = 0, bool second_order = true);
 
 namespace detail {
 /// ball_moments_by_columns with vectorized forms of at most max_lanes lanes (16: AVX-512 or
 /// AVX2, 8: AVX2 at most, 0: the portable loop), for tests that compare them.
 ColumnMoments ball_moments_by_columns(const VoxelPredicate& inside, const VoxelBox& box,
-                                      std::span<const Voxel> centres, std::int64_t r2, int threads,
-                                      bool second_order, int max_lanes);
+                                      std::span<const Voxel> centres, std::int64_t r2,
+                                      unsigned threads, bool second_order, int max_lanes);
 /// The lanes of the widest vectorized form this CPU runs (16, 8 or 0).
 int ball_moments_simd_lanes();
 } // namespace detail

@@ -124,25 +124,25 @@ std::vector<std::array<P3, 4>> corner_normals(std::span<const Surfel> surfels,
 
 std::vector<CorrectedMeasures> face_corrected_measures(std::span<const Surfel> surfels,
                                                        std::span<const P3> normals, double h,
-                                                       int threads) {
+                                                       unsigned threads) {
   check_inputs(surfels, normals, h);
   const auto un = corner_normals(surfels, normals);
   std::vector<CorrectedMeasures> out(surfels.size());
-  parallel_chunks(std::int64_t(surfels.size()), unsigned(std::max(threads, 0)),
-                  [&](std::int64_t b, std::int64_t e) {
-                    for (auto f = std::size_t(b); f < std::size_t(e); ++f) {
-                      const auto ps = surfel_pointels(surfels[f]);
-                      std::array<P3, 4> x;
-                      for (std::size_t i = 0; i < 4; ++i) x[i] = embed_cell(ps[i], h);
-                      out[f] = quad_corrected_measures(x, un[f]);
-                    }
-                  });
+  parallel_chunks(std::int64_t(surfels.size()), threads, [&](std::int64_t b, std::int64_t e) {
+    for (auto f = std::size_t(b); f < std::size_t(e); ++f) {
+      const auto ps = surfel_pointels(surfels[f]);
+      std::array<P3, 4> x;
+      for (std::size_t i = 0; i < 4; ++i) x[i] = embed_cell(ps[i], h);
+      out[f] = quad_corrected_measures(x, un[f]);
+    }
+  });
   return out;
 }
 
 std::vector<CorrectedCurvatures> cnc_curvatures(std::span<const Surfel> surfels,
                                                 std::span<const P3> normals, double h, double R,
-                                                std::span<const std::size_t> queries, int threads) {
+                                                std::span<const std::size_t> queries,
+                                                unsigned threads) {
   check_inputs(surfels, normals, h);
   if (!(R > 0) || !std::isfinite(R)) {
     std::ostringstream msg;
@@ -165,46 +165,45 @@ std::vector<CorrectedCurvatures> cnc_curvatures(std::span<const Surfel> surfels,
   for (std::size_t f = 0; f < surfels.size(); ++f)
     cells[cell_of(surfel_centre(surfels[f], h))].push_back(std::uint32_t(f));
   std::vector<CorrectedCurvatures> out(queries.size());
-  parallel_chunks(std::int64_t(queries.size()), unsigned(std::max(threads, 0)),
-                  [&](std::int64_t b, std::int64_t e) {
-                    for (auto qi = std::size_t(b); qi < std::size_t(e); ++qi) {
-                      const std::size_t q = queries[qi];
-                      const P3 c = surfel_centre(surfels[q], h);
-                      const KPoint k = cell_of(c);
-                      CorrectedMeasures ball;
-                      for (std::int64_t dz = -1; dz <= 1; ++dz)
-                        for (std::int64_t dy = -1; dy <= 1; ++dy)
-                          for (std::int64_t dx = -1; dx <= 1; ++dx) {
-                            const auto it = cells.find({k.x + dx, k.y + dy, k.z + dz});
-                            if (it == cells.end()) continue;
-                            for (const auto f : it->second) {
-                              // DGtal's faceInclusionRatio over the centroid and the four corners.
-                              const P3 fc = surfel_centre(surfels[f], h);
-                              double dmin = std::sqrt(dot(fc - c, fc - c)), dmax = dmin;
-                              for (const auto& p : surfel_pointels(surfels[f])) {
-                                const P3 v = embed_cell(p, h) - c;
-                                const double d = std::sqrt(dot(v, v));
-                                dmin = std::min(dmin, d);
-                                dmax = std::max(dmax, d);
-                              }
-                              double w = 0;
-                              if (dmax <= R) {
-                                w = 1;
-                              } else if (dmin < R) {
-                                w = (R - dmin) / (dmax - dmin);
-                              }
-                              if (w > 0) ball.add(measures[f], w);
-                            }
-                          }
-                      out[qi] = corrected_curvatures(ball, normals[q]);
-                    }
-                  });
+  parallel_chunks(std::int64_t(queries.size()), threads, [&](std::int64_t b, std::int64_t e) {
+    for (auto qi = std::size_t(b); qi < std::size_t(e); ++qi) {
+      const std::size_t q = queries[qi];
+      const P3 c = surfel_centre(surfels[q], h);
+      const KPoint k = cell_of(c);
+      CorrectedMeasures ball;
+      for (std::int64_t dz = -1; dz <= 1; ++dz)
+        for (std::int64_t dy = -1; dy <= 1; ++dy)
+          for (std::int64_t dx = -1; dx <= 1; ++dx) {
+            const auto it = cells.find({k.x + dx, k.y + dy, k.z + dz});
+            if (it == cells.end()) continue;
+            for (const auto f : it->second) {
+              // DGtal's faceInclusionRatio over the centroid and the four corners.
+              const P3 fc = surfel_centre(surfels[f], h);
+              double dmin = std::sqrt(dot(fc - c, fc - c)), dmax = dmin;
+              for (const auto& p : surfel_pointels(surfels[f])) {
+                const P3 v = embed_cell(p, h) - c;
+                const double d = std::sqrt(dot(v, v));
+                dmin = std::min(dmin, d);
+                dmax = std::max(dmax, d);
+              }
+              double w = 0;
+              if (dmax <= R) {
+                w = 1;
+              } else if (dmin < R) {
+                w = (R - dmin) / (dmax - dmin);
+              }
+              if (w > 0) ball.add(measures[f], w);
+            }
+          }
+      out[qi] = corrected_curvatures(ball, normals[q]);
+    }
+  });
   return out;
 }
 
 std::vector<CorrectedCurvatures> cnc_curvatures(std::span<const Surfel> surfels,
                                                 std::span<const P3> normals, double h, double R,
-                                                int threads) {
+                                                unsigned threads) {
   std::vector<std::size_t> all(surfels.size());
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
   return cnc_curvatures(surfels, normals, h, R, all, threads);

@@ -11,12 +11,12 @@
 
 namespace zdg {
 
-GaussVolume gauss_volume(const VoxelPredicate& inside, const VoxelBox& box, double h, int threads) {
+GaussVolume gauss_volume(const VoxelPredicate& inside, const VoxelBox& box, double h,
+                         unsigned threads) {
   check_voxel_box(box);
   if (!(h > 0) || !std::isfinite(h))
     throw InvalidArgument("gauss_volume: grid step h = " + std::to_string(h) +
                           " is not a positive number");
-  if (threads < 0) throw InvalidArgument("gauss_volume: threads = " + std::to_string(threads));
   const int128_t n =
       int128_t(box.hi.x - box.lo.x + 1) * (box.hi.y - box.lo.y + 1) * (box.hi.z - box.lo.z + 1);
   if (n > std::numeric_limits<std::int64_t>::max())

@@ -21,6 +21,6 @@ struct GaussVolume {
 /// Counts the inside voxels of the box and scales by h^3 (h > 0, threads >= 1; 0 means the
 /// hardware concurrency).
 GaussVolume gauss_volume(const VoxelPredicate& inside, const VoxelBox& box, double h,
-                         int threads = 1);
+                         unsigned threads = 0);
 
 } // namespace zdg

@@ -12,27 +12,17 @@
 //     exact for linear functions on planes, O(h) on smooth surfaces;
 //   - the stiffness A = G^T W G (the Dirichlet energy sum_s w_s |G_s u|^2, symmetric positive
 //     semi-definite, A 1 = 0) and the mass W = diag(w).
-//   - K, the graph Laplacian of the surfel adjacency (sum over linels of (u(r) - u(s))^2): the
-//     least-squares stiffness A does not see the checkerboard modes of the 2-ring stencil
-//     (their fitted gradient vanishes), so a heat step with A alone rings around the source
-//     (measured: the distance then decreases over the first three rings); A + K is monotone
-//     there.
-// The three steps of the heat method: (1) heat flow for a time t from the source,
-// (W + t (A + K)) u = e_source; (2) the normalized field X_s = -G_s u / |G_s u|; (3) the distance
-// as the least-squares potential of X, A phi = G^T W X (A is singular on constants: solved as (A +
-// eps W) phi = G^T W X with eps = 1e-9 tr(A) / tr(W)), shifted so that phi(source) = 0. Default t =
-// h^2 (Crane et al.: t = m h^2 with h the mean spacing, m = 1). Both matrices are factored once
-// (kernel/linalg/sparse_spd_solver.hpp, CHOLMOD when present), so each further source costs two
-// solves.
+//   - K, the graph Laplacian of the surfel adjacency: A alone misses the checkerboard modes
+//     of the 2-ring stencil and rings around the source; A + K is monotone there.
+// Heat method: (1) (W + t (A + K)) u = e_source; (2) X_s = -G_s u / |G_s u|; (3) A phi = G^T W X
+// (solved as (A + eps W) phi = G^T W X, eps = 1e-9 tr(A) / tr(W)), shifted to phi(source) = 0.
+// Default t = h^2 (Crane et al., m = 1). Both matrices are factored once
+// (kernel/linalg/sparse_spd_solver.hpp): a further source costs two solves (details:
+// docs/NOTES.md, "estimators/heat_geodesics.hpp").
 //
-// Accuracy (measured in tests/estimators/heat_geodesics_test.cpp, II normals R = 2 h^{1/3}):
-// on the unit sphere, the mean | max error against the great-circle distance is 0.024 | 0.165
-// at h = 0.1, 0.0062 | 0.089 at h = 0.05, 0.0146 | 0.050 at h = 0.025 (the mean no longer
-// falls there: t = h^2 ties the smoothing to the grid). Cost: O(n k^2) to assemble (k = 13
-// surfels per stencil), A has about 41 entries per row (the 4-ring), two sparse Cholesky
-// factorizations (about n^{3/2} flops on a surface; CHOLMOD's supernodes run in BLAS: 2.7 s
-// at n = 30,000 with OpenBLAS, 20 s with the reference BLAS), O(nnz(L)) per source (0.1 s).
-// Widths: doubles; int64 indices.
+// Cost: O(n k^2) to assemble (k = 13 surfels per stencil), A about 41 entries per row, two
+// sparse Cholesky factorizations (about n^{3/2} flops), O(nnz(L)) per source. Widths: doubles,
+// int64 indices (accuracy and timings: bench/README.md, "estimators/heat_geodesics.hpp").
 #pragma once
 
 #include <zdg/arith/point.hpp>

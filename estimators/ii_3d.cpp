@@ -36,10 +36,8 @@ void check_radius2(std::int64_t r2) {
                           " is outside [0, 256^2]");
 }
 
-int threads_or_default(int threads) {
-  if (threads < 0)
-    throw InvalidArgument("integral invariants: threads = " + std::to_string(threads));
-  return int(worker_count(unsigned(threads), std::numeric_limits<std::int64_t>::max()));
+unsigned threads_or_default(unsigned threads) {
+  return worker_count(threads, std::numeric_limits<std::int64_t>::max());
 }
 
 /// One row of the ball along an axis a: the offsets t e_a + u e_b + v e_c, |t| <= w, where
@@ -367,8 +365,8 @@ Centres surfel_centres(std::span<const Surfel> surfels) {
 } // namespace
 
 IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
-                                  std::span<const Surfel> surfels, std::int64_t r2, int threads,
-                                  bool second_order) {
+                                  std::span<const Surfel> surfels, std::int64_t r2,
+                                  unsigned threads, bool second_order) {
   check_voxel_box(box);
   check_radius2(r2);
   threads = threads_or_default(threads);
@@ -388,15 +386,14 @@ IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& 
 
 IISurfelMoments ii_surfel_moments_incremental(const VoxelPredicate& inside, const VoxelBox& box,
                                               std::span<const Surfel> surfels, std::int64_t r2,
-                                              int threads, bool second_order) {
+                                              unsigned threads, bool second_order) {
   return detail::ii_surfel_moments_incremental(inside, box, surfels, r2, threads, second_order,
                                                kMaxSharedBytes);
 }
 
-IISurfelMoments
-detail::ii_surfel_moments_incremental(const VoxelPredicate& inside, const VoxelBox& box,
-                                      std::span<const Surfel> surfels, std::int64_t r2, int threads,
-                                      bool second_order, std::size_t shared_cache_bytes) {
+IISurfelMoments detail::ii_surfel_moments_incremental(
+    const VoxelPredicate& inside, const VoxelBox& box, std::span<const Surfel> surfels,
+    std::int64_t r2, unsigned threads, bool second_order, std::size_t shared_cache_bytes) {
   check_voxel_box(box);
   check_radius2(r2);
   threads = threads_or_default(threads);
@@ -514,7 +511,7 @@ IIPrincipalCurvatures ii_principal_curvatures_from_moments(const SurfelBallMomen
 
 std::vector<double> ii_mean_curvature(const VoxelPredicate& inside, const VoxelBox& box,
                                       std::span<const Surfel> surfels, double h, double R,
-                                      int threads) {
+                                      unsigned threads) {
   const auto r2 = ii_digital_radius2(R, h);
   const auto m = ii_surfel_moments(inside, box, surfels, r2, threads, false);
   std::vector<double> out;
@@ -526,7 +523,7 @@ std::vector<double> ii_mean_curvature(const VoxelPredicate& inside, const VoxelB
 std::vector<IIPrincipalCurvatures> ii_principal_curvatures(const VoxelPredicate& inside,
                                                            const VoxelBox& box,
                                                            std::span<const Surfel> surfels,
-                                                           double h, double R, int threads) {
+                                                           double h, double R, unsigned threads) {
   const auto r2 = ii_digital_radius2(R, h);
   const auto m = ii_surfel_moments(inside, box, surfels, r2, threads, true);
   std::vector<IIPrincipalCurvatures> out;

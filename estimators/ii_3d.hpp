@@ -74,7 +74,7 @@ namespace detail {
 /// exposed, so that tests reach the per-chunk caches too.
 IISurfelMoments ii_surfel_moments_incremental(const VoxelPredicate& inside, const VoxelBox& box,
                                               std::span<const Surfel> surfels, std::int64_t r2,
-                                              int threads, bool second_order,
+                                              unsigned threads, bool second_order,
                                               std::size_t shared_cache_bytes);
 } // namespace detail
 
@@ -87,19 +87,19 @@ std::int64_t ii_digital_radius2(double R, double h);
 /// With second_order false only m0 is computed (m1, m2 are left zero). Voxels outside the
 /// box count as outside. The predicate must be callable from several threads at once.
 IISurfelMoments ii_surfel_moments(const VoxelPredicate& inside, const VoxelBox& box,
-                                  std::span<const Surfel> surfels, std::int64_t r2, int threads = 1,
-                                  bool second_order = true);
+                                  std::span<const Surfel> surfels, std::int64_t r2,
+                                  unsigned threads = 0, bool second_order = true);
 
 /// The same integers by the incremental walk (the previous counter, 2 pi r^2 look-ups per
 /// unit move; see above).
 IISurfelMoments ii_surfel_moments_incremental(const VoxelPredicate& inside, const VoxelBox& box,
                                               std::span<const Surfel> surfels, std::int64_t r2,
-                                              int threads = 1, bool second_order = true);
+                                              unsigned threads = 0, bool second_order = true);
 
 /// II mean curvature at every surfel (H = 1/r on a sphere of radius r).
 std::vector<double> ii_mean_curvature(const VoxelPredicate& inside, const VoxelBox& box,
                                       std::span<const Surfel> surfels, double h, double R,
-                                      int threads = 1);
+                                      unsigned threads = 0);
 
 /// II principal curvatures, directions and normal at one surfel.
 struct IIPrincipalCurvatures {
@@ -112,10 +112,9 @@ struct IIPrincipalCurvatures {
 
 /// II principal curvatures at every surfel. (d1, d2, normal) is a direct orthonormal frame
 /// (the sign of d1 is that of the eigenvector: a direction, not an orientation).
-std::vector<IIPrincipalCurvatures> ii_principal_curvatures(const VoxelPredicate& inside,
-                                                           const VoxelBox& box,
-                                                           std::span<const Surfel> surfels,
-                                                           double h, double R, int threads = 1);
+std::vector<IIPrincipalCurvatures>
+ii_principal_curvatures(const VoxelPredicate& inside, const VoxelBox& box,
+                        std::span<const Surfel> surfels, double h, double R, unsigned threads = 0);
 
 /// The formulas alone, from the moments of one surfel (for drivers that keep the moments):
 /// H from the averaged count, and the principal curvatures from the average of the

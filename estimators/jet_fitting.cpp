@@ -36,7 +36,7 @@ Point3<double> unit(const K::Vector_3& v) {
 std::vector<JetEstimate> jet_fitting(std::span<const Point3<double>> points,
                                      std::span<const std::size_t> queries,
                                      std::span<const Point3<double>> outward, double radius,
-                                     int degree, int threads) {
+                                     int degree, unsigned threads) {
   if (!(radius > 0) || !std::isfinite(radius)) {
     throw InvalidArgument("jet fitting: the radius must be positive and finite");
   }

@@ -168,10 +168,8 @@ SurfelProbe probing_surfel_normal(const VoxelPredicate& inside, const VoxelBox& 
 
 std::vector<SurfelProbe> probing_normals(const VoxelPredicate& inside, const VoxelBox& box,
                                          std::span<const Surfel> surfels,
-                                         ProbingAlgorithm algorithm, int threads) {
-  if (threads < 0) throw InvalidArgument("probing_normals: threads must be >= 0");
-  const unsigned workers =
-      threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : unsigned(threads);
+                                         ProbingAlgorithm algorithm, unsigned threads) {
+  const unsigned workers = worker_count(threads, std::int64_t(surfels.size()));
   std::vector<SurfelProbe> out(surfels.size());
   parallel_for(std::int64_t(surfels.size()), workers, [&](std::int64_t i) {
     out[std::size_t(i)] = probing_surfel_normal(inside, box, surfels[std::size_t(i)], algorithm);

@@ -33,7 +33,7 @@ std::int64_t checked_ratio2(double radius, double h, const char* name, double sc
 } // namespace
 
 std::vector<P3> vcm_normals(std::span<const Surfel> surfels, double h, double R, double r,
-                            int threads) {
+                            unsigned threads) {
   if (!(h > 0) || !std::isfinite(h)) {
     std::ostringstream msg;
     msg << "VCM normals: the grid step h = " << h << " must be positive";
@@ -44,7 +44,7 @@ std::vector<P3> vcm_normals(std::span<const Surfel> surfels, double h, double R,
   const std::int64_t r2x4 = checked_ratio2(r, h, "r", 4.0); // doubled coordinates
   const auto Rv = static_cast<std::int64_t>(std::ceil(R / h));
   const auto rv = static_cast<std::int64_t>(std::ceil(r / h));
-  const unsigned nthreads = unsigned(std::max(threads, 0));
+  const unsigned nthreads = threads;
 
   // K: the pointels, as lattice points q = k / 2 (k the even Khalimsky point).
   std::vector<KPoint> K;

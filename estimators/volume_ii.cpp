@@ -10,8 +10,8 @@ namespace {
 
 constexpr std::int64_t kBatch = std::int64_t{1} << 18;
 
-int thread_count(unsigned threads) {
-  return static_cast<int>(worker_count(threads, std::int64_t{1} << 30));
+unsigned thread_count(unsigned threads) {
+  return worker_count(threads, std::int64_t{1} << 30);
 }
 
 template <class Result, class Estimate>

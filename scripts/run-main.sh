@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-scripts/build.sh
+scripts/build.sh zdg_cli   # only the program the job runs
 out="out/cviu2014-ii2d-$(date +%Y%m%d-%H%M%S)"
 mkdir -p out
 build/bin/zdg paper cviu2014-ii2d --quick -o "$out"

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The test suite: installs what is missing, builds (Release, warnings as errors), runs every
-# test except those labelled "slow" (run them with: ctest --test-dir build -L slow).
+# The test suite: installs what is missing, builds (Release, warnings as errors: the same
+# configuration as the main job, whose build it reuses), runs every test except those labelled
+# "slow" (run them with: ctest --test-dir build -L slow).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
-ZDG_CMAKE_ARGS="-DZDG_WERROR=ON ${ZDG_CMAKE_ARGS:-}" scripts/build.sh
+scripts/build.sh
 ctest --test-dir build -LE slow -j"$(nproc 2>/dev/null || echo 2)" --output-on-failure --timeout 900

@@ -1,46 +1,17 @@
 // Maximal segments (the tangential cover) and greedy segmentation of a digital curve.
 //
-// A curve is a list of points p_0 .. p_{n-1}, consecutive points 4- or 8-adjacent; a closed
-// curve also has p_{n-1} adjacent to p_0 (do not repeat p_0 at the end). A DSS of the curve is
-// a run of consecutive points p_i .. p_j (indices modulo n when closed) that is a digital
-// straight segment (arith/dss_recognizer.hpp); it is maximal when neither p_{i-1} nor p_{j+1}
-// can be added. The tangential cover is the sequence of all maximal segments, ordered by their
-// first point (both ends then increase strictly); on a closed curve the list starts with the
-// maximal segment through p_0 found by extending from p_0 backwards first (it may wrap) and
-// goes once around. The greedy segmentation cuts the curve into longest DSS from p_0 on,
-// consecutive segments sharing their end point.
-//
-// Connectivity: when every step is an axis step (4-connected curves, e.g. contours of
-// pointels) the segments are standard DSS (omega = |a| + |b|); otherwise naive DSS
-// (omega = max(|a|, |b|)), and 8-connected curves that mix axis steps of both directions in one
-// run simply give shorter segments. Pass a Connectivity to choose.
-//
-// Each MaximalSegment is a plain struct:
-//   begin, end   inclusive indices into the input; for a closed curve a segment may wrap
-//                (end < begin), and length = number of points (end - begin + 1 modulo n);
-//   a, b         minimal characteristics, oriented along the curve: (b, a) is the direction
-//                vector of the segment, pointing from p_begin towards p_end (gcd(a, b) = 1;
-//                the tangent angle is atan2(a, b));
-//   mu, omega    mu <= a x - b y < mu + omega for every point of the segment, with both bounds
-//                reached (upper and lower leaning points). mu is 128-bit: a x0 exceeds int64 for
-//                coordinates near 2^62.
-// A one-point curve gives one segment (a, b, mu, omega) = (0, 1, -y, 1).
-//
-//   std::vector<zdg::Point2<std::int64_t>> contour = ...;  // closed 4-connected pointels
-//   for (const auto& s : zdg::maximal_segments_exact(contour, true).value) {
-//     double angle = std::atan2(double(s.a), double(s.b));  // tangent direction of s
-//     // points contour[(s.begin + k) % contour.size()], k = 0 .. s.length - 1
-//   }
-//
-// Complexity: O(n) for both (each point enters and leaves the recognizer at most once per
-// turn; Feschet and Tougne 1999, Lachaud, Vialard and de Vieilleville 2007). Width: the
-// recognizer works in local coordinates; maximal_segments<I> runs it on I (OverflowError when
-// its checked arithmetic overflows: on Int64 only for curves longer than about 2^31 points),
-// maximal_segments_exact escalates Int64 -> Int128 -> BigInt (arith/escalate.hpp); mu must fit
-// 128 bits and a, b, omega 64 bits (OverflowError otherwise).
-// Source: Feschet and Tougne, Optimal time computation of the tangent of a discrete curve,
-// DGCI 1999; Lachaud, Vialard, de Vieilleville, Fast, accurate and convergent tangent
-// estimation on digital contours, Image Vis. Comput. 25(10), 2007.
+// p_0 .. p_{n-1}, consecutive points 4- or 8-adjacent (closed: also p_{n-1}, p_0; p_0 not
+// repeated). A DSS p_i .. p_j (indices mod n when closed; arith/dss_recognizer.hpp) is maximal
+// when neither p_{i-1} nor p_{j+1} can be added; the cover lists them by first point (closed:
+// from the one through p_0, once around). Greedy: longest DSS from p_0, sharing end points.
+// Standard DSS when every step is an axis step, else naive (or as Connectivity says).
+// MaximalSegment: begin, end (inclusive, may wrap), length; (b, a) the direction from p_begin
+// to p_end, gcd 1; mu <= a x - b y < mu + omega with both bounds reached (mu 128-bit). One
+// point gives (0, 1, -y, 1). Example of use: docs/NOTES.md, "kernel/curves/maximal_segments.hpp".
+// Complexity: O(n) for both (Feschet and Tougne, DGCI 1999; Lachaud, Vialard, de Vieilleville,
+// Image Vis. Comput. 25(10), 2007). Width: local coordinates; maximal_segments<I> throws
+// OverflowError past I (on Int64 only beyond about 2^31 points), _exact escalates Int64 ->
+// Int128 -> BigInt; mu must fit 128 bits, a, b, omega 64 bits (OverflowError otherwise).
 #pragma once
 
 #include <zdg/arith/dss_recognizer.hpp>

@@ -5,15 +5,11 @@
 //   points excluded); duplicates are allowed. Degenerate sets: one distinct point gives one
 //   vertex, collinear points give the two endpoints (lowest-then-leftmost first).
 //
-// Algorithm: past 64 points the Akl-Toussaint throw-away (Akl, Toussaint 1978: points strictly
-// inside the polygon of the extremes in 8 directions are dropped, O(n)), then Andrew's
-// monotone chain (Andrew 1979, "Another efficient algorithm for convex hulls in two
-// dimensions"), O(n log n), decided by the exact orientation predicate
-// orient(a, b, c) = sign((b - a) x (c - a)).
-// Width: orientation needs about 2 b + 2 bits for b-bit coordinates, so Int64 serves
-// coordinates below 2^30 in magnitude for sure. lattice_hull_2d<I>() computes on I and throws
-// OverflowError past it; lattice_hull_2d_exact() escalates (Int64 -> Int128 -> BigInt on
-// OverflowError, see arith/escalate.hpp), so every coordinate size works.
+// Algorithm: past 64 points the Akl-Toussaint throw-away (1978, O(n)), then Andrew's monotone
+// chain (1979), O(n log n), on the exact orientation sign((b - a) x (c - a)).
+// Width: about 2 b + 2 bits for b-bit coordinates (Int64: below 2^30); lattice_hull_2d<I>()
+// throws OverflowError past I, lattice_hull_2d_exact() escalates Int64 -> Int128 -> BigInt
+// (arith/escalate.hpp), so every coordinate size works.
 #pragma once
 
 #include <zdg/arith/escalate.hpp>

@@ -8,20 +8,12 @@
 //   2 (a planar polygon: its two sides as two facets with opposite normals, volume 0).
 //   lattice_points_in_hull_3d counts #(conv(S) cap Z^3).
 //
-// Algorithm: a pre-filter keeps the points extreme in their axis-parallel lines (a point
-//   strictly between two others on a line is no vertex; this leaves O(n^{2/3}) points of a
-//   dense lattice body), then incremental construction with conflict lists, each face's
-//   furthest conflict point inserted first (Quickhull: Barber, Dobkin, Huhdanpaa, ACM TOMS
-//   1996): O(n log n) on typical inputs, O(n^2) in the worst case. Every decision is an exact
-//   sign: "p strictly above the plane of a triangle" is n . p > n . a with
-//   n = (b - a) x (c - a). Points not strictly above any face are discarded, so coplanar
-//   points never become false vertices; flat triangles are merged and collinear boundary
-//   points dropped at the end.
-// Width: for coordinates below 2^b in magnitude, n has at most 2b + 4 bits and n . p (every
-//   predicate, the coplanarity of neighbouring facets included) and 6 * volume at most 3b + 6:
-//   Int64 serves coordinates below 2^19 for sure. lattice_hull_3d<I>() computes on I and throws
-//   OverflowError past it; lattice_hull_3d_exact() escalates (Int64 -> Int128 -> BigInt).
-//   The lattice point count scans the xy-columns of the bounding box: O(X Y F).
+// Algorithm: a pre-filter keeps the points extreme on their axis-parallel lines, then Quickhull
+//   (Barber, Dobkin, Huhdanpaa, ACM TOMS 1996) on exact signs n . p > n . a, n = (b - a) x (c - a):
+//   O(n log n) typical, O(n^2) worst; coplanar points never become false vertices.
+// Width: n . p and 6 * volume need 3b + 6 bits for coordinates below 2^b (Int64: below 2^19);
+//   lattice_hull_3d<I>() throws OverflowError past I, _exact() escalates Int64 -> Int128 ->
+//   BigInt. lattice_points_in_hull_3d scans the xy-columns of the bounding box: O(X Y F).
 #pragma once
 
 #include <zdg/arith/escalate.hpp>

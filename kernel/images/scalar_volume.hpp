@@ -3,18 +3,13 @@
 // placed in the lattice and in physical space.
 //
 //   array     dtype (bool, uint8..uint64, int8..int64, float32, float64), shape in C order
-//             ((Z, Y, X) in 3D, (Y, X) in 2D: x is the fastest axis) and the raw bytes
-//   lower     lattice coordinates of the first voxel, one per axis (a .vol's Center keys;
-//             0 for the other formats): the voxels are the points of the Domain
-//             prod_k [lower_k, lower_k + shape_k - 1]
-//   spacing   the physical size of a voxel along each axis (NIfTI pixdim; 1 when the file
-//             has none), same axis order as the shape
-//   origin    the physical position of the first voxel's centre, same axis order: voxel p
-//             sits at origin_k + spacing_k (p_k - lower_k); NIfTI's qoffset (or the sform's
-//             translation); the rotation of a NIfTI affine is not kept
-//   slope, inter   physical value = slope * stored + inter (NIfTI scl_slope / scl_inter; 1
-//             and 0 for the other formats), computed in double precision as NIfTI defines it
-//
+//             ((Z, Y, X) in 3D, (Y, X) in 2D: x fastest) and the raw bytes
+//   lower     lattice coordinates of the first voxel (a .vol's Center keys, else 0): the
+//             voxels are the Domain prod_k [lower_k, lower_k + shape_k - 1]
+//   spacing   physical voxel size per axis (NIfTI pixdim, else 1), axis order of the shape
+//   origin    physical centre of the first voxel: voxel p at origin_k + spacing_k (p_k -
+//             lower_k) (NIfTI qoffset or sform translation; a NIfTI rotation is not kept)
+//   slope, inter   physical value = slope * stored + inter in double (NIfTI scl_*; else 1, 0)
 // Values are read exactly: value(i) is exact for every dtype but 64-bit integers past 2^53
 // (use the bytes, or kernel/images/object_selection.hpp's exact comparisons, for those).
 #pragma once

@@ -56,6 +56,7 @@ struct NpyHeader {
   std::vector<std::int64_t> shape;
   std::size_t data_offset = 0;  // bytes before the array data
   std::uint64_t data_bytes = 0; // count * itemsize (checked against overflow)
+  bool fortran_order = false;   // the data are stored first axis fastest
 };
 
 // The fixed prefix: magic, version, header length. Returns the header length and the offset
@@ -194,9 +195,7 @@ NpyHeader parse_header(const std::string& source, std::string_view text, std::si
       out.dtype = dtype_of(source, h.string_literal());
       seen = &has_descr;
     } else if (key == "fortran_order") {
-      if (h.boolean()) {
-        fail(source, "Fortran-order arrays are not supported (save with np.ascontiguousarray)");
-      }
+      out.fortran_order = h.boolean();
       seen = &has_order;
     } else if (key == "shape") {
       out.shape = h.tuple();
@@ -255,6 +254,35 @@ void check_data_size(const std::string& source, const NpyHeader& h, std::uint64_
                      std::to_string(h.data_bytes) + " needed)");
   }
   if (have > h.data_bytes) fail(source, "trailing bytes after the array data");
+}
+
+// The bytes of a Fortran-order array (first axis fastest) of this shape, reordered into C order
+// (last axis fastest): one pass over the C-order positions with an odometer of the Fortran
+// offsets. O(count) moves of `item` bytes.
+std::vector<unsigned char> fortran_to_c(const std::vector<unsigned char>& f,
+                                        const std::vector<std::int64_t>& shape, std::size_t item) {
+  std::vector<unsigned char> c(f.size());
+  const std::size_t d = shape.size();
+  if (f.empty() || d < 2) return f;
+  std::vector<std::uint64_t> fstride(d);
+  std::uint64_t s = item;
+  for (std::size_t k = 0; k < d; ++k) {
+    fstride[k] = s;
+    s *= static_cast<std::uint64_t>(shape[k]);
+  }
+  std::vector<std::int64_t> idx(d, 0);
+  std::uint64_t src = 0;
+  const std::size_t n = f.size() / item;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::memcpy(c.data() + i * item, f.data() + src, item);
+    for (std::size_t k = d; k-- > 0;) { // advance the C-order index, last axis first
+      src += fstride[k];
+      if (++idx[k] < shape[k]) break;
+      src -= fstride[k] * static_cast<std::uint64_t>(shape[k]);
+      idx[k] = 0;
+    }
+  }
+  return c;
 }
 
 } // namespace
@@ -334,6 +362,7 @@ NpyArray parse_npy(std::string_view data, const std::string& source) {
   a.dtype = h.dtype;
   a.shape = h.shape;
   a.bytes.assign(data.begin() + static_cast<std::ptrdiff_t>(h.data_offset), data.end());
+  if (h.fortran_order) a.bytes = fortran_to_c(a.bytes, a.shape, dtype_size(a.dtype));
   return a;
 }
 
@@ -403,6 +432,7 @@ NpyArray read_npy(const std::string& path) {
   in.seekg(static_cast<std::streamoff>(h.data_offset));
   in.read(reinterpret_cast<char*>(a.bytes.data()), static_cast<std::streamsize>(a.bytes.size()));
   if (!in && !a.bytes.empty()) fail(path, "read error in the array data");
+  if (h.fortran_order) a.bytes = fortran_to_c(a.bytes, a.shape, dtype_size(a.dtype));
   return a;
 }
 
@@ -410,7 +440,7 @@ NpyLayout read_npy_layout(const std::string& path) {
   const std::uint64_t size = input_file_size(path);
   std::ifstream in(path, std::ios::binary);
   const NpyHeader h = read_header(path, in, size);
-  return {h.dtype, h.shape, h.data_offset, h.data_bytes};
+  return {h.dtype, h.shape, h.data_offset, h.data_bytes, h.fortran_order};
 }
 
 std::string npy_header_bytes(DType t, const std::vector<std::int64_t>& shape) {

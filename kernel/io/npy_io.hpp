@@ -1,9 +1,11 @@
 // NumPy .npy files (format versions 1.0, 2.0 and 3.0): read and write n-D arrays.
 //
 // Accepted dtypes: bool, uint8, uint16, uint32, uint64, int8, int16, int32, int64, float32,
-// float64 (little-endian or byte-sized), C order. The header dict is parsed as the Python literal
-// numpy writes (keys 'descr', 'fortran_order', 'shape', each once; shape entries decimal integers);
-// Fortran order, big-endian or other dtypes (float16, complex, structured), malformed headers,
+// float64 (little-endian or byte-sized), in C or Fortran order (a Fortran-order file, as numpy
+// writes for a transposed array, is read into C order: the same array as np.load gives). The
+// header dict is parsed as the Python literal numpy writes (keys 'descr', 'fortran_order',
+// 'shape', each once; shape entries decimal integers); big-endian or other dtypes (float16,
+// complex, structured), malformed headers,
 // truncated data and trailing bytes are IoError naming the file and the problem. The data size
 // implied by the header (a product checked against overflow) must equal what the file holds, and it
 // is checked before anything is allocated: a short file cannot ask for a huge array. Writing:
@@ -61,10 +63,13 @@ std::string npy_header_bytes(DType t, const std::vector<std::int64_t>& shape);
 /// Where an npy file's array is: its dtype, shape, and the offset and size of the data, from
 /// the header alone, with every check of read_npy (the data size equals what the file holds).
 /// For readers that map the file instead of reading it (no size limit but the file's).
+/// A Fortran-order file's data are in file order (first axis fastest): a reader that maps the
+/// data must reorder them or refuse.
 struct NpyLayout {
   DType dtype = DType::U8;
   std::vector<std::int64_t> shape;
   std::uint64_t data_offset = 0, data_bytes = 0;
+  bool fortran_order = false;
 };
 NpyLayout read_npy_layout(const std::string& path);
 /// Writes atomically (temporary file + rename). IoError on failure.

@@ -66,6 +66,24 @@ std::vector<T> integer_values(const ScalarVolume& v, std::uint64_t max, const st
   return out;
 }
 
+// The physical values of a float or scaled volume as int64, each checked to be an integer.
+Image<std::int64_t> read_integer_image_of(const std::string& path, const ScalarVolume& v) {
+  Image<std::int64_t> img(Domain(v.array.shape, v.lower), std::int64_t{0});
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    const double x = v.value(i);
+    // 2^63 is exactly representable; every double below it in magnitude converts exactly.
+    if (!(std::nearbyint(x) == x && x >= -9223372036854775808.0 && x < 9223372036854775808.0)) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, "%.17g", x);
+      throw IoError(path + ": value " + buf + " at voxel " + std::to_string(i) +
+                    " (C order) is not an integer (" + describe_volume(v) +
+                    "; integer values are needed)");
+    }
+    img[i] = static_cast<std::int64_t>(x);
+  }
+  return img;
+}
+
 } // namespace
 
 std::string volume_format_name(VolumeFormat f) {
@@ -146,6 +164,31 @@ ScalarVolume read_volume(const std::string& path, const RawLayout& raw) {
     break;
   }
   throw IoError(path + ": unknown volume format");
+}
+
+Image<std::int64_t> read_integer_image(const std::string& path, const RawLayout& raw) {
+  if (!raw.given() && volume_format_of(path) == VolumeFormat::npy) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) throw IoError(path + ": no such file");
+    const NpyArray a = read_npy(path);
+    if (!dtype_is_float(a.dtype)) {
+      try {
+        return npy_to_int64(a);
+      } catch (const IoError& e) {
+        throw IoError(path + ": " + e.what());
+      }
+    }
+    return read_integer_image_of(path, make_scalar_volume(a));
+  }
+  const ScalarVolume v = read_volume(path, raw);
+  if (!v.scaled() && !dtype_is_float(v.array.dtype)) {
+    try {
+      return npy_to_int64(v.array, v.lower);
+    } catch (const IoError& e) {
+      throw IoError(path + ": " + e.what());
+    }
+  }
+  return read_integer_image_of(path, v);
 }
 
 NpyArray physical_array(const ScalarVolume& volume) {

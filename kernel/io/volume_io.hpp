@@ -46,6 +46,13 @@ struct VolumeWriteOptions {
                                       ///< an OutputSet's staging file needs it given)
 };
 
+/// The values of an image file as exact integers, for the commands that work on integer images
+/// (the transforms, topology): an .npy of any dimension (C or Fortran order) on the origin of
+/// the lattice, or any volume read_volume reads (2D or 3D, with a .vol's lower bounds). The
+/// physical values (slope * stored + inter) must be integers in int64: otherwise an IoError
+/// naming the file, the first voxel that is not and its value. O(voxels).
+Image<std::int64_t> read_integer_image(const std::string& path, const RawLayout& raw = {});
+
 /// Writes a volume in the format of the options or of the file name (atomically).
 void write_volume(const std::string& path, const ScalarVolume& volume,
                   const VolumeWriteOptions& options = {});

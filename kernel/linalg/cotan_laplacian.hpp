@@ -4,23 +4,11 @@
 // digital surface (kernel/surfaces/surfel_complex.hpp), the comparators of the heat-kernel operator
 // (estimators/heat_laplace_beltrami.hpp; Caissard et al., JMIV 2019, Table 1).
 //
-// Cotangent: for a function u on the vertices, with S the stiffness matrix
-//     S_ij = (cot a_ij + cot b_ij) / 2 (a_ij, b_ij the angles opposite the edge ij),
-//     S_ii = -sum_j S_ij,
-// and the lumped (barycentric) mass M_i = sum over the triangles at i of area / 3, the operator
-// is L = M^{-1} S (L u -> Delta_S u on meshes whose normals converge: Hildebrandt, Polthier,
-// Wardetzky 2006; not on the staircase of a digital surface, whose normals do not). S is
-// symmetric, S 1 = 0, -S is positive semi-definite when every S_ij >= 0 (a Delaunay mesh), and
-// S u = 0 at an interior vertex of a planar patch for every linear u (linear precision). The
-// primal quad mesh of a digital surface split along a diagonal has right isosceles triangles:
-// the diagonals get weight 0 and the sides weight 1, so there S is the graph Laplacian of the
-// pointels and M_i = (incident triangles) h^2 / 6.
-//
-// Combinatorial: (L u)(s) = (1 / area(s)) sum over the four surfels r adjacent to s of
-// (u(r) - u(s)) (1/h^2 times the graph Laplacian on the grid of step h): symmetric up to the
-// areas, L 1 = 0, -L positive semi-definite, local; consistent with Delta_S only on planes
-// aligned with the grid.
-//
+// Cotangent: L = M^{-1} S, S_ij = (cot a_ij + cot b_ij) / 2, S_ii = -sum_j S_ij, M_i the lumped
+// mass (area / 3 per incident triangle); S symmetric, S 1 = 0, linear precision; L u -> Delta_S u
+// only on meshes whose normals converge (Hildebrandt, Polthier, Wardetzky 2006), not on a
+// digital staircase. Combinatorial: (L u)(s) = (1 / area(s)) sum over the four surfels r
+// adjacent to s of (u(r) - u(s)). Properties: docs/NOTES.md, "kernel/linalg/cotan_laplacian.hpp".
 // O(n) time and memory (12 entries per triangle, 5 per surfel); doubles, int64 indices.
 #pragma once
 

@@ -1,23 +1,14 @@
 // Direct solver of sparse symmetric positive definite systems A x = b: one sparse Cholesky
-// factorization (fill-reducing ordering, then A = L D L^T or L L^T), then any number of solves
-// by two triangular sweeps. The systems of the discrete calculus (the Ambrosio-Tortorelli
-// steps, the heat method's (M - t L) u = delta and L phi = div X) are of this kind.
-//
-// Backends: SuiteSparse CHOLMOD (supernodal Cholesky, Chen, Davis, Hager, Rajamanickam, ACM
-// TOMS 2008) when zdg was built with it (CMake option ZDG_CHOLMOD, default AUTO: used when
-// Debian's libsuitesparse-dev is found), else Eigen's SimplicialLDLT (AMD ordering). CHOLMOD is
-// not linked: its shared library (and OpenBLAS, LAPACK, METIS behind it) is loaded at the first
-// solver that asks for it, so that processes that solve nothing do not pay for loading them.
-// `automatic` takes CHOLMOD when it loads; backend() says which served. Cost: O(nnz(L))
-// memory and about sum over columns of nnz(L_j)^2 flops to factor; for the 2-manifold surface
-// meshes here (nested-dissection-like orderings) nnz(L) is about n log n and the factorization
-// about n^{3/2}; a solve is O(nnz(L)).
-//
-// Input requirements: A square, symmetric (only its lower triangle is read), positive definite;
-// otherwise the factorization fails and the constructor throws zdg::Error naming the backend.
-// Widths: the factorization uses 32-bit indices (Eigen's default), so n and nnz(A) must be
-// below 2^31 (InvalidArgument past it); values double. Not thread-safe (CHOLMOD's workspace is
-// shared by the solves of one factorization): one solver per thread.
+// factorization (fill-reducing ordering), then any number of solves by two triangular sweeps
+// (the Ambrosio-Tortorelli steps, the heat method's systems).
+// Backends: SuiteSparse CHOLMOD (supernodal; Chen, Davis, Hager, Rajamanickam, ACM TOMS 2008)
+// when zdg was built with it (ZDG_CHOLMOD, default AUTO), loaded at the first solver that asks
+// for it; else Eigen's SimplicialLDLT (AMD ordering). `automatic` takes CHOLMOD when it loads.
+// Cost: O(nnz(L)) memory, about sum_j nnz(L_j)^2 flops to factor (about n^{3/2}, nnz(L) about
+// n log n on surface meshes); a solve is O(nnz(L)).
+// Input: A square, symmetric (lower triangle read), positive definite, else zdg::Error naming
+// the backend. Widths: 32-bit indices, n and nnz(A) below 2^31 (InvalidArgument past it);
+// values double. Not thread-safe: one solver per thread.
 #pragma once
 
 #include <zdg/kernel/linalg/sparse_matrix.hpp>

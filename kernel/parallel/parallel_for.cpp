@@ -7,9 +7,9 @@
 
 namespace zdg {
 
-unsigned worker_count(unsigned requested, std::int64_t items) {
+unsigned worker_count(unsigned requested, std::int64_t items, std::int64_t serial_below) {
   unsigned t = requested == 0 ? std::max(1u, std::thread::hardware_concurrency()) : requested;
-  if (items < 1) return 1;
+  if (items < 1 || items < serial_below) return 1;
   if (static_cast<std::int64_t>(t) > items) t = static_cast<unsigned>(items);
   return std::max(1u, t);
 }

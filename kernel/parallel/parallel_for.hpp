@@ -23,9 +23,12 @@
 
 namespace zdg {
 
-/// The number of workers used for `requested` threads (0: hardware concurrency) and `items`
-/// work items: in [1, max(1, items)].
-unsigned worker_count(unsigned requested, std::int64_t items);
+/// The one threads rule of zdg: every `threads` parameter is an `unsigned`, 0 means all the
+/// hardware's cores, and this function resolves it. Returns the number of workers used for
+/// `requested` threads and `items` work items: in [1, max(1, items)]; 1 when items <
+/// serial_below (work too small for a thread to pay). Results never depend on the count; a
+/// report of "threads" gives this value.
+unsigned worker_count(unsigned requested, std::int64_t items, std::int64_t serial_below = 0);
 
 namespace detail {
 

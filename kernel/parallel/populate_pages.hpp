@@ -8,11 +8,8 @@
 // and later), then fills it, so that the fill finds them mapped. Where the call is not
 // offered (or for element types that are not trivially copyable) it only assigns. The contents
 // never depend on it. The range is also advised for transparent huge pages (MADV_HUGEPAGE,
-// honoured where the system's setting is "madvise" or "always"): one fault per 2 MiB. On the
-// development VM (shadow paging: every 4 KiB first touch traps to the hypervisor), populating
-// and filling 512 MB took 0.75 s in 4 KiB pages and 0.04 s in huge pages once the process had
-// memory backed, 0.24 s the first time (compaction); on bare metal the gain is the fewer TLB
-// misses of the passes that stride across the buffer.
+// honoured where the system's setting is "madvise" or "always"): one fault per 2 MiB
+// (timings: bench/README.md, "kernel/parallel/populate_pages.hpp").
 #pragma once
 
 #include <cstddef>

@@ -1,43 +1,17 @@
 // The boundary of a binary 3D image split into closed digital surfaces under an adjacency
 // pair, with the Euler characteristic and genus of each surface and of the object.
 //
-// Pairs (object k, background kbar): (6,26), (6,18), (18,6), (26,6). Two boundary surfels are
-// adjacent when they share a linel and the bel-adjacency of kernel/surfaces/digital_surface.hpp
-// pairs them there: EXTERIOR for an object taken 6-connected (two voxels of X meeting along a linel
-// only are separated), INTERIOR for an object taken 18- or 26-connected (they are joined). Each
-// surfel has exactly four neighbours, so the boundary splits into closed surfaces, the
-// connected components of this relation.
-//
-// Each surface is a closed oriented 2-manifold once every pointel where several of its sheets
-// meet gets one vertex per sheet (kernel/surfaces/pointel_cycles.hpp): V = number of (pointel,
-// sheet) pairs, E = 2 F (each linel of a surface bounds two of its surfels), F = surfels, so chi =
-// V - F and genus = (2 - chi) / 2.
-//
-// The object. For a compact 3-manifold M with boundary, chi(dM) = 2 chi(M). Under (6,18) and
-// (18,6) the sheets at every pointel are exactly those of the pair's continuous analog
-// (Kong-Rosenfeld 1989; Lachaud-Montanvert 2000), so the sum of the chi of the surfaces is
-// 2 chi(X) = 2 (b0 - b1 + b2). Under (26,6) (resp. (6,26)) the analog joins the two sheets of
-// each pointel around which X (resp. its complement) is exactly two opposite voxels of the
-// 2x2x2 block, a "pinched pointel": a neck that no quad surface has. Separating the sheets
-// there adds 2 to the sum for each of them, so in general
-//     sum_S chi(S) = 2 (b0 - b1 + b2) + 2 (pinched pointels),
-// and object_euler() below is exact for the four pairs.
-//
-// Pinched linels (kernel/surfaces/pointel_cycles.hpp) are counted too: the surface is a 2-manifold
-// there (its edges are the adjacent surfel pairs), but its quad mesh repeats an edge.
-//
-// Enclosed volume: the signed number of voxels enclosed by the oriented surface (divergence
-// theorem with the field (x, 0, 0): the sum over its x-surfels of +-x of their plane),
-// positive for a surface bounding a component from outside, negative for a cavity's.
-//
-// Algorithm: for each surfel and each of its four corners, the configuration of the 8 voxels
-// around the pointel gives (table lookup) the neighbour across the linel that enters the
-// pointel, found among the sorted codes by a binary search in its row; union-find by index
-// (a root is the smallest surfel of its surface) on contiguous chunks of surfels in parallel,
-// then the few unions that cross chunks. O(F log(row)) time, 9 bytes per surfel. Surfaces
-// are numbered in the order of their first surfel; the result does not depend on the
-// number of threads. Width: counts int64; the enclosed volume is summed in int128 and fits
-// int64 (it is at most the number of voxels).
+// Pairs (6,26), (6,18), (18,6), (26,6): boundary surfels sharing a linel are adjacent as the
+// bel-adjacency of kernel/surfaces/digital_surface.hpp pairs them (EXTERIOR for a 6-connected
+// object, INTERIOR for 18 or 26); each surfel has four neighbours, so the boundary splits into
+// closed surfaces. With one vertex per sheet at each pointel (kernel/surfaces/pointel_cycles.hpp)
+// each is a closed oriented 2-manifold: chi = V - F, genus = (2 - chi) / 2. The object:
+// sum_S chi(S) = 2 (b0 - b1 + b2) + 2 (pinched pointels), exact for the four pairs (derivation:
+// docs/NOTES.md, "kernel/surfaces/image_surfaces.hpp"). Enclosed volume: the signed number of
+// voxels enclosed (divergence theorem), negative for a cavity.
+// Algorithm: corner configurations by table lookup, union-find on parallel chunks, O(F log(row))
+// time, 9 bytes per surfel; surfaces numbered by first surfel, independent of the thread count.
+// Width: counts int64, the enclosed volume summed in int128 (it fits int64).
 #pragma once
 
 #include <zdg/kernel/images/image.hpp>

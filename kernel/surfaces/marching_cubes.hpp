@@ -1,43 +1,16 @@
 // Marching cubes on a binary volume (level 1/2) or on grey values at a level (linear
 // interpolation), topologically correct: the dual of the digital surface of an adjacency pair.
 //
-// Lorensen and Cline ("Marching cubes", SIGGRAPH 1987) cut every cube of 8 voxel centres by a
-// few triangles chosen by a table indexed by the 8 signs; their table leaves holes where two
-// cubes disagree on an ambiguous face (two diagonal corners in, two out), and it fixes one
-// choice for the ambiguous cube (two opposite corners). Topologically correct variants choose
-// by a rule: Chernyaev's MC33 (1995) by the trilinear interpolant, Lachaud ("Topologically
-// defined isosurfaces", DGCI 1996; Lachaud-Montanvert 2000) by the adjacency pair of digital
-// topology, which makes the isosurface the continuous analog of the digital boundary.
-//
-// Derivation used here (the tables are derived, not typed): the cube of marching cubes whose
-// corners are the 8 voxel centres around a pointel p is the dual cell of p; its edges are
-// dual to the 12 faces of the 2x2x2 block, and an edge crosses the isosurface exactly when
-// the face is a boundary surfel. So the vertices of the isosurface are the boundary surfels
-// (one per cut edge: the surfel centre at level 1/2 on binary input, the interpolated point
-// on grey input), and in each cube the isosurface is one polygon per cycle of surfels around
-// p (kernel/surfaces/pointel_cycles.hpp), through the surfels in cycle order, which is
-// counterclockwise seen from outside. The ambiguities are resolved by the surfel adjacency of the
-// pair: with (6,26) (the default; (6,18) gives the same surface) two object corners diagonal on a
-// face or opposite in the cube are separated, and so are two opposite background corners. The mesh
-// is the dual of the primal surface mesh (kernel/surfaces/primal_surface_mesh.hpp): a closed
-// oriented 2-manifold with one component per digital surface of image_surfaces and the same
-// Euler characteristic, surface by surface -- also at the pinched linels of the primal mesh
-// (its two passages are two distinct dual edges, a thin tube).
-//
-// Triangles: a polygon of 3 surfels is one triangle, of 4 two triangles along the shorter
-// diagonal (two surfels opposite in a 4-cycle share no linel, so a diagonal is never an edge
-// elsewhere), of 5 or more (saddles) a fan around an added centre vertex (their mean). Vertex
-// i < surfels.size() is surfel i of image_surfels (sorted code order), then the centres.
-//
-// Positions: on a cut edge from the inner voxel centre u (in X) to the outer one w, the
-// vertex is u + t (w - u), t = 1/2 on binary input; on grey input t = (level - f(u)) /
-// (f(w) - f(u)) clamped to [0, 1] (1/2 where f(u) = f(w) or w is outside the domain), where
-// the object must be the voxels on one side of the level (value >= level, or < with --invert).
-// Placement as in kernel/surfaces/image_surfels.hpp.
-//
-// Cost: O(F log(row)) for F surfels, three passes over contiguous chunks (parallel_for);
-// the mesh takes about 24 bytes per surfel for the vertices and 48 per surfel for the
-// triangles (about two per surfel). The result does not depend on the number of threads.
+// Lachaud's topologically defined isosurfaces (DGCI 1996), tables derived, not typed: the
+// vertices are the boundary surfels, one polygon per cycle of surfels around each pointel
+// (kernel/surfaces/pointel_cycles.hpp); ambiguities follow the pair (6,26) ((6,18) is the same).
+// The mesh is the dual of the primal surface mesh: a closed oriented 2-manifold, one component
+// per digital surface, same Euler characteristic. Triangles: 4-cycles split on the shorter
+// diagonal, longer cycles fanned around their mean; vertex i < surfels.size() is surfel i, then
+// the centres. Grey positions interpolate linearly, clamped to [0, 1] (derivation and
+// placement: docs/NOTES.md, "kernel/surfaces/marching_cubes.hpp").
+// Cost: O(F log(row)) for F surfels, parallel, independent of the thread count; about 72 bytes
+// per surfel.
 #pragma once
 
 #include <zdg/kernel/images/image.hpp>

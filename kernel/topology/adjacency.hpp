@@ -1,22 +1,10 @@
 // Adjacencies and adjacency pairs of digital topology in Z^2 and Z^3.
 //
-// Two distinct points p, q of Z^d are k-adjacent when |p - q|_inf = 1 and |p - q|_1 <= m(k):
-//   2D: k = 4 (m = 1, edge neighbours), k = 8 (m = 2, all eight);
-//   3D: k = 6 (m = 1, face neighbours), k = 18 (m = 2, face and edge), k = 26 (m = 3, all).
-// A k-path is a sequence of points, each k-adjacent to the next; a k-component of a set is a
-// maximal k-path-connected subset.
-//
-// An adjacency pair (k, kbar) gives the object of a binary image (the points of nonzero value)
-// the k-adjacency and the background (the points of value 0, and every point outside the
-// image's domain) the kbar-adjacency. zdg accepts the pairs for which the object has a
-// polyhedral "continuous analog" whose complement is an analog of the background, so that
-// the Jordan theorem, Euler characteristic, Betti numbers and simple points behave as in R^d
-// (Kong and Rosenfeld, "Digital topology: introduction and survey", CVGIP 48, 1989, sec. 5;
-// Kong and Roscoe, "Continuous analogs of axiomatized digital surfaces", CVGIP 29, 1985):
-//   2D: (8,4), (4,8);   3D: (26,6), (6,26), (18,6), (6,18).
-// kernel/topology/betti_numbers.hpp says which cell complex stands for the object under each pair.
-//
-// Everything here is O(1) (neighbour_offsets: O(3^d)); no integer width concerns.
+// p, q are k-adjacent when |p - q|_inf = 1 and |p - q|_1 <= m(k). A pair (k, kbar) gives the
+// object (nonzero points) k and the background (zeros, and outside the domain) kbar; the
+// admissible pairs (8,4), (4,8), (26,6), (6,26), (18,6), (6,18) have a polyhedral continuous
+// analog (Kong and Rosenfeld, CVGIP 48, 1989, sec. 5; kernel/topology/betti_numbers.hpp).
+// All O(1) (neighbour_offsets: O(3^d)); no integer width concerns.
 #pragma once
 
 #include <array>

@@ -2,29 +2,14 @@
 // (kernel/topology/adjacency.hpp): labels, sizes, ranking by size, and counts of the components
 // that do not touch the border of the domain (the bounded components, for the background).
 //
-// The object is the set of points with a nonzero value (Phase::object) or of value 0
-// (Phase::background). A component is a maximal k-connected subset. It touches the border
-// when one of its points lies on the boundary of the domain box (in 2D along the two axes,
-// in 3D along the three). Points outside the domain count as background and the outside of a
-// box is connected under every adjacency, so for Phase::background the components that touch
-// the border are the ones connected to infinity, and the others are exactly the bounded
-// background components (the cavities in 3D, the holes in 2D).
-//
-// Algorithm: union-find over runs (maximal segments of the object along the last, contiguous
-// axis; Rosenfeld and Pfaltz 1966 in its run form, e.g. Wu, Otoo and Suzuki, "Optimizing
-// two-pass connected-component labeling algorithms", PAA 12, 2009). A run meets the runs of
-// its preceding neighbour rows: with d the l1 norm of the row offset and m = m(k), runs
-// [a, b) and [c, e) are adjacent when they overlap, or when they overlap after widening by
-// one point on each side if d < m. Union by smaller index with path halving, so every parent
-// precedes its child and one sequential pass flattens the forest. Multi-threaded: runs are
-// found per row in parallel, rows are split into contiguous chunks united in parallel, the
-// few rows at chunk seams are united afterwards, and labels are written in parallel.
-// Cost O(N) time for scanning plus O(R alpha(R)) for R runs; memory O(R) plus the labels.
-// The result does not depend on the number of threads.
-//
-// Width: labels are uint32 (OverflowError past 2^32 - 1 components, which needs more than
-// 2^32 points); sizes and counts are int64 (they are at most the number of points, which
-// Domain keeps inside int64).
+// Phase::object: the nonzero points; Phase::background: the zeros, with the outside of the box,
+// connected under every adjacency, so the background components that do not touch the border
+// are exactly the bounded ones (cavities in 3D, holes in 2D). Algorithm: union-find over runs
+// along the last axis (Rosenfeld and Pfaltz 1966 in run form; Wu, Otoo, Suzuki, PAA 12, 2009),
+// parallel by rows and chunks: O(N) scan plus O(R alpha(R)) for R runs, memory O(R) plus the
+// labels, independent of the thread count (details: docs/NOTES.md,
+// "kernel/topology/connected_components.hpp"). Width: labels uint32 (OverflowError past 2^32 - 1
+// components), sizes and counts int64.
 #pragma once
 
 #include <zdg/kernel/images/image.hpp>

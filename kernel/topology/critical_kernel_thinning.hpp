@@ -4,17 +4,10 @@
 // 3D thinning schemes based on critical kernels", JMIV 48, 2014): symmetric, independent of
 // any scan order, multi-threaded.
 //
-// Cubical view: the object X is the union of the closed unit cubes (squares in 2D) of its
-// points, i.e. the pair (26,6) ((8,4) in 2D; other pairs are refused). A face f of the cubical
-// grid is essential for X when it is the intersection of the cubes of X containing it; its
-// clique C_f is the set of those points. The core of f is the union of the closures of the
-// essential faces strictly inside f; f is regular when its core is contractible and critical
-// otherwise. In the 3x3x3 neighbourhood: a point (3-face) is critical iff it is not simple; an
-// essential vertex is always critical (empty core); an essential edge is critical unless
-// exactly one of its two vertices is essential; an essential square (two points of X sharing a
-// face) is critical unless its core - a part of the square's boundary circle - is one arc.
-// Theorem (Bertrand 2007): if Y is a subset of X meeting every critical clique, X collapses
-// onto Y, so Y has the topology of X.
+// Cubical view, pairs (26,6) and (8,4) only: a point is critical iff it is not simple; the
+// critical cliques of dimensions 2, 1, 0 are those of Bertrand 2007 (definitions in
+// docs/NOTES.md, "kernel/topology/critical_kernel_thinning.hpp"). Theorem (Bertrand 2007):
+// if Y is a subset of X meeting every critical clique, X collapses onto Y.
 //
 // One pass: K_3 = the anchors and the points that are not simple (or meet the skeleton
 // condition of kernel/topology/skeleton_constraints.hpp, and then stay anchored); for d = 2, 1, 0

@@ -1,19 +1,11 @@
-// Distance transform of a binary image in the l_p metrics, exact.
-//
-// For every point x of the domain, DT(x) = min { d_p(x, y)^p : y background } for finite p
-// (so the squared Euclidean distance for l_2) and min { d_inf(x, y) } for l_inf, where the
-// background is the set of points of value 0 and d is periodic along the torus axes
-// (DESIGN.md, "Distance transform"). Background points get 0.
-//
-// Algorithm: separable lower envelopes, one pass per axis (kernel/transforms/separable_engine.hpp;
-// Hirata 1996, Meijster et al. 2000, Maurer et al. 2003), O(N d) for l_1, l_2, l_inf and
-// O(N d log n) for other p; multi-threaded, the result does not depend on the thread count.
-//
-// Width: the largest value is distance_transform_max_value() = sum_k m_k^p (max_k m_k for
-// l_inf) with m_k = n_k - 1, or floor(n_k / 2) on a torus axis. distance_transform<T> checks at
-// entry that it fits T (OverflowError otherwise: use a wider T, BigInt always fits); the
-// computation itself runs on the narrowest of int32 / int64 / __int128 / GMP that its
-// intermediates need. An image without background is an InvalidArgument.
+// Distance transform of a binary image in the l_p metrics, exact: DT(x) = min d_p(x, y)^p over
+// the background points y (value 0; d_inf for l_inf; periodic on the torus axes, see
+// (ARCHITECTURE.md, Conventions)), 0 on the background. Separable lower envelopes
+// (kernel/transforms/separable_engine.hpp; Hirata 1996, Meijster et al. 2000, Maurer et al.
+// 2003): O(N d) for l_1, l_2, l_inf, O(N d log n) otherwise; the thread count does not change
+// the result. Width: the largest value sum_k m_k^p (m_k = n_k - 1, floor(n_k / 2) on a torus
+// axis) must fit T (OverflowError; BigInt always fits); the engine runs on the narrowest of
+// int32 / int64 / __int128 / GMP. No background: InvalidArgument.
 #pragma once
 
 #include <zdg/arith/integer.hpp>
@@ -33,15 +25,11 @@ BigInt distance_transform_max_value(const Domain& domain, const TransformOptions
 template <class T>
 Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOptions& opt = {});
 
-/// The same on buffers: the mask is dom.size() items of mask_item_bytes bytes (1, 2, 4 or 8, C
-/// order; an item is background when all its bytes are 0), read where it lies (e.g. a mapped
-/// .npy file, kernel/io/mapped_file.hpp), and the values go to out[0 .. dom.size()) (e.g. a mapped
-/// output file). T: std::uint8_t, std::uint16_t, std::uint32_t, std::uint64_t or std::int64_t.
-/// Memory beyond the two buffers: the per-thread line buffers of the engine, plus one temporary
-/// of the engine's width when it differs from T's (none when they agree: the engine works in
-/// the output). The checks and errors of distance_transform. progress (optional) is called
-/// after each of the d passes with (passes done, d), from the calling thread, e.g. to show a
-/// long transform's progress on a terminal (`zdg transform dt`).
+/// The same on buffers: the mask is dom.size() items of mask_item_bytes (1, 2, 4 or 8) bytes, C
+/// order, background when all bytes are 0, read in place (e.g. a mapped .npy); the values go to
+/// out[0 .. dom.size()). T: std::uint8_t .. std::uint64_t or std::int64_t. Extra memory: the
+/// engine's line buffers, and a temporary when its width differs from T's. Errors as above.
+/// progress (optional): called after each of the d passes with (passes done, d), same thread.
 template <class T>
 void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,
                              const TransformOptions& opt, T* out,

@@ -2,32 +2,16 @@
 // an MPI job, or any other team that can exchange bytes): slabs of slices in, blocks of
 // columns out, one all-to-all transpose between.
 //
-// The separable transform (kernel/transforms/separable_engine.hpp) makes one pass per axis; all but
-// the pass along axis 0 (the slowest) work on lines inside one slice of axis 0. Rank r holds the
-// slices [z_r, z_{r+1}) of the mask (a balanced split of n_0: the first n_0 mod P ranks have
-// one slice more; ranks past n_0 have none) and runs the mask pass and the passes along axes
-// d-1 .. 1 on them, locally. The columns of a slice (its n_1 ... n_{d-1} points in C order)
-// are split the same way, [c_r, c_{r+1}); rank r sends to rank q the part [c_q, c_{q+1}) of
-// each of its slices and receives from every rank its slices of the columns [c_r, c_{r+1}):
-// an n_0 x w_r array whose axis 0 is the volume's (the data from rank s lands in rows
-// [z_s, z_{s+1}), already in place). The pass along axis 0 then runs locally on these whole
-// columns. This is the slab-to-pencil transpose of distributed FFTs, applied to the separable
-// lower envelopes of Meijster, Roerdink and Hesselink (2000); the out-of-core transform
-// (kernel/transforms/out_of_core_transform.hpp) does the same with a file as the transpose. Each
-// line sees the operations of the in-memory engine in the same order: the values, and the
-// sites of the Voronoi map (ties to the smaller position on the line), are the same to the
-// bit (tests/kernel/transforms/distributed_transform_test.cpp, for every metric, torus axes, lower
-// bounds, mask item widths and P from 1 to 5 with empty slabs).
-//
-// Communication: each rank sends (P-1)/P of its slab's values (N/P x sizeof(V) bytes, V the
-// engine's int32 or int64) and receives as much: N x sizeof(V) x (P-1)/P bytes in all, in P-1
-// rounds of pairwise exchanges (round k: send to r+k, receive from r-k, mod P), 2 x sizeof(int64)
-// more per point for a Voronoi map. Memory per rank: the slab's values and the block's (2 x
-// N/P x sizeof(V)), one round's send buffer (N/P^2 x sizeof(V)), the output block.
-// Time: the in-memory engine's O(N d / P) per rank (l_1, l_2, l_inf; O(N d log n / P) for other
-// l_p), plus the exchange. Width: as the out-of-core transform, the 32- and 64-bit engines only
-// (values up to 2^63: every l_1, l_2, l_inf volume below 2^20 per side, l_p for small p),
-// InvalidArgument beyond; d >= 2.
+// Rank r holds a balanced share of the slices, runs the passes along axes d-1 .. 1 on them, then
+// one all-to-all transpose (slab to pencil, in P-1 pairwise rounds) gives it a share of the
+// columns, where the pass along axis 0 runs (Meijster, Roerdink and Hesselink 2000). The values
+// and the Voronoi sites (ties to the smaller position) equal the in-memory engine's to the bit.
+// Communication: N x sizeof(V) x (P-1)/P bytes in all (V the engine's int32 or int64), 16 bytes
+// more per point for a Voronoi map; memory per rank about 2 N/P x sizeof(V) plus N/P^2 x
+// sizeof(V) and the output. Time: O(N d / P) per rank (l_1, l_2, l_inf; O(N d log n / P)
+// otherwise) plus the exchange. Width: the 32- and 64-bit engines only (values up to 2^63),
+// InvalidArgument beyond; d >= 2 (design: docs/NOTES.md,
+// "kernel/transforms/distributed_transform.hpp").
 #pragma once
 
 #include <zdg/kernel/images/image.hpp>

@@ -9,7 +9,7 @@
 // L^p < 2^kMaxMetricBits (2^4096), L the longest line of the domain (3 n on a torus axis):
 // p <= 4096 / log2(L), for instance p <= 410 on a 1000-wide image. The values are exact
 // integers of about p log2(L) bits, so a larger p would cost time and memory in proportion to
-// p (l_1000000 on a 4x4 image once took 100 s and 1.6 GB); within these limits every
+// p (an unbounded p once cost minutes: bench/README.md); within these limits every
 // integer has at most 4096 bits and the cost of a transform is at most a constant factor
 // (about 64 machine words an operation) above the int64 one, whatever p. For p near the
 // limits, l_inf is the limit of l_p and costs O(N d).

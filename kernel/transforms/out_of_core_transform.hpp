@@ -1,29 +1,15 @@
 // The exact distance transform of volumes larger than the memory: slabs of slices, then
 // blocks of columns, between a mask read in place (a mapped file) and an output file.
 //
-// The separable transform (kernel/transforms/distance_transform.hpp) makes one pass per axis; all
-// but the pass along axis 0 (the slowest) work on lines inside one slice of axis 0. So: (1) the
-// slabs of whole slices, one after the other: read from the mask, transformed along axes d-1 .. 1
-// in a buffer, written to the values' file; (2) the columns of a slice, in blocks: the block's part
-// of every slice read into a buffer (n_0 rows of b values), transformed along axis 0 (its lines
-// cross every slab), written to the output. The mask's pages are released after each slab
-// (madvise MADV_DONTNEED on its clean mapped pages), so the resident set stays within the memory
-// budget whatever the volume's size. The output is written with pwrite, each value twice at
-// most (a shared mapping would be written back at each modification of a page). Each line sees
-// the operations of the in-memory engine in the same order: the values are the same to the bit
-// (tests/kernel/transforms/out_of_core_transform_test.cpp), for every metric and torus axis.
-//
-// Memory: a slab holds s slices of the mask and of the values (s x slice x (item + sizeof V)
-// bytes), a block b columns of every slice (n_0 x b x sizeof V bytes, and as many values of T
-// when T is narrower than V); both are sized to the budget (at least one slice, one column),
-// and the slab is freed before the first block. The values between the two phases are
-// of the engine's width V (int32 or int64, the narrowest that holds the intermediates): in the
-// output file itself when T has that width, else in a scratch file of N x sizeof(V) bytes next
-// to the output (removed at once: it lives as long as the run). Time: the in-memory engine's
-// O(N d) (l_1, l_2, l_inf), plus reading the mask once and writing and reading the values once
-// more. Width: as distance_transform; the out-of-core path takes the 64-bit engines only
-// (values up to 2^63: every l_1, l_2, l_inf volume below 2^20 per side, l_p for small p),
-// InvalidArgument beyond, and d >= 2.
+// Phase 1: slabs of whole slices, transformed along axes d-1 .. 1, the mask's pages released
+// after each slab (madvise) so the resident set stays within the budget; phase 2: blocks of
+// columns transformed along axis 0, written with pwrite. The values equal the in-memory
+// engine's to the bit, for every metric and torus axis. Memory: slab and block sized to the
+// budget (at least one slice, one column); a scratch file of N x sizeof(V) bytes when T is
+// narrower than the engine's V. Time: O(N d) (l_1, l_2, l_inf), plus one more write and read of
+// the values. Width: the 64-bit engines only (values up to 2^63: every l_1, l_2, l_inf volume
+// below 2^20 per side), InvalidArgument beyond, and d >= 2 (design: docs/NOTES.md,
+// "kernel/transforms/out_of_core_transform.hpp").
 #pragma once
 
 #include <zdg/kernel/images/image.hpp>

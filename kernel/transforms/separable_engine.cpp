@@ -1097,7 +1097,7 @@ bool envelope_simd_available() {
 
 unsigned resolve_threads(unsigned requested, std::int64_t n) {
   // Below 2^15 points a thread costs more than it saves.
-  return n < (std::int64_t{1} << 15) ? 1u : worker_count(requested, n);
+  return worker_count(requested, n, std::int64_t{1} << 15);
 }
 
 EnvelopeBounds envelope_bounds(const Domain& dom, const TransformOptions& opt,

@@ -20,14 +20,9 @@
 // Cost: O(N d) per transform for l_1, l_2, l_inf and O(N d log n) for other p, N points.
 // Lines of non-contiguous axes are processed in blocks of adjacent lines (gathered into a
 // small buffer) so that every cache line read is used; passes split their lines over threads.
-// On CPUs with AVX-512F the int32 engine without sites runs vectorized (separable_engine.cpp):
-// the mask pass in one sweep per line from the sites' bits, 16 points per step (fused with the
-// next axis slice by slice), and the envelopes of the other axes 16 lines per vector (64 at
-// once), local peaks left out; every metric, the same integers, so the same values. The
-// portable envelopes leave local peaks out too when only values are asked (distance
-// transforms, reverse DT: the int64 and wider engines, and every engine without AVX-512F);
-// with sites (Voronoi and power maps) they keep every point but the runs of zeros, so that
-// ties keep their sites.
+// With AVX-512F the int32 engine without sites runs vectorized (separable_engine.cpp), the same
+// integers; portable envelopes skip local peaks when only values are asked (details:
+// docs/NOTES.md, "kernel/transforms/separable_engine.hpp").
 //
 // Width: every value and intermediate is bounded at entry by
 //     need = 2 (sum_k m_k^p + w_max + L^p) + 2 L

@@ -31,8 +31,8 @@ int ones(const std::string& w, std::size_t from, std::size_t len) {
                                      w.begin() + static_cast<std::ptrdiff_t>(from + len), '1'));
 }
 
-// Convention (DESIGN.md): q letters 0, p letters 1, and the prefix of length k has
-// floor(k p / (p + q)) letters 1; the letter accessor and prefix count agree with the word.
+// Convention (ARCHITECTURE.md, Conventions): q letters 0, p letters 1, and the prefix of length k
+// has floor(k p / (p + q)) letters 1; the letter accessor and prefix count agree with the word.
 TYPED_TEST(Christoffel, PrefixCountConvention) {
   using I = TypeParam;
   check_property([] {

@@ -360,7 +360,7 @@ std::vector<BadInput> bad_inputs() {
        "topology thin {dir}/in.npy -o {dir}/out.npy --threshold 2",
        {{"in.npy", small_npy()}},
        {},
-       "empty selection"},
+       "selects no voxel"},
       {"topology: a pair of another dimension",
        "topology betti {dir}/in.npy --adjacency 26,6",
        {{"in.npy", small_npy()}},

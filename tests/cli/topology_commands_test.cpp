@@ -133,8 +133,8 @@ TEST(TopologyCommands, BadInputRows) {
     std::string args, message;
   };
   const Row rows[] = {
-      {"betti " + f("empty.npy"), "empty selection"},
-      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --threshold 2", "empty selection"},
+      {"betti " + f("empty.npy"), "selects no voxel"},
+      {"thin " + f("in.npy") + " -o " + f("o.npy") + " --threshold 2", "selects no voxel"},
       {"betti " + f("in.npy") + " --adjacency 26,26", "not admissible"},
       {"betti " + f("in.npy") + " --adjacency 8,4", "not admissible"},
       {"components " + f("in.npy") + " --adjacency 6-26", "is not K,KBAR"},
@@ -154,7 +154,7 @@ TEST(TopologyCommands, BadInputRows) {
       {"thin " + f("in.npy") + " -o " + f("existing.npy"), "exists"},
       {"components " + f("in.npy") + " -o " + f("in.npy") + " --force", "input file"},
       {"betti " + f("missing.npy"), "no such file"},
-      {"betti " + f("line.npy"), "1-D image"},
+      {"betti " + f("line.npy"), "1-D array is not a volume"},
       {"betti " + f("in.npy") + " -o " + f("o.npy"), "writes no file"},
   };
   for (const auto& row : rows) {

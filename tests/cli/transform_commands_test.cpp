@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <tuple>
+
 namespace zdg {
 namespace {
 
@@ -49,6 +51,24 @@ TEST(TransformCommands, DtWritesTheDistanceTransform) {
     EXPECT_EQ(npy_to_int64(read_npy(f.path("out.npy"))).values(), dt.values());
     std::int64_t mx = *std::max_element(dt.values().begin(), dt.values().end());
     EXPECT_EQ(j["max_value"], std::to_string(mx));
+  }
+}
+
+// The JSON reports the workers the transform used (one threads rule, worker_count): one below
+// 2^15 points whatever --threads asks, the request above it.
+TEST(TransformCommands, ThreadsReportedAreThoseUsed) {
+  Files f;
+  write_npy(f.path("small.npy"), make_npy<std::uint8_t>({4, 5}, small_shape().values()));
+  std::vector<std::uint8_t> big(256 * 256, 1);
+  big[0] = 0;
+  write_npy(f.path("big.npy"), make_npy<std::uint8_t>({256, 256}, big));
+  for (const auto& [input, threads, used] :
+       {std::tuple{"small.npy", "2", 1}, std::tuple{"big.npy", "2", 2},
+        std::tuple{"big.npy", "1", 1}}) {
+    auto r = test::run_zdg("transform dt " + f(input) + " -o " + f("out.npy") +
+                           " --force --threads " + threads + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["threads"], used) << input << " --threads " << threads;
   }
 }
 

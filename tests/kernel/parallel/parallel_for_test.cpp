@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -21,6 +23,22 @@ RC_GTEST_PROP(ParallelFor, VisitsEveryIndexOnce, ()) {
   std::vector<std::atomic<int>> seen(static_cast<std::size_t>(n));
   parallel_for(n, threads, [&](std::int64_t i) { seen[static_cast<std::size_t>(i)]++; });
   for (const auto& s : seen) RC_ASSERT(s.load() == 1);
+}
+
+// The one threads rule: 0 is every core, a request is clamped to the items, and work below
+// serial_below runs on one worker.
+RC_GTEST_PROP(WorkerCount, OneRuleForEveryThreadsParameter, ()) {
+  const auto items = *rc::gen::inRange<std::int64_t>(-2, 100000);
+  const auto threads = *rc::gen::inRange<unsigned>(0, 65);
+  const auto serial_below = *rc::gen::inRange<std::int64_t>(0, 70000);
+  const unsigned all = std::max(1u, std::thread::hardware_concurrency());
+  const unsigned w = zdg::worker_count(threads, items, serial_below);
+  if (items < 1 || items < serial_below) {
+    RC_ASSERT(w == 1u);
+  } else {
+    RC_ASSERT(w ==
+              static_cast<unsigned>(std::min<std::int64_t>(threads == 0 ? all : threads, items)));
+  }
 }
 
 // The chunks are contiguous, disjoint, in order and cover [0, n).
