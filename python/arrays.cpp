@@ -675,7 +675,8 @@ void bind_arrays(py::module_& m) {
   m.def("write_volume", &write_volume_py, py::arg("path"), py::arg("array"), py::kw_only(),
         py::arg("force") = false,
         "Writes a numpy array as a volume in the format of the file name (.vol, .nii, .nii.gz, "
-        ".npy, .pgm; path: str, bytes or os.PathLike), atomically; an existing file is refused unless force=True.");
+        ".npy, .pgm; path: str, bytes or os.PathLike), atomically; an existing file is refused "
+        "unless force=True.");
 }
 
 } // namespace zdg::python

@@ -315,8 +315,8 @@ void OutputSet::commit() {
         if (it->placed) ::unlink(out.c_str());
       } else if (it->placed || it->moved_aside) {
         if (::rename(it->backup.c_str(), out.c_str()) != 0)
-          lost += "; the old " + out.string() + " could not be put back (" +
-                  std::strerror(errno) + "): it is " + it->backup.string();
+          lost += "; the old " + out.string() + " could not be put back (" + std::strerror(errno) +
+                  "): it is " + it->backup.string();
       } else {
         ::unlink(it->backup.c_str());
       }

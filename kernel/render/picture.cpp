@@ -167,8 +167,7 @@ void png_flush_file(png_structp png) {
 
 // libpng reports errors by longjmp: this function holds nothing with a destructor and
 // modifies nothing after setjmp. False when libpng failed.
-bool png_write_rows(png_structp png, png_infop info, PngSink* sink, png_bytep* rows, int w,
-                    int h) {
+bool png_write_rows(png_structp png, png_infop info, PngSink* sink, png_bytep* rows, int w, int h) {
   if (setjmp(png_jmpbuf(png)) != 0) return false;
   png_set_write_fn(png, sink, png_write_to_file, png_flush_file);
   png_set_compression_level(png, 6);

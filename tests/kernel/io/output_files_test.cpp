@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -403,8 +404,7 @@ TEST(OutputFiles, MessagesNameTheOutputNotTheStagingFile) {
   // A staging file of a staging file (a writer that stages again), and the bare file name.
   OutputSet inner(Existing::replace);
   const fs::path staging2 = inner.add(staging);
-  EXPECT_EQ(zdg::name_outputs(staging2.string() + ": write failed; " +
-                              staging.filename().string()),
+  EXPECT_EQ(zdg::name_outputs(staging2.string() + ": write failed; " + staging.filename().string()),
             final_path.string() + ": write failed; m.ply");
   EXPECT_EQ(zdg::name_outputs("nothing to rename in /x/.y.zdg-tmp-1-1"),
             "nothing to rename in /x/.y.zdg-tmp-1-1");
