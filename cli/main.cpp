@@ -11,6 +11,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/arith/integer.hpp>
 #include <zdg/cli/commands.hpp>
+#include <zdg/kernel/io/output_files.hpp>
 
 #include <fmt/core.h>
 
@@ -45,9 +46,10 @@ std::string one_line(std::string s) {
   return s;
 }
 
+// A writer handed a staging file names it in its message: the line names the user's output.
 int fail(const std::string& what, int status = 2) {
   std::fflush(stdout);
-  fmt::print(stderr, "zdg: {}\n", one_line(what));
+  fmt::print(stderr, "zdg: {}\n", one_line(zdg::name_outputs(what)));
   return status;
 }
 

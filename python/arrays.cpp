@@ -529,7 +529,8 @@ constexpr DTypeName kDTypes[] = {
     {DType::U64, "uint64"}, {DType::I8, "int8"},     {DType::I16, "int16"},  {DType::I32, "int32"},
     {DType::I64, "int64"},  {DType::F32, "float32"}, {DType::F64, "float64"}};
 
-py::object read_volume_py(const std::string& path, bool metadata) {
+py::object read_volume_py(const py::object& path_arg, bool metadata) {
+  const std::string path = path_argument(path_arg, "read_volume");
   ScalarVolume v = [&] {
     py::gil_scoped_release release;
     return read_volume(path);
@@ -557,7 +558,8 @@ py::object read_volume_py(const std::string& path, bool metadata) {
   return py::make_tuple(a, m);
 }
 
-void write_volume_py(const std::string& path, const py::object& obj, bool force) {
+void write_volume_py(const py::object& path_arg, const py::object& obj, bool force) {
+  const std::string path = path_argument(path_arg, "write_volume");
   py::array a = py::array::ensure(obj);
   if (!a) throw py::type_error("write_volume: expected a numpy array");
   py::module_ np = py::module_::import("numpy");
@@ -666,13 +668,15 @@ void bind_arrays(py::module_& m) {
         "mesh only: face f is surfel f) adds the integral-invariant estimates per face at grid "
         "step h and radius R, as ii_curvature returns them.");
   m.def("read_volume", &read_volume_py, py::arg("path"), py::kw_only(), py::arg("metadata") = false,
-        "Reads a volume (.vol v2/v3, .nii, .nii.gz, .npy, .pgm) into a numpy array of its "
+        "Reads a volume (.vol v2/v3, .nii, .nii.gz, .npy, .pgm; path: str, bytes or "
+        "os.PathLike) into a numpy array of its "
         "stored value type (no copy after the read); metadata=True also returns {'lower', "
         "'spacing', 'origin', 'slope', 'inter', 'format'}.");
   m.def("write_volume", &write_volume_py, py::arg("path"), py::arg("array"), py::kw_only(),
         py::arg("force") = false,
         "Writes a numpy array as a volume in the format of the file name (.vol, .nii, .nii.gz, "
-        ".npy, .pgm), atomically; an existing file is refused unless force=True.");
+        ".npy, .pgm; path: str, bytes or os.PathLike), atomically; an existing file is refused "
+        "unless force=True.");
 }
 
 } // namespace zdg::python

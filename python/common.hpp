@@ -2,6 +2,7 @@
 // (exact, any size, through base 16, which Python's int/str digit limit does not cover), and
 // numpy arrays that own a C++ buffer (a capsule frees it: no copy on the way out).
 #pragma once
+#include <zdg/arith/error.hpp>
 #include <zdg/arith/integer.hpp>
 
 #include <pybind11/numpy.h>
@@ -43,6 +44,20 @@ inline BigInt py_to_bigint(py::handle h, const char* what) {
   BigInt r;
   mpz_set_str(r.backend().data(), digits.c_str(), 16);
   return negative ? BigInt(-r) : r;
+}
+
+/// A file path argument (str, bytes or os.PathLike) as the file system's bytes (os.fsencode:
+/// names that are not UTF-8 round-trip). Every function of the module that takes a path reads
+/// it here. A NUL byte, which the system would take as the end of the name (opening another
+/// file), is refused: InvalidArgument (ValueError) naming `what`. TypeError for other types.
+inline std::string path_argument(const py::handle& path, const char* what) {
+  const py::bytes encoded = py::module_::import("os").attr("fsencode")(path);
+  std::string bytes = encoded;
+  if (bytes.find('\0') != std::string::npos) {
+    throw InvalidArgument(std::string(what) + ": the path " + std::string(py::repr(path)) +
+                          " holds a NUL byte");
+  }
+  return bytes;
 }
 
 /// A BigInt as a Python int (exact).

@@ -20,6 +20,7 @@
 #include <zdg/kernel/hulls/convex_body_hull.hpp>
 #include <zdg/kernel/hulls/lattice_hull_2d.hpp>
 #include <zdg/kernel/hulls/lattice_hull_3d.hpp>
+#include <zdg/kernel/io/output_files.hpp>
 #include <zdg/kernel/surfaces/digital_plane_recognition.hpp>
 #include <zdg/kernel/surfaces/plane_probing.hpp>
 #include <zdg/operations/arith_operations.hpp>
@@ -439,7 +440,8 @@ PYBIND11_MODULE(_zdg, m) {
     } catch (const zdg::InvalidArgument& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const zdg::IoError& e) {
-      PyErr_SetString(PyExc_OSError, e.what());
+      // A writer handed a staging file names it: the message names the user's file.
+      PyErr_SetString(PyExc_OSError, zdg::name_outputs(e.what()).c_str());
     } catch (const zdg::OverflowError& e) {
       PyErr_SetString(PyExc_OverflowError, e.what());
     } catch (const zdg::Error& e) {

@@ -132,11 +132,44 @@ constexpr Rgb kCoolwarm[17] = {{59, 76, 192},   {78, 104, 216},  {98, 130, 234},
                                {244, 152, 122}, {235, 125, 98},  {221, 95, 75},   {202, 59, 55},
                                {180, 4, 38}};
 
+// Where libpng's output and messages go: the file, and the first error (libpng's default
+// handlers print "libpng error: ..." on stderr, a second line beside zdg's own).
+struct PngSink {
+  std::FILE* file = nullptr;
+  int write_errno = 0; // the errno of a failed write or flush; 0 if none
+  char error[200] = {};
+};
+
+[[noreturn]] void png_on_error(png_structp png, png_const_charp message) {
+  auto* sink = static_cast<PngSink*>(png_get_error_ptr(png));
+  std::snprintf(sink->error, sizeof sink->error, "%s", message != nullptr ? message : "error");
+  png_longjmp(png, 1);
+}
+
+// Warnings are about chunks zdg does not write; they do not make the file wrong.
+void png_on_warning(png_structp, png_const_charp) {}
+
+void png_write_to_file(png_structp png, png_bytep data, std::size_t n) {
+  auto* sink = static_cast<PngSink*>(png_get_io_ptr(png));
+  if (n != 0 && std::fwrite(data, 1, n, sink->file) != n) {
+    sink->write_errno = errno != 0 ? errno : EIO;
+    png_error(png, "write error");
+  }
+}
+
+void png_flush_file(png_structp png) {
+  auto* sink = static_cast<PngSink*>(png_get_io_ptr(png));
+  if (std::fflush(sink->file) != 0) {
+    sink->write_errno = errno != 0 ? errno : EIO;
+    png_error(png, "write error");
+  }
+}
+
 // libpng reports errors by longjmp: this function holds nothing with a destructor and
 // modifies nothing after setjmp. False when libpng failed.
-bool png_write_rows(png_structp png, png_infop info, std::FILE* f, png_bytep* rows, int w, int h) {
+bool png_write_rows(png_structp png, png_infop info, PngSink* sink, png_bytep* rows, int w, int h) {
   if (setjmp(png_jmpbuf(png)) != 0) return false;
-  png_init_io(png, f);
+  png_set_write_fn(png, sink, png_write_to_file, png_flush_file);
   png_set_compression_level(png, 6);
   png_set_IHDR(png, info, static_cast<png_uint_32>(w), static_cast<png_uint_32>(h), 8,
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
@@ -195,23 +228,32 @@ void write_png(const std::string& path, const RgbImage& image) {
     throw InvalidArgument(path + ": malformed picture");
   OutputSet out(Existing::replace);
   const auto staging = out.add(path);
-  std::FILE* f = std::fopen(staging.c_str(), "wb");
-  if (f == nullptr) throw IoError(path + ": cannot write (" + std::strerror(errno) + ")");
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  PngSink sink;
+  sink.file = std::fopen(staging.c_str(), "wb");
+  if (sink.file == nullptr) throw IoError(path + ": cannot write (" + std::strerror(errno) + ")");
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, png_on_error, png_on_warning);
   png_infop info = png == nullptr ? nullptr : png_create_info_struct(png);
   if (png == nullptr || info == nullptr) {
     png_destroy_write_struct(&png, nullptr);
-    std::fclose(f);
+    std::fclose(sink.file);
     throw IoError(path + ": libpng: cannot start");
   }
   std::vector<png_bytep> rows(static_cast<std::size_t>(image.height));
   for (int y = 0; y < image.height; ++y)
     rows[static_cast<std::size_t>(y)] =
         const_cast<png_bytep>(image.rgb.data()) + static_cast<std::size_t>(y) * image.width * 3;
-  const bool failed = !png_write_rows(png, info, f, rows.data(), image.width, image.height);
+  const bool failed = !png_write_rows(png, info, &sink, rows.data(), image.width, image.height);
   png_destroy_write_struct(&png, &info);
-  const bool bad = std::fflush(f) != 0 || std::ferror(f) != 0;
-  if (std::fclose(f) != 0 || bad || failed) throw IoError(path + ": PNG write failed");
+  int err = sink.write_errno;
+  if ((std::fflush(sink.file) != 0 || std::ferror(sink.file) != 0) && err == 0)
+    err = errno != 0 ? errno : EIO;
+  if (std::fclose(sink.file) != 0 && err == 0) err = errno != 0 ? errno : EIO;
+  if (failed || err != 0) {
+    // One message: the system's reason for a failed write, else libpng's own.
+    const std::string why = err != 0 ? std::strerror(err) : std::string("libpng: ") + sink.error;
+    throw IoError(path + ": PNG write failed (" + why + ")");
+  }
   out.commit();
 }
 

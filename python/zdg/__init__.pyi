@@ -1,9 +1,12 @@
 # Type stubs of the zdg package (the extension zdg._zdg and zdg.plot).
 from typing import Any, Literal, Optional, Sequence, TypedDict, Union, overload
 
+import os
+
 import numpy as np
 import numpy.typing as npt
 
+StrOrBytesPath = Union[str, bytes, os.PathLike[str], os.PathLike[bytes]]
 IntegerType = Literal["int64", "int128", "bigint"]
 
 class ContinuedFraction(TypedDict):
@@ -145,10 +148,10 @@ def surfels(volume: npt.ArrayLike, *, threads: int = 0) -> dict[str, np.ndarray]
 def ii_curvature(volume: npt.ArrayLike, *, h: float, radius: float, principal: bool = False,
                  threads: int = 0) -> dict[str, np.ndarray]: ...
 @overload
-def read_volume(path: str, *, metadata: Literal[False] = ...) -> np.ndarray: ...
+def read_volume(path: StrOrBytesPath, *, metadata: Literal[False] = ...) -> np.ndarray: ...
 @overload
-def read_volume(path: str, *, metadata: Literal[True]) -> tuple[np.ndarray, dict[str, Any]]: ...
-def write_volume(path: str, array: npt.ArrayLike, *, force: bool = False) -> None: ...
+def read_volume(path: StrOrBytesPath, *, metadata: Literal[True]) -> tuple[np.ndarray, dict[str, Any]]: ...
+def write_volume(path: StrOrBytesPath, array: npt.ArrayLike, *, force: bool = False) -> None: ...
 def converge(shapes: Sequence[str], estimators: Sequence[str], *,
              h: Union[str, Sequence[float]], k: Union[None, float, str] = None,
              alpha: Union[None, float, str] = None, translations: int = 0, seed: int = 0,

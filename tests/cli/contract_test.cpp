@@ -7,7 +7,8 @@
 // Adding a row (every engineer who adds a command or an input format should): append a
 // BadInput to bad_inputs() below:
 //   {"what is wrong (the class of input)",
-//    "the arguments; {dir} is the scratch folder of the row",
+//    "the arguments; {dir} is the scratch folder of the row ({rel}: the same, relative to the
+//     working folder)",
 //    {{"input.txt", "bytes of an input file the row creates first"}, ...},
 //    {"out.npy", ...},   // outputs that already exist (content "keep", mode 0444): untouched
 //    "a piece of the expected error line"}
@@ -25,8 +26,12 @@
 #include <fstream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <fcntl.h>
+#include <linux/fs.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -655,6 +660,37 @@ std::vector<BadInput> bad_inputs() {
        {{"in.npy", small_npy()}},
        {},
        "--radius 5v (the default) is 5 pixels"},
+      // issue #41 (outputs and paths) --------------------------------------------------------
+      {"surface: one file as the mesh and the CSV (relative and absolute names)",
+       "surface {dir}/cube.npy -o {rel}/x.ply --csv {dir}/x.ply",
+       {{"cube.npy", cube_npy()}},
+       {},
+       "x.ply are the same file"},
+      {"surface: one file as the mesh and the CSV (./ and --force over an existing file)",
+       "surface {dir}/cube.npy -o {dir}/x.ply --csv {rel}/./x.ply --force",
+       {{"cube.npy", cube_npy()}},
+       {"x.ply"},
+       "x.ply are the same file"},
+      {"surface: one file as the CSV and the picture",
+       "surface {dir}/cube.npy --csv {rel}/p.png --png {dir}/sub/../p.png",
+       {{"cube.npy", cube_npy()}, {"sub/", ""}},
+       {},
+       "p.png are the same file"},
+      {"contour: one file as the drawing and the CSV",
+       "contour {dir}/in.npy -o {dir}/s.svg --csv {rel}/s.svg",
+       {{"in.npy", small_npy()}},
+       {},
+       "s.svg are the same file"},
+      {"surface --force: the second output is a folder that cannot be replaced",
+       "surface {dir}/cube.npy -o {dir}/a.ply --png {dir}/b.png --force",
+       {{"cube.npy", cube_npy()}, {"b.png/x", "inside"}},
+       {"a.ply"},
+       "b.png: is a folder"},
+      {"converge --force: summary.json is a folder that cannot be replaced",
+       converge + "-o {dir}/out --force --no-plot",
+       {{"out/summary.json/x", "inside"}},
+       {"out/results.csv"},
+       "summary.json: is a folder"},
   };
 }
 
@@ -697,6 +733,9 @@ TEST(CliContract, BadInputGivesOneLineExitTwoAndTouchesNothing) {
     for (std::size_t at; (at = args.find("{dir}")) != std::string::npos;) {
       args.replace(at, 5, dir.string());
     }
+    for (std::size_t at; (at = args.find("{rel}")) != std::string::npos;) {
+      args.replace(at, 5, fs::relative(dir).string());
+    }
     const auto run = zdg::test::run_zdg(args);
     EXPECT_EQ(run.status, 2) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
@@ -735,6 +774,89 @@ TEST(CliContract, UnwritableOutputFolderIsOneLine) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("is not writable"), std::string::npos) << r.err;
   fs::permissions(dir / "ro", fs::perms::owner_all);
+  fs::remove_all(dir);
+}
+
+// Issue #41, 11 and 14: an output that reaches the file-size limit (ulimit -f) is one line,
+// zdg's, naming the user's file: not libpng's own line, not the staging file.
+TEST(CliContract, FileSizeLimitIsOneLineNamingTheOutput) {
+  const fs::path dir = zdg::test::scratch_dir("contract");
+  std::ofstream(dir / "cube.npy", std::ios::binary) << cube_npy();
+  const std::string d = dir.string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"surface " + d + "/cube.npy --png " + d + "/pic.png --quiet", d + "/pic.png"},
+      {"surface " + d + "/cube.npy -o " + d + "/mesh.obj --quiet", d + "/mesh.obj"},
+      {"converge --shape ball:9 --estimator gauss-area --h 1:0.5:4 --quiet --no-plot -o " + d +
+           "/run",
+       d + "/run/"}, // results.csv or summary.json, whichever passes the limit first
+  };
+  for (const auto& [args, output] : cases) {
+    SCOPED_TRACE(args);
+    const std::string cmd = "ulimit -f 1 && '" + std::string(zdg::test::cli_path()) + "' " + args +
+                            " >/dev/null 2>'" + d + "/err'";
+    const int raw = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(raw));
+    EXPECT_EQ(WEXITSTATUS(raw), 2);
+    const std::string err = zdg::test::read_file(dir / "err");
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_EQ(err.rfind("zdg: ", 0), 0u) << err;
+    EXPECT_NE(err.find(output), std::string::npos) << err;
+    EXPECT_EQ(err.find("zdg-tmp"), std::string::npos) << err;
+    fs::remove(dir / "err");
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(dir)) left.push_back(e.path().filename());
+    EXPECT_EQ(left, std::vector<std::string>{"cube.npy"}) << "nothing written, nothing left";
+  }
+  fs::remove_all(dir);
+}
+
+// Issue #41, 10: converge with an immutable summary.json (chattr +i, where the file system has
+// it; root) leaves results.csv as it was.
+TEST(CliContract, AnImmutableSecondOutputLeavesTheFirstAsItWas) {
+  const fs::path dir = zdg::test::scratch_dir("contract");
+  fs::create_directories(dir / "out");
+  std::ofstream(dir / "out" / "results.csv") << "old results";
+  std::ofstream(dir / "out" / "summary.json") << "old summary";
+  const int fd = ::open((dir / "out" / "summary.json").c_str(), O_RDONLY);
+  ASSERT_GE(fd, 0);
+  int flags = 0;
+  if (::ioctl(fd, FS_IOC_GETFLAGS, &flags) != 0 ||
+      (flags |= FS_IMMUTABLE_FL, ::ioctl(fd, FS_IOC_SETFLAGS, &flags)) != 0) {
+    ::close(fd);
+    fs::remove_all(dir);
+    GTEST_SKIP() << "no chattr +i here";
+  }
+  const auto r = zdg::test::run_zdg("converge --shape ball:5 --estimator gauss-area --h 1:0.5:3 "
+                                    "--no-plot --force -o " +
+                                    (dir / "out").string());
+  flags &= ~FS_IMMUTABLE_FL;
+  ::ioctl(fd, FS_IOC_SETFLAGS, &flags);
+  ::close(fd);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("summary.json: is immutable"), std::string::npos) << r.err;
+  EXPECT_EQ(zdg::test::read_file(dir / "out" / "results.csv"), "old results");
+  EXPECT_EQ(zdg::test::read_file(dir / "out" / "summary.json"), "old summary");
+  fs::remove_all(dir);
+}
+
+// Issue #41, 14: a killed run's staging file is removed by the next run into its folder; the
+// staging file of a live process (here this test's) is left alone.
+TEST(CliContract, TheNextRunRemovesStagingFilesOfKilledRuns) {
+  const fs::path dir = zdg::test::scratch_dir("contract");
+  const pid_t dead = ::fork();
+  ASSERT_GE(dead, 0);
+  if (dead == 0) ::_exit(0);
+  ASSERT_EQ(::waitpid(dead, nullptr, 0), dead);
+  const fs::path stale = dir / (".summary.json.zdg-tmp-" + std::to_string(dead) + "-0");
+  const fs::path live = dir / (".h.txt.zdg-tmp-" + std::to_string(::getpid()) + "-0");
+  std::ofstream(stale) << "stale";
+  std::ofstream(live) << "in progress";
+  const auto r = zdg::test::run_zdg("hull disc 0 0 5 -o " + (dir / "h.txt").string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_EQ(zdg::test::read_file(live), "in progress");
+  EXPECT_TRUE(fs::exists(dir / "h.txt"));
   fs::remove_all(dir);
 }
 
