@@ -6,10 +6,10 @@
 #include <zdg/arith/dss_recognizer.hpp>
 #include <zdg/arith/escalate.hpp>
 #include <zdg/cli/commands.hpp>
-#include <zdg/cli/serve.hpp>
 #include <zdg/kernel/curves/freeman_chain.hpp>
 #include <zdg/kernel/curves/maximal_segments.hpp>
 #include <zdg/kernel/io/point_file.hpp>
+#include <zdg/operations/dss_operations.hpp>
 
 #include <iostream>
 #include <memory>
@@ -43,30 +43,14 @@ PointFile read_points(const std::string& path) {
   return f;
 }
 
-std::string show(const Point2<BigInt>& p) {
-  return "(" + p.x.str() + ", " + p.y.str() + ")";
-}
-
-// Consecutive points must be adjacent (8, or 4 when asked); returns the connectivity the path
-// uses (4 when every step is an axis step).
-Connectivity check_adjacency(const std::string& path, const PointFile& f, int forced, bool closed) {
-  Connectivity c = Connectivity::four;
-  const std::size_t n = f.pts.size();
-  for (std::size_t k = 1; k <= n; ++k) {
-    if (k == n && (!closed || n == 1)) break;
-    const auto &p = f.pts[k - 1], &q = f.pts[k % n];
-    BigInt dx = abs(BigInt(q.x - p.x)), dy = abs(BigInt(q.y - p.y));
-    bool ok = dx <= 1 && dy <= 1 && (dx + dy) > 0 && (forced != 4 || dx + dy == 1);
-    if (!ok) {
-      std::string what = k == n ? "the last point " + show(p) + " and the first point " + show(q)
-                                : "point " + show(q) + " and the previous point " + show(p);
-      throw InvalidArgument(path + ":" + std::to_string(f.lines[k % n]) + ": " + what +
-                            " are not " + (forced == 4 ? "4" : "8") + "-adjacent");
-    }
-    if (dx == 1 && dy == 1) c = Connectivity::eight;
-  }
-  if (forced == 8) c = Connectivity::eight;
-  return c;
+// The path of a file for the dss operations: its points, each named FILE:LINE in messages.
+DssPathOptions path_options(const std::string& path, int connectivity) {
+  auto f = std::make_shared<PointFile>(read_points(path));
+  DssPathOptions o;
+  o.points = f->pts;
+  o.connectivity = connectivity;
+  o.where = [f, path](std::size_t k) { return path + ":" + std::to_string(f->lines[k]); };
+  return o;
 }
 
 int connectivity_number(Connectivity c) {
@@ -74,62 +58,29 @@ int connectivity_number(Connectivity c) {
 }
 
 void run_recognize(const std::string& path, int forced, bool json) {
-  PointFile f = read_points(path);
-  Connectivity c = check_adjacency(path, f, forced, false);
-  auto r = recognize_dss_exact(f.pts, c).value;
-  const auto& ch = r.characteristics;
-  if (json) {
-    nlohmann::json j{{"is_dss", r.is_dss}, {"connectivity", connectivity_number(c)}};
-    if (r.is_dss) {
-      j["a"] = ch.a.str();
-      j["b"] = ch.b.str();
-      j["mu"] = ch.mu.str();
-      j["omega"] = ch.omega.str();
-    } else {
-      j["longest_prefix"] = r.longest_prefix;
-    }
-    print_json(j);
-    return;
-  }
+  const DssRecognizeResult r = dss_recognize_operation(path_options(path, forced));
+  if (json) return print_json(to_json(r));
+  const auto& rec = r.recognition;
+  const auto& ch = rec.characteristics;
+  const int c = connectivity_number(rec.connectivity);
   std::string line = "a = " + ch.a.str() + ", b = " + ch.b.str() + ", mu = " + ch.mu.str() +
                      ", omega = " + ch.omega.str();
-  if (r.is_dss) {
-    std::cout << "DSS (" << connectivity_number(c) << "-connected, " << f.pts.size()
-              << " points): " << line << '\n';
+  if (rec.is_dss) {
+    std::cout << "DSS (" << c << "-connected, " << r.points << " points): " << line << '\n';
   } else {
-    std::cout << "not a DSS (" << connectivity_number(c) << "-connected): the first "
-              << r.longest_prefix << " of " << f.pts.size() << " points are, with " << line << '\n';
+    std::cout << "not a DSS (" << c << "-connected): the first " << rec.longest_prefix << " of "
+              << r.points << " points are, with " << line << '\n';
   }
 }
 
 void run_cover(const std::string& path, bool closed, bool greedy, int forced, bool json) {
-  PointFile f = read_points(path);
-  // A closed curve given with its first point repeated at the end (a closed Freeman chain).
-  if (closed && f.pts.size() > 1 && f.pts.front() == f.pts.back()) {
-    f.pts.pop_back();
-    f.lines.pop_back();
-  }
-  Connectivity c = check_adjacency(path, f, forced, closed);
-  std::vector<Point2<std::int64_t>> pts;
-  pts.reserve(f.pts.size());
-  for (std::size_t k = 0; k < f.pts.size(); ++k) {
-    try {
-      pts.push_back({int_cast<Int64>(f.pts[k].x).value(), int_cast<Int64>(f.pts[k].y).value()});
-    } catch (const OverflowError&) {
-      throw InvalidArgument(path + ":" + std::to_string(f.lines[k]) + ": point " + show(f.pts[k]) +
-                            " has a coordinate beyond 64 bits (cover works on int64 points)");
-    }
-  }
-  auto segs = greedy ? greedy_segmentation_exact(pts, closed, c).value
-                     : maximal_segments_exact(pts, closed, c).value;
-  if (json) {
-    print_json(cover_json(segs, closed, c, greedy));
-    return;
-  }
+  const DssCoverResult r = dss_cover_operation({path_options(path, forced), closed, greedy});
+  if (json) return print_json(to_json(r));
   std::cout << (greedy ? "greedy segmentation" : "maximal segments") << " of "
-            << (closed ? "closed" : "open") << " " << connectivity_number(c) << "-connected curve ("
-            << pts.size() << " points): " << segs.size() << " segments\n";
-  for (const auto& s : segs) {
+            << (closed ? "closed" : "open") << " " << connectivity_number(r.connectivity)
+            << "-connected curve (" << r.points << " points): " << r.segments.size()
+            << " segments\n";
+  for (const auto& s : r.segments) {
     std::cout << "[" << s.begin << ", " << s.end << "] a = " << s.a << ", b = " << s.b
               << ", mu = " << to_string(Int128(s.mu)) << '\n';
   }

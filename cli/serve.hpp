@@ -5,8 +5,6 @@
 // `zdg OPERATION --json`, or {"error": "..."} for a request zdg refuses (never an exception).
 #pragma once
 
-#include <zdg/kernel/curves/maximal_segments.hpp>
-
 #include <nlohmann/json_fwd.hpp>
 
 #include <string>
@@ -20,11 +18,5 @@ std::vector<std::string> serve_operations();
 /// The answer (one line of JSON, no newline) to one request line of the operation.
 /// InvalidArgument for an unknown operation (listing the known ones).
 std::string serve_answer(const std::string& operation, const std::string& line);
-
-/// The JSON of a tangential cover or greedy segmentation, as `zdg dss cover --json` prints it
-/// and `zdg serve dss cover` answers: closed, connectivity, greedy, and the segments (begin, end,
-/// a, b, mu; a, b and mu as decimal strings).
-nlohmann::json cover_json(const std::vector<MaximalSegment>& segments, bool closed,
-                          Connectivity connectivity, bool greedy);
 
 } // namespace zdg::cli

@@ -29,6 +29,8 @@
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/voronoi_map.hpp>
+#include <zdg/operations/arith_operations.hpp>
+#include <zdg/operations/dss_operations.hpp>
 
 #include <functional>
 #include <map>
@@ -171,107 +173,43 @@ json polygon_json(const std::vector<Point2<BigInt>>& v, IntKind served) {
           {"integer_type", std::string(to_string(served))}};
 }
 
-std::vector<std::string> strings(const std::vector<BigInt>& v) {
-  std::vector<std::string> out;
-  for (const auto& x : v) out.push_back(x.str());
-  return out;
+bool flag_field(const json& j, const std::string& name, bool otherwise) {
+  if (!j.contains(name)) return otherwise;
+  if (!j.at(name).is_boolean())
+    throw InvalidArgument("request: field '" + name + "' is not a boolean");
+  return j.at(name).get<bool>();
 }
 
 json serve_floor_sum(const json& j) {
-  BigInt n = integer_field(j, "n"), m = integer_field(j, "m");
-  if (n < 0) throw InvalidArgument("floor-sum: n must be >= 0");
-  if (m == 0) throw InvalidArgument("floor-sum: m must not be 0");
-  auto r = floor_sum_exact(n, m, integer_field(j, "a"), integer_field(j, "b"));
-  return {{"value", r.value.str()}, {"integer_type", std::string(to_string(r.served))}};
+  return to_json(floor_sum_operation({integer_field(j, "n"), integer_field(j, "m"),
+                                      integer_field(j, "a"), integer_field(j, "b")}));
 }
 
 json serve_cf(const json& j) {
-  // Named copies, not structured bindings: clang 14 (the fuzz build) cannot capture those.
-  const auto pq = fraction_field(j, "fraction");
-  const BigInt p = pq.first, q = pq.second;
-  struct Out {
-    std::vector<BigInt> terms;
-    json conv = json::array();
-  };
-  auto r = escalate([&]<class I>(std::type_identity<I>) {
-    auto terms = continued_fraction<I>(int_cast<I>(p), int_cast<I>(q));
-    Out o;
-    for (const auto& t : terms) o.terms.push_back(to_bigint(t));
-    for (const auto& [a, b] : convergents<I>(std::span<const I>(terms))) {
-      o.conv.push_back({to_string(a), to_string(b)});
-    }
-    return o;
-  });
-  return {{"p", p.str()},
-          {"q", q.str()},
-          {"terms", strings(r.value.terms)},
-          {"convergents", r.value.conv},
-          {"integer_type", std::string(to_string(r.served))}};
+  const auto [p, q] = fraction_field(j, "fraction");
+  return to_json(continued_fraction_operation({p, q}));
 }
 
 json serve_christoffel(const json& j) {
-  auto [p0, q0] = fraction_field(j, "slope");
-  if (p0 < 0 || q0 <= 0) throw InvalidArgument("christoffel: the slope must have P >= 0, Q > 0");
-  const BigInt g = gcd(p0, q0);
-  const BigInt p = p0 / g, q = q0 / g;
-  auto r = escalate([&]<class I>(std::type_identity<I>) {
-    I pi = int_cast<I>(p), qi = int_cast<I>(q);
-    json o{{"p", p.str()}, {"q", q.str()}, {"upper", false}};
-    o["word"] = lower_christoffel_word(pi, qi);
-    o["standard_factorization"] = json::array();
-    o["parents"] = json::array();
-    if (pi > 0) {
-      auto sf = standard_factorization(pi, qi);
-      o["standard_factorization"] = json::array({sf.u, sf.v});
-      auto par = stern_brocot_parents(pi, qi);
-      o["parents"] = json::array({json::array({to_string(par.left.p), to_string(par.left.q)}),
-                                  json::array({to_string(par.right.p), to_string(par.right.q)})});
-    }
-    return o;
-  });
-  r.value["integer_type"] = std::string(to_string(r.served));
-  return r.value;
+  const auto [p, q] = fraction_field(j, "slope");
+  return to_json(
+      christoffel_operation({{p, q}, flag_field(j, "upper", false), flag_field(j, "word", true)}));
 }
 
-// Connectivity of a path: the request's "connectivity" (4 or 8) or, absent, 4 when every step
-// is an axis step, else 8 (as zdg dss recognize and zdg dss cover choose).
-Connectivity path_connectivity(const json& j, const std::vector<Point2<BigInt>>& pts,
-                               const char* op) {
-  int forced = 0;
+// The path of a dss request: its points and the asked connectivity (0 when absent).
+DssPathOptions path_field(const json& j) {
+  DssPathOptions o;
+  o.points = points_field(j);
   if (j.contains("connectivity")) {
     auto c = json_integer(j.at("connectivity"));
-    if (!c || (*c != 4 && *c != 8))
-      throw InvalidArgument(std::string(op) + ": connectivity is 4 or 8");
-    forced = static_cast<int>(c->convert_to<long>());
+    if (!c || (*c != 4 && *c != 8)) throw InvalidArgument("request: connectivity is 4 or 8");
+    o.connectivity = static_cast<int>(c->convert_to<long>());
   }
-  Connectivity c = Connectivity::four;
-  for (std::size_t k = 1; k < pts.size(); ++k) {
-    if (abs(BigInt(pts[k].x - pts[k - 1].x)) == 1 && abs(BigInt(pts[k].y - pts[k - 1].y)) == 1) {
-      if (forced == 4)
-        throw InvalidArgument(std::string(op) + ": a diagonal step in a 4-connected path");
-      c = Connectivity::eight;
-    }
-  }
-  if (forced == 8) c = Connectivity::eight;
-  return c;
+  return o;
 }
 
 json serve_dss_recognize(const json& j) {
-  auto pts = points_field(j);
-  const Connectivity c = path_connectivity(j, pts, "dss recognize");
-  auto r = recognize_dss_exact(std::span<const Point2<BigInt>>(pts), c);
-  json o{{"is_dss", r.value.is_dss}, {"connectivity", c == Connectivity::four ? 4 : 8}};
-  if (r.value.is_dss) {
-    const auto& ch = r.value.characteristics;
-    o["a"] = ch.a.str();
-    o["b"] = ch.b.str();
-    o["mu"] = ch.mu.str();
-    o["omega"] = ch.omega.str();
-  } else {
-    o["longest_prefix"] = r.value.longest_prefix;
-  }
-  o["integer_type"] = std::string(to_string(r.served));
-  return o;
+  return to_json(dss_recognize_operation(path_field(j)));
 }
 
 json serve_dss_subsegment(const json& j) {
@@ -330,23 +268,8 @@ json serve_topology_betti(const json& j) {
 }
 
 json serve_dss_cover(const json& j) {
-  const auto big = points_field(j);
-  const Connectivity c = path_connectivity(j, big, "dss cover");
-  const bool closed =
-      j.contains("closed") && j.at("closed").is_boolean() && j.at("closed").get<bool>();
-  const bool greedy =
-      j.contains("greedy") && j.at("greedy").is_boolean() && j.at("greedy").get<bool>();
-  std::vector<Point2<std::int64_t>> pts;
-  for (const auto& p : big) {
-    try {
-      pts.push_back({int_cast<Int64>(p.x).value(), int_cast<Int64>(p.y).value()});
-    } catch (const OverflowError&) {
-      throw InvalidArgument("dss cover: a coordinate beyond 64 bits (cover works on int64 points)");
-    }
-  }
-  auto segs = greedy ? greedy_segmentation_exact(pts, closed, c).value
-                     : maximal_segments_exact(pts, closed, c).value;
-  return cover_json(segs, closed, c, greedy);
+  return to_json(dss_cover_operation(
+      {path_field(j), flag_field(j, "closed", false), flag_field(j, "greedy", false)}));
 }
 
 json serve_transform_voronoi(const json& j) {
@@ -468,22 +391,6 @@ const std::map<std::string, Handler>& handlers() {
 }
 
 } // namespace
-
-nlohmann::json cover_json(const std::vector<MaximalSegment>& segments, bool closed,
-                          Connectivity connectivity, bool greedy) {
-  json arr = json::array();
-  for (const auto& s : segments) {
-    arr.push_back({{"begin", s.begin},
-                   {"end", s.end},
-                   {"a", std::to_string(s.a)},
-                   {"b", std::to_string(s.b)},
-                   {"mu", to_string(Int128(s.mu))}});
-  }
-  return {{"closed", closed},
-          {"connectivity", connectivity == Connectivity::four ? 4 : 8},
-          {"greedy", greedy},
-          {"segments", arr}};
-}
 
 std::vector<std::string> serve_operations() {
   std::vector<std::string> ops;

@@ -395,8 +395,8 @@ void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
   distance_transform_into<T>(dom, mask, item, opt, values.get(), pass_printer(a));
   const double secs = since(t0);
   // The largest value and the write, in pieces by all the workers (write_values_max).
-  const T mx =
-      write_values_max<T>(out, header.size(), values.get(), dom.size(), worker_count(opt.threads, dom.size()));
+  const T mx = write_values_max<T>(out, header.size(), values.get(), dom.size(),
+                                   worker_count(opt.threads, dom.size()));
   values.reset();
   out.finish();
   commit(a);

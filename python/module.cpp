@@ -9,15 +9,11 @@
 // message (the one the command line prints).
 #include "python/common.hpp"
 
-#include <zdg/arith/christoffel.hpp>
-#include <zdg/arith/continued_fraction.hpp>
 #include <zdg/arith/dsl_subsegment.hpp>
 #include <zdg/arith/dss_recognizer.hpp>
 #include <zdg/arith/error.hpp>
 #include <zdg/arith/escalate.hpp>
-#include <zdg/arith/floor_sum.hpp>
 #include <zdg/arith/rational.hpp>
-#include <zdg/arith/stern_brocot.hpp>
 #include <zdg/convergence/config.hpp>
 #include <zdg/convergence/experiment.hpp>
 #include <zdg/kernel/curves/maximal_segments.hpp>
@@ -26,6 +22,8 @@
 #include <zdg/kernel/hulls/lattice_hull_3d.hpp>
 #include <zdg/kernel/surfaces/digital_plane_recognition.hpp>
 #include <zdg/kernel/surfaces/plane_probing.hpp>
+#include <zdg/operations/arith_operations.hpp>
+#include <zdg/operations/dss_operations.hpp>
 
 #include <pybind11/stl.h>
 
@@ -42,28 +40,19 @@ std::string served(IntKind k) {
   return std::string(to_string(k));
 }
 
+py::tuple fraction_to_py(const BigInt& p, const BigInt& q) {
+  return py::make_tuple(bigint_to_py(p), bigint_to_py(q));
+}
+
 py::dict cf(py::handle p_obj, py::handle q_obj) {
-  BigInt p = py_to_bigint(p_obj, "cf: p"), q = py_to_bigint(q_obj, "cf: q");
-  if (q == 0) throw InvalidArgument("cf: zero denominator");
-  struct Out {
-    std::vector<BigInt> terms;
-    std::vector<std::pair<BigInt, BigInt>> conv;
-  };
-  auto r = [&] {
+  const Fraction<BigInt> f{py_to_bigint(p_obj, "cf: p"), py_to_bigint(q_obj, "cf: q")};
+  const auto r = [&] {
     py::gil_scoped_release release;
-    return escalate([&]<class I>(std::type_identity<I>) {
-      auto terms = continued_fraction<I>(int_cast<I>(p), int_cast<I>(q));
-      auto conv = convergents<I>(std::span<const I>(terms));
-      Out o;
-      for (const auto& t : terms) o.terms.push_back(to_bigint(t));
-      for (const auto& [a, b] : conv) o.conv.emplace_back(to_bigint(a), to_bigint(b));
-      return o;
-    });
+    return continued_fraction_operation(f);
   }();
   py::list terms, conv;
-  for (const auto& t : r.value.terms) terms.append(bigint_to_py(t));
-  for (const auto& [a, b] : r.value.conv)
-    conv.append(py::make_tuple(bigint_to_py(a), bigint_to_py(b)));
+  for (const auto& t : r.terms) terms.append(bigint_to_py(t));
+  for (const auto& [a, b] : r.convergents) conv.append(fraction_to_py(a, b));
   py::dict d;
   d["terms"] = terms;
   d["convergents"] = conv;
@@ -72,69 +61,34 @@ py::dict cf(py::handle p_obj, py::handle q_obj) {
 }
 
 py::dict christoffel(py::handle p_obj, py::handle q_obj, bool upper, bool word) {
-  BigInt p = py_to_bigint(p_obj, "christoffel: p"), q = py_to_bigint(q_obj, "christoffel: q");
-  if (p < 0 || q <= 0) {
-    throw InvalidArgument("christoffel: slope " + p.str() + "/" + q.str() +
-                          " must satisfy p >= 0 and q > 0");
-  }
-  BigInt g = gcd(p, q);
-  p /= g;
-  q /= g;
-  struct Out {
-    std::string word, u, v;
-    bool has_parents = false;
-    BigInt lp, lq, rp, rq;
-  };
-  auto r = [&] {
+  const ChristoffelOptions o{
+      {py_to_bigint(p_obj, "christoffel: p"), py_to_bigint(q_obj, "christoffel: q")}, upper, word};
+  const auto r = [&] {
     py::gil_scoped_release release;
-    return escalate([&]<class I>(std::type_identity<I>) {
-      I pi = int_cast<I>(p), qi = int_cast<I>(q);
-      Out o;
-      if (word) o.word = upper ? upper_christoffel_word(pi, qi) : lower_christoffel_word(pi, qi);
-      if (pi > 0) {
-        auto par = stern_brocot_parents(pi, qi);
-        o.has_parents = true;
-        o.lp = to_bigint(par.left.p);
-        o.lq = to_bigint(par.left.q);
-        o.rp = to_bigint(par.right.p);
-        o.rq = to_bigint(par.right.q);
-        if (word) {
-          auto sf = standard_factorization(pi, qi);
-          o.u = sf.u;
-          o.v = sf.v;
-          if (upper) { // the upper word is the reverse: its factorization is rev(v) rev(u)
-            o.u.assign(sf.v.rbegin(), sf.v.rend());
-            o.v.assign(sf.u.rbegin(), sf.u.rend());
-          }
-        }
-      }
-      return o;
-    });
+    return christoffel_operation(o);
   }();
-  const Out& o = r.value;
   py::dict d;
-  d["p"] = bigint_to_py(p);
-  d["q"] = bigint_to_py(q);
-  d["word"] = word ? py::object(py::str(o.word)) : py::object(py::none());
+  d["p"] = bigint_to_py(r.p);
+  d["q"] = bigint_to_py(r.q);
+  d["word"] = word ? py::object(py::str(r.letters)) : py::object(py::none());
   d["standard_factorization"] =
-      (word && o.has_parents) ? py::object(py::make_tuple(o.u, o.v)) : py::object(py::none());
+      r.factorization ? py::object(py::make_tuple(r.factorization->first, r.factorization->second))
+                      : py::object(py::none());
   d["parents"] =
-      o.has_parents
-          ? py::object(py::make_tuple(py::make_tuple(bigint_to_py(o.lp), bigint_to_py(o.lq)),
-                                      py::make_tuple(bigint_to_py(o.rp), bigint_to_py(o.rq))))
+      r.parents
+          ? py::object(py::make_tuple(fraction_to_py(r.parents->first.p, r.parents->first.q),
+                                      fraction_to_py(r.parents->second.p, r.parents->second.q)))
           : py::object(py::none());
   d["integer_type"] = served(r.served);
   return d;
 }
 
 py::dict floor_sum_py(py::handle n_obj, py::handle m_obj, py::handle a_obj, py::handle b_obj) {
-  BigInt n = py_to_bigint(n_obj, "floor_sum: n"), m = py_to_bigint(m_obj, "floor_sum: m"),
-         a = py_to_bigint(a_obj, "floor_sum: a"), b = py_to_bigint(b_obj, "floor_sum: b");
-  if (n < 0) throw InvalidArgument("floor-sum: N = " + n.str() + " must be >= 0");
-  if (m == 0) throw InvalidArgument("floor-sum: M must not be 0");
-  auto r = [&] {
+  const FloorSumOptions o{py_to_bigint(n_obj, "floor_sum: n"), py_to_bigint(m_obj, "floor_sum: m"),
+                          py_to_bigint(a_obj, "floor_sum: a"), py_to_bigint(b_obj, "floor_sum: b")};
+  const auto r = [&] {
     py::gil_scoped_release release;
-    return floor_sum_exact(n, m, a, b);
+    return floor_sum_operation(o);
   }();
   py::dict d;
   d["value"] = bigint_to_py(r.value);
@@ -153,27 +107,24 @@ std::vector<Point2<BigInt>> points_of(py::handle seq, const char* what) {
   return pts;
 }
 
-Connectivity connectivity_of(int c, const char* what) {
-  if (c == 4) return Connectivity::four;
-  if (c == 8) return Connectivity::eight;
-  throw InvalidArgument(std::string(what) + ": connectivity " + std::to_string(c) +
-                        " is not 4 or 8");
+DssPathOptions path_of(py::handle points, int connectivity, const char* what) {
+  DssPathOptions o;
+  o.points = points_of(points, what);
+  o.connectivity = connectivity;
+  return o;
 }
 
 py::dict recognize_dss_py(py::handle points, int connectivity) {
-  auto pts = points_of(points, "recognize_dss");
-  if (pts.empty()) throw InvalidArgument("recognize_dss: no point");
-  Connectivity c = connectivity == 0 ? path_connectivity(std::span<const Point2<BigInt>>(pts))
-                                     : connectivity_of(connectivity, "recognize_dss");
-  auto r = [&] {
+  const DssPathOptions o = path_of(points, connectivity, "recognize_dss");
+  const auto r = [&] {
     py::gil_scoped_release release;
-    return recognize_dss_exact(std::span<const Point2<BigInt>>(pts), c);
+    return dss_recognize_operation(o);
   }();
-  const auto& ch = r.value.characteristics;
+  const auto& ch = r.recognition.characteristics;
   py::dict d;
-  d["is_dss"] = r.value.is_dss;
-  d["longest_prefix"] = r.value.longest_prefix;
-  d["connectivity"] = r.value.connectivity == Connectivity::four ? 4 : 8;
+  d["is_dss"] = r.recognition.is_dss;
+  d["longest_prefix"] = r.recognition.longest_prefix;
+  d["connectivity"] = r.recognition.connectivity == Connectivity::four ? 4 : 8;
   d["a"] = bigint_to_py(ch.a);
   d["b"] = bigint_to_py(ch.b);
   d["mu"] = bigint_to_py(ch.mu);
@@ -183,26 +134,13 @@ py::dict recognize_dss_py(py::handle points, int connectivity) {
 }
 
 py::list tangential_cover(py::handle points, bool closed, int connectivity) {
-  auto big = points_of(points, "tangential_cover");
-  std::vector<Point2<std::int64_t>> pts;
-  pts.reserve(big.size());
-  for (const auto& p : big) {
-    try {
-      pts.push_back({int_cast<Int64>(p.x).value(), int_cast<Int64>(p.y).value()});
-    } catch (const OverflowError&) {
-      throw InvalidArgument("tangential_cover: point (" + p.x.str() + ", " + p.y.str() +
-                            ") has a coordinate beyond 64 bits (the cover works on int64 points)");
-    }
-  }
-  if (closed && pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
-  std::optional<Connectivity> c;
-  if (connectivity != 0) c = connectivity_of(connectivity, "tangential_cover");
-  auto segs = [&] {
+  DssCoverOptions o{path_of(points, connectivity, "tangential_cover"), closed, false};
+  const auto r = [&] {
     py::gil_scoped_release release;
-    return maximal_segments_exact(pts, closed, c).value;
+    return dss_cover_operation(std::move(o));
   }();
   py::list out;
-  for (const auto& s : segs) {
+  for (const auto& s : r.segments) {
     py::dict d;
     d["begin"] = s.begin;
     d["end"] = s.end;

@@ -36,7 +36,8 @@ TEST(DssCli, RecognizeADss) {
   for (int x = 0; x < 20; ++x) pts += std::to_string(x) + " " + std::to_string(3 * x / 7) + "\n";
   auto r = run_zdg("dss recognize " + write(dir, "line.txt", pts) + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(json::parse(r.out), json::parse(R"({"is_dss":true,"connectivity":8,"a":"3","b":"7",
+  EXPECT_EQ(json::parse(r.out),
+            json::parse(R"({"is_dss":true,"connectivity":8,"a":"3","b":"7","integer_type":"int64",
                                                 "mu":"0","omega":"7"})"));
   // A 4-connected staircase given as a Freeman chain: two periods of 00101 (three steps (1,0),
   // two steps (0,1)), a conjugate of the Christoffel word of 2/3: a standard DSS of slope 2/3.
@@ -51,7 +52,8 @@ TEST(DssCli, RecognizeADss) {
   // 0011 is not balanced (00 and 11): the first 4 points only.
   r = run_zdg("dss recognize " + write(dir, "chain.txt", "10 -4 0011\n") + " --json");
   EXPECT_EQ(json::parse(r.out),
-            json::parse(R"({"is_dss":false,"connectivity":4,"longest_prefix":4})"));
+            json::parse(
+                R"({"is_dss":false,"connectivity":4,"longest_prefix":4,"integer_type":"int64"})"));
   std::filesystem::remove_all(dir);
 }
 
@@ -61,9 +63,11 @@ TEST(DssCli, RecognizeReportsTheLongestPrefix) {
   auto r = run_zdg("dss recognize " + write(dir, "p.txt", "0 0\n1 1\n2 2\n3 2\n4 2\n") + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(json::parse(r.out),
-            json::parse(R"({"is_dss":false,"connectivity":8,"longest_prefix":4})"));
+            json::parse(
+                R"({"is_dss":false,"connectivity":8,"longest_prefix":4,"integer_type":"int64"})"));
   r = run_zdg("dss recognize " + write(dir, "p.txt", "5 5\n") + " --json");
-  EXPECT_EQ(json::parse(r.out), json::parse(R"({"is_dss":true,"connectivity":4,"a":"0","b":"1",
+  EXPECT_EQ(json::parse(r.out),
+            json::parse(R"({"is_dss":true,"connectivity":4,"a":"0","b":"1","integer_type":"int64",
                                                 "mu":"-5","omega":"1"})"));
   std::filesystem::remove_all(dir);
 }

@@ -1,10 +1,13 @@
-// Uses the installed zdg: a continued fraction computed exactly by escalation, and an
-// experiment description read by the library (which links toml++ privately: the package config
-// must bring it).
+// Uses the installed zdg: a continued fraction computed exactly by escalation, the same as an
+// operation with its JSON form, and an experiment description read by the library (which links
+// toml++ privately: the package config must bring it).
 #include <zdg/arith/continued_fraction.hpp>
 #include <zdg/arith/escalate.hpp>
 #include <zdg/arith/floor_sum.hpp>
 #include <zdg/convergence/config.hpp>
+#include <zdg/operations/arith_operations.hpp>
+
+#include <nlohmann/json.hpp>
 
 #include <iostream>
 
@@ -20,6 +23,9 @@ int main() {
                                         "h = \"exp:30:60:3\"\n",
                                         "consumer.toml");
   ok = ok && c.estimators.size() == 2 && c.hs.size() == 11;
+  // An operation and its JSON form (the package config brings nlohmann-json).
+  const auto cf = zdg::continued_fraction_operation(zdg::parse_fraction("415/93"));
+  ok = ok && to_json(cf)["terms"].size() == 4;
   std::cout << (ok ? "consumer: ok" : "consumer: WRONG") << '\n';
   return ok ? 0 : 1;
 }

@@ -19,7 +19,7 @@ close_ns = re.compile(r"^\}\s*//\s*namespace")
 
 seen = {}
 failures = []
-for layer in ("arith", "kernel", "estimators", "convergence"):
+for layer in ("arith", "kernel", "estimators", "convergence", "operations"):
     for header in sorted((root / layer).rglob("*.hpp")):
         if "/convergence/check/" in header.as_posix():
             continue
