@@ -101,7 +101,7 @@ Image<std::uint8_t> read_mask(const TransformArgs& a) {
   Image<std::uint8_t> m;
   if (!has_selection(a.in) && !raw_layout(a.in).given() && extension(a.in.path) == ".npy") {
     if (!std::filesystem::exists(a.in.path)) throw IoError(a.in.path + ": no such file");
-    m = npy_to_mask(read_npy(a.in.path));
+    m = npy_to_mask(read_npy(a.in.path), {}, a.in.path);
   } else {
     const ObjectSelection selection = object_selection(a.in); // option errors before reading
     m = select_object(load_volume(a.in, 0).volume, selection, a.threads).mask;
@@ -395,8 +395,8 @@ void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
   distance_transform_into<T>(dom, mask, item, opt, values.get(), pass_printer(a));
   const double secs = since(t0);
   // The largest value and the write, in pieces by all the workers (write_values_max).
-  const T mx =
-      write_values_max<T>(out, header.size(), values.get(), dom.size(), worker_count(opt.threads, dom.size()));
+  const T mx = write_values_max<T>(out, header.size(), values.get(), dom.size(),
+                                   worker_count(opt.threads, dom.size()));
   values.reset();
   out.finish();
   commit(a);
