@@ -101,7 +101,7 @@ Image<std::uint8_t> read_mask(const TransformArgs& a) {
   Image<std::uint8_t> m;
   if (!has_selection(a.in) && !raw_layout(a.in).given() && extension(a.in.path) == ".npy") {
     if (!std::filesystem::exists(a.in.path)) throw IoError(a.in.path + ": no such file");
-    m = npy_to_mask(read_npy(a.in.path));
+    m = npy_to_mask(read_npy(a.in.path), {}, a.in.path);
   } else {
     const ObjectSelection selection = object_selection(a.in); // option errors before reading
     m = select_object(load_volume(a.in, 0).volume, selection, a.threads).mask;

@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <new>
 #include <stdexcept>
 
+#include <sys/mman.h>
 #include <sys/stat.h>
 
 namespace zdg {
@@ -67,19 +69,31 @@ std::string read_input_file(const std::string& path, std::uint64_t max_bytes) {
   return data;
 }
 
+ArrivingBytes::~ArrivingBytes() {
+  for (auto& p : pieces_) release(p);
+}
+
+void ArrivingBytes::release(Piece& p) {
+  if (p.data != nullptr) ::munmap(p.data, p.size);
+  p = Piece{};
+}
+
 std::span<std::uint8_t> ArrivingBytes::room() {
   if (size_ == claimed_) return {};
-  if (pieces_.empty() || last_used_ == pieces_.back().size()) {
+  if (pieces_.empty() || last_used_ == pieces_.back().size) {
     const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(kPiece, claimed_ - size_));
-    pieces_.emplace_back(n);
+    pieces_.reserve(pieces_.size() + 1); // so that push_back cannot throw after the mmap
+    void* m = ::mmap(nullptr, n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (m == MAP_FAILED) throw std::bad_alloc();
+    pieces_.push_back(Piece{static_cast<std::uint8_t*>(m), n});
     last_used_ = 0;
   }
   auto& p = pieces_.back();
-  return {p.data() + last_used_, p.size() - last_used_};
+  return {p.data + last_used_, p.size - last_used_};
 }
 
 void ArrivingBytes::arrived(std::size_t n) {
-  if (pieces_.empty() || n > pieces_.back().size() - last_used_)
+  if (pieces_.empty() || n > pieces_.back().size - last_used_)
     throw std::logic_error("ArrivingBytes::arrived: more bytes than the room given");
   last_used_ += n;
   size_ += n;
@@ -87,19 +101,13 @@ void ArrivingBytes::arrived(std::size_t n) {
 
 std::vector<std::uint8_t> ArrivingBytes::take() {
   std::vector<std::uint8_t> out;
-  if (pieces_.size() == 1) {
-    out = std::move(pieces_.front());
-    out.resize(last_used_);
-  } else if (!pieces_.empty()) {
-    // reserve() maps the whole block without touching it: resident memory grows as each
-    // piece is copied in and freed.
-    out.reserve(static_cast<std::size_t>(size_));
-    for (std::size_t i = 0; i < pieces_.size(); ++i) {
-      const std::size_t used = i + 1 == pieces_.size() ? last_used_ : pieces_[i].size();
-      out.insert(out.end(), pieces_[i].begin(),
-                 pieces_[i].begin() + static_cast<std::ptrdiff_t>(used));
-      std::vector<std::uint8_t>().swap(pieces_[i]);
-    }
+  // reserve() takes address space without touching it: resident memory grows as each piece
+  // is copied in, and shrinks as each piece is unmapped.
+  out.reserve(static_cast<std::size_t>(size_));
+  for (std::size_t i = 0; i < pieces_.size(); ++i) {
+    const std::size_t used = i + 1 == pieces_.size() ? last_used_ : pieces_[i].size;
+    out.insert(out.end(), pieces_[i].data, pieces_[i].data + used);
+    release(pieces_[i]);
   }
   pieces_.clear();
   size_ = claimed_ = 0;

@@ -8,9 +8,11 @@
 //
 // ArrivingBytes holds the output of a decompressor whose total a header claims: memory is
 // taken as the bytes arrive, in pieces of at most 16 MiB, never for the claim alone, so that
-// a small corrupt file claiming a large volume takes little memory before its error
-// (resident memory: the bytes that arrived plus one piece; take() then joins the pieces
-// into one vector, freeing each piece as it is copied).
+// a small corrupt file claiming a large volume takes little memory before its error.
+// Resident memory: the bytes that arrived plus one piece. take() joins the pieces into one
+// vector (one copy of the bytes), returning each piece to the system as soon as it is copied:
+// the pieces are anonymous memory mappings, not heap blocks (a freed heap block can stay
+// resident, which would double the peak), so the peak of take() is the bytes plus one piece.
 #pragma once
 
 #include <cstdint>
@@ -37,11 +39,15 @@ public:
   static constexpr std::size_t kPiece = std::size_t{1} << 24;
 
   explicit ArrivingBytes(std::uint64_t claimed) : claimed_(claimed) {}
+  ~ArrivingBytes();
+  ArrivingBytes(const ArrivingBytes&) = delete;
+  ArrivingBytes& operator=(const ArrivingBytes&) = delete;
+
   std::uint64_t claimed() const { return claimed_; }
   /// The bytes that arrived so far.
   std::uint64_t size() const { return size_; }
   /// Writable room for the next bytes: min(kPiece, claimed - size()) bytes at most (allocated
-  /// now), empty once size() == claimed.
+  /// now; std::bad_alloc when the system has none), empty once size() == claimed.
   std::span<std::uint8_t> room();
   /// n bytes were written at the start of room() (n <= its size).
   void arrived(std::size_t n);
@@ -49,9 +55,14 @@ public:
   std::vector<std::uint8_t> take();
 
 private:
+  struct Piece {
+    std::uint8_t* data = nullptr; // an anonymous mapping of `size` bytes
+    std::size_t size = 0;
+  };
+  static void release(Piece& p);
   std::uint64_t claimed_ = 0, size_ = 0;
-  std::vector<std::vector<std::uint8_t>> pieces_; // each full but the last
-  std::size_t last_used_ = 0;                     // bytes used in pieces_.back()
+  std::vector<Piece> pieces_; // each full but the last
+  std::size_t last_used_ = 0; // bytes used in pieces_.back()
 };
 
 } // namespace zdg

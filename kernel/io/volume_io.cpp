@@ -171,23 +171,11 @@ Image<std::int64_t> read_integer_image(const std::string& path, const RawLayout&
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw IoError(path + ": no such file");
     const NpyArray a = read_npy(path);
-    if (!dtype_is_float(a.dtype)) {
-      try {
-        return npy_to_int64(a);
-      } catch (const IoError& e) {
-        throw IoError(path + ": " + e.what());
-      }
-    }
+    if (!dtype_is_float(a.dtype)) return npy_to_int64(a, {}, path);
     return read_integer_image_of(path, make_scalar_volume(a));
   }
   const ScalarVolume v = read_volume(path, raw);
-  if (!v.scaled() && !dtype_is_float(v.array.dtype)) {
-    try {
-      return npy_to_int64(v.array, v.lower);
-    } catch (const IoError& e) {
-      throw IoError(path + ": " + e.what());
-    }
-  }
+  if (!v.scaled() && !dtype_is_float(v.array.dtype)) return npy_to_int64(v.array, v.lower, path);
   return read_integer_image_of(path, v);
 }
 
