@@ -113,8 +113,11 @@ TEST(InputFile, ArrivingBytesPeakIsTheBytesPlusOnePiece) {
   ASSERT_TRUE(run.finished);
   EXPECT_EQ(run.result, "ok");
   EXPECT_GE(run.growth_kib, static_cast<std::int64_t>(kBytes >> 10));
+#if !defined(__SANITIZE_ADDRESS__)
+  // (AddressSanitizer keeps freed blocks resident in its quarantine: the 30 MiB above stay.)
   EXPECT_LT(run.growth_kib, static_cast<std::int64_t>((kBytes + 2 * ArrivingBytes::kPiece) >> 10))
       << "KiB at the peak for " << (kBytes >> 20) << " MiB";
+#endif
 }
 
 } // namespace
