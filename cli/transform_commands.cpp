@@ -85,37 +85,33 @@ std::vector<std::int64_t> lower_of(const TransformArgs& a, int dim) {
   return low;
 }
 
-// The input's values as exact integers (power, rdt), in any format (read_integer_image).
-Image<std::int64_t> read_values(const TransformArgs& a) {
-  Image<std::int64_t> img = read_integer_image(a.in.path, raw_layout(a.in));
-  if (!a.lower.empty()) {
-    auto low = lower_of(a, img.dim());
-    img = Image<std::int64_t>(Domain(img.domain().extents(), low), std::move(img.values()));
-  }
-  return img;
-}
-
-// The input's object (dt, voronoi, rma): value != 0 by default, else the selection options.
-// An .npy of any dimension is read directly; every other input through the volume loader.
-Image<std::uint8_t> read_mask(const TransformArgs& a) {
-  Image<std::uint8_t> m;
-  if (!has_selection(a.in) && !raw_layout(a.in).given() && extension(a.in.path) == ".npy") {
-    if (!std::filesystem::exists(a.in.path)) throw IoError(a.in.path + ": no such file");
-    m = npy_to_mask(read_npy(a.in.path), {}, a.in.path);
-  } else {
-    const ObjectSelection selection = object_selection(a.in); // option errors before reading
-    m = select_object(load_volume(a.in, 0).volume, selection, a.threads).mask;
-  }
-  if (!a.lower.empty()) {
-    auto low = lower_of(a, m.dim());
-    m = Image<std::uint8_t>(Domain(m.domain().extents(), low), std::move(m.values()));
-  }
-  return m;
+// The image placed at the --lower bounds when given.
+template <class T>
+Image<T> at_lower(const TransformArgs& a, Image<T> img) {
+  if (a.lower.empty()) return img;
+  auto low = lower_of(a, img.dim());
+  return Image<T>(Domain(img.domain().extents(), low), std::move(img.values()));
 }
 
 // The lean, out-of-core and MPI paths map the .npy file itself: C order, no selection.
 bool mapped_input(const TransformArgs& a) {
   return !has_selection(a.in) && !raw_layout(a.in).given() && extension(a.in.path) == ".npy";
+}
+
+// The input's values as exact integers (power, rdt), in any format (read_integer_image).
+Image<std::int64_t> read_values(const TransformArgs& a) {
+  return at_lower(a, read_integer_image(a.in.path, raw_layout(a.in)));
+}
+
+// The input's object (dt, voronoi, rma): value != 0 by default, else the selection options.
+// An .npy of any dimension is read directly; every other input through the volume loader.
+Image<std::uint8_t> read_mask(const TransformArgs& a) {
+  if (mapped_input(a)) {
+    if (!std::filesystem::exists(a.in.path)) throw IoError(a.in.path + ": no such file");
+    return at_lower(a, npy_to_mask(read_npy(a.in.path), {}, a.in.path));
+  }
+  const ObjectSelection selection = object_selection(a.in); // option errors before reading
+  return at_lower(a, select_object(load_volume(a.in, 0).volume, selection, a.threads).mask);
 }
 
 TransformOptions make_options(const TransformArgs& a, int dim) {
