@@ -31,7 +31,9 @@
 #include <zdg/kernel/transforms/voronoi_map.hpp>
 #include <zdg/operations/arith_operations.hpp>
 #include <zdg/operations/dss_operations.hpp>
+#include <zdg/operations/surface_operations.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 #include <memory>
@@ -302,51 +304,25 @@ json serve_topology_skeleton(const json& j) {
           {"deleted", std::to_string(t.deleted)}};
 }
 
-// zdg surface on a whole 3D object (--component all): counts, Betti numbers and one row per
-// object component (by decreasing size) with its surfaces' totals.
+// zdg surface on a whole 3D object (--component all; operations/surface_operations.hpp):
+// counts, Betti numbers and one row per object component (by decreasing size) with its
+// surfaces' totals.
 json serve_surface(const json& j) {
-  const auto img = image_field(j);
-  if (img.dim() != 3) throw InvalidArgument("surface: the image is not 3D");
-  const AdjacencyPair pair = adjacency_field(j, 3);
-  ComponentOptions copt;
-  copt.threads = 1;
-  const Components comps = connected_components(img, pair.object, copt);
-  if (comps.count() == 0) throw InvalidArgument("surface: the object is empty");
-  const BettiNumbers b = betti_numbers(img, pair, 1);
-  const ImageSurfels sf = image_surfels(img, 1);
-  const ImageSurfaces ss = image_surfaces(img, sf, SurfaceConvention::of(pair), 1);
-  struct Stats {
-    std::int64_t voxels = 0, surfels = 0, surfaces = 0, euler = 0, genus = 0;
-  };
-  std::vector<Stats> per(static_cast<std::size_t>(comps.count()));
-  for (std::size_t l = 0; l < per.size(); ++l) per[l].voxels = comps.sizes[l];
-  for (const auto& s : ss.surfaces) {
-    auto& c = per[comps.labels[code_voxel(sf.codes[static_cast<std::size_t>(s.first)])] - 1];
-    c.surfels += s.surfels;
-    c.surfaces += 1;
-    c.euler += s.euler;
-    c.genus += s.genus;
-  }
-  json rows = json::array();
-  for (std::size_t l = 0; l < per.size(); ++l) {
-    rows.push_back({{"rank", std::to_string(l + 1)},
-                    {"voxels", std::to_string(per[l].voxels)},
-                    {"surfels", std::to_string(per[l].surfels)},
-                    {"surfaces", std::to_string(per[l].surfaces)},
-                    {"euler", std::to_string(per[l].euler)},
-                    {"genus", std::to_string(per[l].genus)}});
-  }
-  json betti = json::array();
-  for (int k = 0; k < 3; ++k) betti.push_back(std::to_string(b.b[static_cast<std::size_t>(k)]));
-  return {{"adjacency", pair.name()},
-          {"object_components", std::to_string(comps.count())},
-          {"components", rows},
-          {"surfels", std::to_string(sf.codes.size())},
-          {"surfaces", std::to_string(ss.surfaces.size())},
-          {"euler", std::to_string(b.euler)},
-          {"betti", betti},
-          {"pinched_pointels", std::to_string(ss.pinched_pointels)},
-          {"pinched_linels", std::to_string(ss.pinched_linels)}};
+  ObjectImage im;
+  im.mask = image_field(j);
+  if (im.mask.dim() != 3) throw InvalidArgument("surface: the image is not 3D");
+  const auto& v = im.mask.values();
+  if (std::all_of(v.begin(), v.end(), [](std::uint8_t x) { return x == 0; }))
+    throw InvalidArgument("surface: the object is empty");
+  im.spacing = {1, 1, 1};
+  im.origin = {0, 0, 0};
+  im.name = "surface";
+  SurfaceOptions o;
+  o.adjacency = adjacency_field(j, 3);
+  o.threads = 1;
+  json r = to_json(surface_operation(std::move(im), o));
+  for (const char* k : {"component", "estimates", "seconds", "cpu_seconds", "threads"}) r.erase(k);
+  return r;
 }
 
 json serve_plane_probe(const json& j) {

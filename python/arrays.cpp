@@ -36,6 +36,7 @@
 #include <zdg/kernel/transforms/reverse_distance_transform.hpp>
 #include <zdg/kernel/transforms/separable_engine.hpp>
 #include <zdg/kernel/transforms/voronoi_map.hpp>
+#include <zdg/operations/surface_operations.hpp>
 
 #include <pybind11/stl.h>
 
@@ -405,45 +406,53 @@ py::dict surfels_py(const py::object& obj, unsigned threads) {
   return d;
 }
 
-// The integral-invariant estimates at the surfels s of img, added to d: 'mean', and with
-// principal 'k1', 'k2', 'gaussian', 'normal', 'd1', 'd2' (one row per surfel, in s's order).
+// The integral-invariant estimates, one row per surfel, added to d: 'mean', and with the
+// principal curvatures 'k1', 'k2', 'gaussian', 'normal', 'd1', 'd2'.
+void put_ii_estimates(py::dict& d, std::vector<double> mean,
+                      const std::vector<IIPrincipalCurvatures>& pc) {
+  if (!mean.empty() || pc.empty()) {
+    const auto n = static_cast<std::int64_t>(mean.size());
+    d["mean"] = owning_array(std::move(mean), {n});
+    return;
+  }
+  const auto n = static_cast<std::int64_t>(pc.size());
+  std::vector<double> k1(pc.size()), k2(pc.size()), m(pc.size()), gauss(pc.size()),
+      normal(3 * pc.size()), d1(3 * pc.size()), d2(3 * pc.size());
+  for (std::size_t i = 0; i < pc.size(); ++i) {
+    k1[i] = pc[i].k1;
+    k2[i] = pc[i].k2;
+    m[i] = pc[i].mean();
+    gauss[i] = pc[i].gaussian();
+    const Point3<double>* vs[3] = {&pc[i].normal, &pc[i].d1, &pc[i].d2};
+    std::vector<double>* outs[3] = {&normal, &d1, &d2};
+    for (int j = 0; j < 3; ++j) {
+      (*outs[j])[3 * i] = vs[j]->x;
+      (*outs[j])[3 * i + 1] = vs[j]->y;
+      (*outs[j])[3 * i + 2] = vs[j]->z;
+    }
+  }
+  d["k1"] = owning_array(std::move(k1), {n});
+  d["k2"] = owning_array(std::move(k2), {n});
+  d["mean"] = owning_array(std::move(m), {n});
+  d["gaussian"] = owning_array(std::move(gauss), {n});
+  d["normal"] = owning_array(std::move(normal), {n, 3});
+  d["d1"] = owning_array(std::move(d1), {n, 3});
+  d["d2"] = owning_array(std::move(d2), {n, 3});
+}
+
+// The integral-invariant estimates at the surfels s of img, added to d (put_ii_estimates).
 void add_ii_estimates(py::dict& d, const Image<std::uint8_t>& img, const ImageSurfels& s, double h,
                       double radius, bool principal, unsigned threads) {
-  const std::int64_t n = s.size();
-  if (!principal) {
-    std::vector<double> mean = [&] {
-      py::gil_scoped_release release;
-      return volume_ii_mean_curvature(img, s, h, radius, threads);
-    }();
-    d["mean"] = owning_array(std::move(mean), {n});
-  } else {
-    std::vector<IIPrincipalCurvatures> pc = [&] {
-      py::gil_scoped_release release;
-      return volume_ii_principal_curvatures(img, s, h, radius, threads);
-    }();
-    std::vector<double> k1(pc.size()), k2(pc.size()), mean(pc.size()), gauss(pc.size()),
-        normal(3 * pc.size()), d1(3 * pc.size()), d2(3 * pc.size());
-    for (std::size_t i = 0; i < pc.size(); ++i) {
-      k1[i] = pc[i].k1;
-      k2[i] = pc[i].k2;
-      mean[i] = pc[i].mean();
-      gauss[i] = pc[i].gaussian();
-      const Point3<double>* vs[3] = {&pc[i].normal, &pc[i].d1, &pc[i].d2};
-      std::vector<double>* outs[3] = {&normal, &d1, &d2};
-      for (int j = 0; j < 3; ++j) {
-        (*outs[j])[3 * i] = vs[j]->x;
-        (*outs[j])[3 * i + 1] = vs[j]->y;
-        (*outs[j])[3 * i + 2] = vs[j]->z;
-      }
-    }
-    d["k1"] = owning_array(std::move(k1), {n});
-    d["k2"] = owning_array(std::move(k2), {n});
-    d["mean"] = owning_array(std::move(mean), {n});
-    d["gaussian"] = owning_array(std::move(gauss), {n});
-    d["normal"] = owning_array(std::move(normal), {n, 3});
-    d["d1"] = owning_array(std::move(d1), {n, 3});
-    d["d2"] = owning_array(std::move(d2), {n, 3});
+  std::vector<double> mean;
+  std::vector<IIPrincipalCurvatures> pc;
+  {
+    py::gil_scoped_release release;
+    if (principal)
+      pc = volume_ii_principal_curvatures(img, s, h, radius, threads);
+    else
+      mean = volume_ii_mean_curvature(img, s, h, radius, threads);
   }
+  put_ii_estimates(d, std::move(mean), pc);
 }
 
 py::dict ii_curvature_py(const py::object& obj, double h, double radius, bool principal,
@@ -461,15 +470,22 @@ py::dict ii_curvature_py(const py::object& obj, double h, double radius, bool pr
   return d;
 }
 
+// zdg surface's operation (operations/surface_operations.hpp) on the whole object, with its
+// mesh; the estimates at step h and radius R (physical units) when asked.
 py::dict surface_py(const py::object& obj, const std::string& mesh,
                     const std::optional<std::string>& adjacency, const py::object& spacing,
                     const py::object& estimate, double h, const py::object& radius,
                     unsigned threads) {
   Image<std::uint8_t> img = image_of(obj, "surface");
   if (img.dim() != 3) throw InvalidArgument("surface: a 3D volume is needed");
-  const AdjacencyPair pair = pair_of(adjacency, 3);
-  const SurfaceConvention conv = SurfaceConvention::of(pair);
-  VoxelPlacement place = VoxelPlacement::lattice(VoxelGrid::of(img.domain()));
+  SurfaceOptions o;
+  o.adjacency = pair_of(adjacency, 3);
+  o.threads = threads;
+  ObjectImage im;
+  im.name = "surface";
+  im.spacing = {1, 1, 1};
+  const Domain& dom = img.domain();
+  im.origin = {double(dom.lower(0)), double(dom.lower(1)), double(dom.lower(2))};
   if (!spacing.is_none()) {
     std::vector<double> sp;
     for (py::handle v : py::iter(spacing)) sp.push_back(v.cast<double>());
@@ -477,24 +493,33 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
         !(std::isfinite(sp[0]) && std::isfinite(sp[1]) && std::isfinite(sp[2]))) {
       throw InvalidArgument("surface: spacing must be three positive numbers (z, y, x)");
     }
-    place.spacing = {sp[2], sp[1], sp[0]};
+    im.spacing = sp;
   }
   if (mesh != "primal" && mesh != "marching-cubes") {
     throw InvalidArgument("surface: mesh '" + mesh + "' is not 'primal' or 'marching-cubes'");
   }
-  if (!estimate.is_none() && mesh != "primal") {
-    throw InvalidArgument("surface: estimates are per surfel, that is per face of the primal "
-                          "mesh: use mesh='primal'");
+  o.mesh = mesh == "primal" ? SurfaceMesh::primal : SurfaceMesh::marching_cubes;
+  if (!estimate.is_none()) {
+    if (mesh != "primal") {
+      throw InvalidArgument("surface: estimates are per surfel, that is per face of the primal "
+                            "mesh: use mesh='primal'");
+    }
+    const std::string what = py::str(estimate);
+    if (what != "mean" && what != "principal") {
+      throw InvalidArgument("surface: estimate '" + what + "' is not 'mean' or 'principal'");
+    }
+    if (radius.is_none()) throw InvalidArgument("surface: an estimate needs radius=R");
+    const double R = radius.cast<double>();
+    o.estimates = {what == "mean" ? "ii-mean" : "ii-k1"};
+    o.radius = {R, false, py::str(radius).cast<std::string>()};
+    o.step = h;
   }
-  ImageSurfels sf = [&] {
+  im.mask = std::move(img);
+  SurfaceResult r = [&] {
     py::gil_scoped_release release;
-    return image_surfels(img, threads);
+    return surface_operation(std::move(im), o);
   }();
-  PolygonMesh m = [&] {
-    py::gil_scoped_release release;
-    return mesh == "primal" ? primal_surface_mesh(img, sf, conv, place, threads)
-                            : marching_cubes(img, sf, conv, place, nullptr, threads);
-  }();
+  PolygonMesh& m = *r.mesh;
   const std::int64_t nv = m.vertex_count(), nf = m.face_count();
   std::vector<double> xyz(static_cast<std::size_t>(3 * nv));
   for (std::int64_t i = 0; i < nv; ++i) {
@@ -506,15 +531,11 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
   py::dict d;
   d["vertices"] = owning_array(std::move(xyz), {nv, 3});
   d["faces"] = owning_array(std::move(m.indices), {nf, static_cast<std::int64_t>(m.face_size)});
-  d["adjacency"] = pair.name();
-  if (!estimate.is_none()) {
-    const std::string what = py::str(estimate);
-    if (what != "mean" && what != "principal") {
-      throw InvalidArgument("surface: estimate '" + what + "' is not 'mean' or 'principal'");
-    }
-    if (radius.is_none()) throw InvalidArgument("surface: an estimate needs radius=R");
-    add_ii_estimates(d, img, sf, h, radius.cast<double>(), what == "principal", threads);
-  }
+  d["adjacency"] = r.adjacency.name();
+  d["betti"] = py::make_tuple(r.betti.b[0], r.betti.b[1], r.betti.b[2]);
+  d["object_components"] = r.object_components;
+  d["surfaces"] = r.surfaces;
+  if (!o.estimates.empty()) put_ii_estimates(d, std::move(r.estimates.mean), r.estimates.principal);
   return d;
 }
 
