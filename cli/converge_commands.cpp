@@ -198,7 +198,8 @@ nlohmann::json config_json(const ExperimentConfig& c, const ExperimentResult& r,
           {"box", c.box ? nlohmann::json({c.box->first, c.box->second}) : nlohmann::json()},
           {"fit_levels", c.fit_levels},
           {"tolerance", c.tolerance},
-          {"threads", c.threads},
+          {"threads", r.threads},
+          {"threads_requested", c.threads},
           {"title", c.title},
           {"config_file", o.config_file}};
 }
@@ -430,7 +431,8 @@ void add_text_option(CLI::App* cmd, const std::string& name, std::optional<std::
 
 void add_run_options(CLI::App* cmd, ConvergeOptions& o) {
   cmd->add_option("-o,--output", o.output, "Output directory (results.csv, summary.json, plot)");
-  add_text_option(cmd, "--threads", o.threads, "Worker threads (runs in parallel), 1..1024");
+  add_text_option(cmd, "--threads", o.threads,
+                  "Worker threads (runs in parallel), 0..1024 (default 0: all cores)");
   cmd->add_flag("--json", o.json, "Print runs and fits as JSON on stdout");
   cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
   cmd->add_flag("--force", o.force, "Replace results already in the output directory");

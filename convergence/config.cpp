@@ -230,7 +230,8 @@ ExperimentConfig validate_experiment_settings(const ExperimentSettings& s) {
     }
   }
   if (s.threads) {
-    c.threads = static_cast<int>(parse_integer_in(s.threads->text, s.threads->origin, 1, 1024));
+    c.threads =
+        static_cast<unsigned>(parse_integer_in(s.threads->text, s.threads->origin, 0, 1024));
   }
   if (s.tolerance) {
     c.tolerance = parse_real(s.tolerance->text, s.tolerance->origin);

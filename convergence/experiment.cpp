@@ -115,8 +115,8 @@ ExperimentPlan plan_experiment(const ExperimentConfig& config) {
   if (config.translations < 0 || config.translations > 100000) {
     throw InvalidArgument("translations must be in 0..100000");
   }
-  if (config.threads < 1 || config.threads > 1024) {
-    throw InvalidArgument("threads must be in 1..1024");
+  if (config.threads > 1024) {
+    throw InvalidArgument("threads must be in 0..1024 (0: all cores)");
   }
   if (config.fit_levels < 0 || config.fit_levels == 1 || config.fit_levels > 100000) {
     throw InvalidArgument("fit levels must be 0 (all) or in 2..100000");
@@ -237,7 +237,7 @@ bool record_order(const RunRecord& a, const RunRecord& b) {
 } // namespace
 
 std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConfig& config,
-                                const ProgressFn& progress) {
+                                const ProgressFn& progress, unsigned* workers) {
   // One job per run, except that the entries whose estimators share a computation (the 3D
   // integral invariants) run as one job per (h, shape, translation), one after the other on
   // one thread: their cache then computes the shared part once. As separate jobs (the
@@ -284,7 +284,8 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
   std::vector<RunRecord> records(runs);
   std::atomic<std::size_t> done{0};
   std::mutex mutex;
-  parallel_for(std::int64_t(jobs.size()), unsigned(config.threads), [&](std::int64_t ji) {
+  if (workers != nullptr) *workers = worker_count(config.threads, std::int64_t(jobs.size()));
+  parallel_for(std::int64_t(jobs.size()), config.threads, [&](std::int64_t ji) {
     const Job& job = jobs[std::size_t(ji)];
     const Shape& shape = *plan.shapes[job.shape];
     for (std::size_t j = 0; j < job.entries.size(); ++j) {
@@ -422,7 +423,7 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
   const ExperimentPlan plan = plan_experiment(config);
   ExperimentResult result;
   result.entries = plan.entries;
-  result.runs = run_plan(plan, config, progress);
+  result.runs = run_plan(plan, config, progress, &result.threads);
   result.fits = fit_experiment(plan, aggregate_levels(result.runs), config.fit_levels,
                                config.tolerance, result.all_pass);
   return result;

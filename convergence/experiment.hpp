@@ -51,8 +51,8 @@ struct ExperimentConfig {
   std::optional<std::pair<double, double>> box; // [LO, HI]^d, default: the shape's box
   int fit_levels = 0;                           // 0: all levels
   double tolerance = 0.1;
-  int threads = 1;
-  std::string title; // plot title (provenance only)
+  unsigned threads = 0; // 0: all cores (worker_count, kernel/parallel/parallel_for.hpp)
+  std::string title;    // plot title (provenance only)
   // Test functions of the estimators that take one (`u`, the Laplace-Beltrami estimators):
   // each such entry without its own `u=` runs once per function; empty: the defaults
   // (default_test_functions()).
@@ -132,6 +132,7 @@ struct ExperimentResult {
   std::vector<RunRecord> runs;         // order: shape, entry, h decreasing, translation
   std::vector<FitRecord> fits;
   bool all_pass = true;
+  unsigned threads = 1; // the workers the runs used (worker_count of the config's threads)
 };
 
 /// Progress callback: (runs done, runs total, the run just finished).
@@ -142,8 +143,9 @@ using ProgressFn = std::function<void(std::size_t, std::size_t, const RunRecord&
 ExperimentPlan plan_experiment(const ExperimentConfig& config);
 
 /// Scheduling: runs every job of the plan; records in the order of ExperimentResult::runs.
+/// `workers`, when given, receives the number of workers used.
 std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConfig& config,
-                                const ProgressFn& progress = {});
+                                const ProgressFn& progress = {}, unsigned* workers = nullptr);
 
 /// Aggregation per (shape, entry, h), ordered by shape, entry, h decreasing. O(n log n).
 std::vector<LevelErrors> aggregate_levels(std::vector<RunRecord> runs);

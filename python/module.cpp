@@ -353,7 +353,7 @@ std::optional<Setting> setting(const py::object& v, const std::string& name) {
 py::dict converge(const std::vector<std::string>& shapes,
                   const std::vector<std::string>& estimators, const py::object& h,
                   const py::object& k, const py::object& alpha, int translations,
-                  std::uint64_t seed, int fit_levels, double tolerance, int threads,
+                  std::uint64_t seed, int fit_levels, double tolerance, unsigned threads,
                   const py::object& box) {
   ExperimentSettings s;
   for (const auto& x : shapes) s.shapes.push_back({x, "converge(shapes=...)"});
@@ -422,6 +422,7 @@ py::dict converge(const std::vector<std::string>& shapes,
   d["runs"] = runs;
   d["fits"] = fits;
   d["all_pass"] = r.all_pass;
+  d["threads"] = r.threads;
   return d;
 }
 
@@ -514,7 +515,7 @@ PYBIND11_MODULE(_zdg, m) {
   m.def("converge", &converge, py::arg("shapes"), py::arg("estimators"), py::kw_only(),
         py::arg("h"), py::arg("k") = py::none(), py::arg("alpha") = py::none(),
         py::arg("translations") = 0, py::arg("seed") = 0, py::arg("fit_levels") = 0,
-        py::arg("tolerance") = 0.1, py::arg("threads") = 1, py::arg("box") = py::none(),
+        py::arg("tolerance") = 0.1, py::arg("threads") = 0, py::arg("box") = py::none(),
         "A multigrid convergence experiment (zdg converge): every shape x estimator entry x "
         "grid step h (a list of numbers, or the text 'HMAX:HMIN:N') x translation, the error "
         "statistics per run, then log-log fits of the error against h and the verdict against "

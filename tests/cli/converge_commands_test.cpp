@@ -157,7 +157,7 @@ TEST(ConvergeCli, BadInputRowsExitTwoWithOneLineAndWriteNothing) {
       {"", tbase + "tolerance = -3.0\n", "key 'tolerance'"},
       {"", tbase + "tolerance = nan\n", "key 'tolerance'"},
       {"", tbase + "translations = -2\n", "key 'translations'"},
-      {"", tbase + "threads = 0\n", "key 'threads'"},
+      {"", tbase + "threads = 1025\n", "key 'threads'"},
       {"", tbase + "fit_levels = 1\n", "key 'fit_levels'"},
       {"", tbase + "k = 0\n", "key 'k'"},
       {"", tbase + "box = \"3:1\"\n", "key 'box'"},

@@ -92,7 +92,7 @@ TEST(ExperimentConfig, TomlKeysAndEstimatorEntries) {
 TEST(ExperimentConfig, TomlValuesAreCheckedLikeTheFlags) {
   const std::pair<const char*, const char*> rows[] = {
       {"tolerance", "inf"},  {"tolerance", "1e300"}, {"tolerance", "-3.0"},   {"tolerance", "nan"},
-      {"tolerance", "11"},   {"translations", "-1"}, {"translations", "1e9"}, {"threads", "0"},
+      {"tolerance", "11"},   {"translations", "-1"}, {"translations", "1e9"}, {"threads", "-1"},
       {"threads", "100000"}, {"fit-levels", "1"},    {"seed", "-5"},          {"k", "0"},
       {"k", "inf"},          {"alpha", "-1"},        {"alpha", "nan"},
   };

@@ -3,6 +3,7 @@
 #include "tests/support/experiments.hpp"
 #include "tests/support/tower.hpp"
 #include <zdg/arith/error.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <gtest/gtest.h>
 
@@ -240,3 +241,26 @@ TEST(Experiment, EntriesOfOneEstimatorStayApart) {
 }
 
 } // namespace
+
+// Issue #34, one threads rule: 0 means all cores, the result reports the workers used
+// (worker_count: never more than the jobs), and the records do not depend on the count.
+TEST(Experiment, ThreadsZeroIsAllCoresAndTheCountUsedIsReported) {
+  zdg::ExperimentConfig c;
+  c.shapes = {"ellipse:20,7"};
+  c.estimators = {"gauss-area"};
+  c.hs = zdg::parse_grid_steps("0.5,0.25");
+  EXPECT_EQ(c.threads, 0u);
+  const auto all = zdg::run_experiment(c);
+  EXPECT_EQ(all.threads, zdg::worker_count(0, 2));
+  EXPECT_LE(all.threads, 2u);
+  c.threads = 1;
+  const auto one = zdg::run_experiment(c);
+  EXPECT_EQ(one.threads, 1u);
+  ASSERT_EQ(one.runs.size(), all.runs.size());
+  for (std::size_t i = 0; i < one.runs.size(); ++i) {
+    EXPECT_EQ(one.runs[i].errors.linf, all.runs[i].errors.linf);
+    EXPECT_EQ(one.runs[i].errors.l2, all.runs[i].errors.l2);
+  }
+  c.threads = 1025;
+  EXPECT_THROW(zdg::run_experiment(c), zdg::InvalidArgument);
+}

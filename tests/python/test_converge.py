@@ -10,6 +10,7 @@ import zdg
 def test_ii_curvature_on_the_ellipse_converges_at_the_proven_rate():
     r = zdg.converge(["ellipse:20,7"], ["ii-curvature"], h="0.5:0.05:5", k=5, threads=2)
     assert len(r["runs"]) == 5
+    assert r["threads"] == 2  # five runs on two workers (issue #34: the count used)
     hs = [x["h"] for x in r["runs"]]
     assert hs == sorted(hs, reverse=True) and math.isclose(hs[0], 0.5) and math.isclose(hs[-1], 0.05)
     assert all(x["shape"] == "ellipse:20,7" and x["estimator"] == "ii-curvature" and x["n"] > 0
