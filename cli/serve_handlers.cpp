@@ -20,6 +20,7 @@
 #include <zdg/kernel/hulls/convex_body_hull.hpp>
 #include <zdg/kernel/hulls/lattice_hull_2d.hpp>
 #include <zdg/kernel/hulls/lattice_polygon.hpp>
+#include <zdg/kernel/surfaces/digital_plane_recognition.hpp>
 #include <zdg/kernel/surfaces/image_surfaces.hpp>
 #include <zdg/kernel/surfaces/image_surfels.hpp>
 #include <zdg/kernel/surfaces/plane_probing.hpp>
@@ -27,6 +28,7 @@
 #include <zdg/kernel/topology/betti_numbers.hpp>
 #include <zdg/kernel/topology/connected_components.hpp>
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
+#include <zdg/kernel/topology/simple_points.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/voronoi_map.hpp>
 #include <zdg/operations/arith_operations.hpp>
@@ -346,23 +348,155 @@ json serve_plane_probe(const json& j) {
           {"integer_type", std::string(to_string(r.served))}};
 }
 
+json serve_hull_ellipse(const json& j) {
+  auto cx = parse_rational<BigInt>(text_field(j, "cx"));
+  auto cy = parse_rational<BigInt>(text_field(j, "cy"));
+  auto a = parse_rational<BigInt>(text_field(j, "a"));
+  auto b = parse_rational<BigInt>(text_field(j, "b"));
+  ellipse_body(cx, cy, a, b); // InvalidArgument unless a, b > 0
+  auto h = ellipse_hull_exact(cx, cy, a, b, bound_field(j, "max_vertices", kHullMaxVertices));
+  return polygon_json(h.value.vertices, h.served);
+}
+
+// "points": a list of [x, y, z] integers.
+std::vector<Point3<BigInt>> points3_field(const json& j) {
+  if (!j.contains("points") || !j.at("points").is_array())
+    throw InvalidArgument("request: 'points' is not a list of [x, y, z]");
+  std::vector<Point3<BigInt>> pts;
+  for (const auto& e : j.at("points")) {
+    if (!e.is_array() || e.size() != 3) throw InvalidArgument("request: a point is not [x, y, z]");
+    auto x = json_integer(e[0]), y = json_integer(e[1]), z = json_integer(e[2]);
+    if (!x || !y || !z) throw InvalidArgument("request: a coordinate is not an integer");
+    pts.push_back({*x, *y, *z});
+  }
+  if (pts.empty()) throw InvalidArgument("request: no points");
+  return pts;
+}
+
+// The keys of zdg plane recognize --json.
+json serve_plane_recognize(const json& j) {
+  const auto pts = points3_field(j);
+  auto r = recognize_naive_plane_exact(std::span<const Point3<BigInt>>(pts));
+  const auto& p = r.value;
+  json out{{"is_plane", p.is_plane},
+           {"points", pts.size()},
+           {"served", std::string(to_string(r.served))}};
+  if (p.is_plane) {
+    out["normal"] = json::array({p.normal.x.str(), p.normal.y.str(), p.normal.z.str()});
+    out["mu"] = p.mu.str();
+    out["omega"] = p.omega.str();
+  }
+  return out;
+}
+
+// The labels (1 = the largest component, 0 off the object) and the sizes, by decreasing size.
+json serve_topology_components(const json& j) {
+  const auto img = image_field(j);
+  const AdjacencyPair pair = adjacency_field(j, img.dim());
+  ComponentOptions opt;
+  opt.threads = 1;
+  const Components c = connected_components(img, pair.object, opt);
+  std::vector<json> flat(c.labels.values().begin(), c.labels.values().end());
+  json sizes = json::array();
+  for (auto s : c.sizes) sizes.push_back(std::to_string(s));
+  return {{"labels", nested(flat, img.domain())},
+          {"adjacency", pair.name()},
+          {"components", std::to_string(c.count())},
+          {"sizes", sizes}};
+}
+
+// zdg contour on a whole 2D object (operations/surface_operations.hpp): the contours, Betti
+// numbers and the estimates asked for ("estimates": a list of names, "radius": "R" or "Rv").
+json serve_contour(const json& j) {
+  ObjectImage im;
+  im.mask = image_field(j);
+  if (im.mask.dim() != 2) throw InvalidArgument("contour: the image is not 2D");
+  const auto& v = im.mask.values();
+  if (std::all_of(v.begin(), v.end(), [](std::uint8_t x) { return x == 0; }))
+    throw InvalidArgument("contour: the object is empty");
+  im.spacing = {1, 1};
+  im.origin = {0, 0};
+  im.name = "contour";
+  ContourOptions o;
+  if (j.contains("adjacency")) o.adjacency = parse_adjacency_pair(text_field(j, "adjacency"), 2);
+  if (j.contains("estimates")) {
+    if (!j.at("estimates").is_array())
+      throw InvalidArgument("request: 'estimates' is not a list of names");
+    for (const auto& e : j.at("estimates")) {
+      if (!e.is_string()) throw InvalidArgument("request: an estimate is not a name");
+      o.estimates.push_back(e.get<std::string>());
+    }
+  }
+  o.radius = parse_estimator_radius(j.contains("radius") ? text_field(j, "radius") : "");
+  o.threads = 1;
+  json r = to_json(contour_operation(std::move(im), o));
+  for (const char* k : {"component", "seconds", "cpu_seconds", "threads"}) r.erase(k);
+  return r;
+}
+
+// "halfplanes": a list of [a, b, c] (a x + b y <= c), each an integer or a rational as text.
+json serve_hull_halfplanes(const json& j) {
+  if (!j.contains("halfplanes") || !j.at("halfplanes").is_array() || j.at("halfplanes").empty())
+    throw InvalidArgument("request: 'halfplanes' is not a list of [a, b, c]");
+  std::vector<HalfPlane<BigInt>> hs;
+  for (const auto& e : j.at("halfplanes")) {
+    if (!e.is_array() || e.size() != 3)
+      throw InvalidArgument("request: a half-plane is not [a, b, c]");
+    Rational<BigInt> c[3];
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (e[k].is_string()) {
+        c[k] = parse_rational<BigInt>(e[k].get<std::string>());
+      } else if (const auto v = json_integer(e[k])) {
+        c[k] = Rational<BigInt>(*v);
+      } else {
+        throw InvalidArgument("request: a coefficient is not an integer or a rational text");
+      }
+    }
+    hs.push_back({c[0], c[1], c[2]});
+  }
+  auto r = halfplane_hull_exact(std::span<const HalfPlane<BigInt>>(hs));
+  if (r.value.region != RegionKind::bounded) return {{"region", to_string(r.value.region)}};
+  json out = polygon_json(r.value.vertices, r.served);
+  out["region"] = "bounded";
+  return out;
+}
+
+// The simple points of the object (a mask) and their count.
+json serve_topology_simple(const json& j) {
+  const auto img = image_field(j);
+  const AdjacencyPair pair = adjacency_field(j, img.dim());
+  std::int64_t count = 0;
+  const Image<std::uint8_t> simple = simple_point_mask(img, pair, &count);
+  std::vector<json> flat(simple.values().begin(), simple.values().end());
+  return {{"simple", nested(flat, img.domain())},
+          {"adjacency", pair.name()},
+          {"count", std::to_string(count)}};
+}
+
 using Handler = json (*)(const json&);
 
 const std::map<std::string, Handler>& handlers() {
-  static const std::map<std::string, Handler> h = {{"floor-sum", serve_floor_sum},
-                                                   {"cf", serve_cf},
-                                                   {"christoffel", serve_christoffel},
-                                                   {"dss recognize", serve_dss_recognize},
-                                                   {"dss subsegment", serve_dss_subsegment},
-                                                   {"hull points", serve_hull_points},
-                                                   {"hull disc", serve_hull_disc},
-                                                   {"transform dt", serve_transform_dt},
-                                                   {"topology betti", serve_topology_betti},
-                                                   {"dss cover", serve_dss_cover},
-                                                   {"transform voronoi", serve_transform_voronoi},
-                                                   {"topology skeleton", serve_topology_skeleton},
-                                                   {"plane probe", serve_plane_probe},
-                                                   {"surface", serve_surface}};
+  static const std::map<std::string, Handler> h = {
+      {"floor-sum", serve_floor_sum},
+      {"cf", serve_cf},
+      {"christoffel", serve_christoffel},
+      {"dss recognize", serve_dss_recognize},
+      {"dss subsegment", serve_dss_subsegment},
+      {"hull points", serve_hull_points},
+      {"hull disc", serve_hull_disc},
+      {"transform dt", serve_transform_dt},
+      {"topology betti", serve_topology_betti},
+      {"dss cover", serve_dss_cover},
+      {"transform voronoi", serve_transform_voronoi},
+      {"topology skeleton", serve_topology_skeleton},
+      {"plane probe", serve_plane_probe},
+      {"surface", serve_surface},
+      {"contour", serve_contour},
+      {"hull ellipse", serve_hull_ellipse},
+      {"hull halfplanes", serve_hull_halfplanes},
+      {"topology simple", serve_topology_simple},
+      {"plane recognize", serve_plane_recognize},
+      {"topology components", serve_topology_components}};
   return h;
 }
 

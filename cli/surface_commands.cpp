@@ -11,37 +11,20 @@
 //               [--estimate ii-curvature,...] [--radius R|Rv] [-o OUT.svg] [--csv F]
 //               [--png F [--color ii-curvature] [--png-size WxH]] ...
 //
-// The command parses, calls the library and prints; the algorithms are in kernel/
-// (image_surfels, image_surfaces, primal_surface_mesh, marching_cubes, image_contours,
-// connected_components, betti_numbers, mesh_io, render_mesh, render_contours) and
-// estimators/ (volume_ii, contour_estimators, digital_integration, heat_geodesics,
-// ambrosio_tortorelli).
+// The command parses, reads the image (cli/volume_input), calls surface_operation /
+// contour_operation (operations/surface_operations.hpp: the whole pipeline and its estimator
+// registry), writes the outputs and prints.
 // Outputs are declared to an OutputSet before the input is read (a missing folder or an
 // existing file without --force fails at once) and renamed into place at the end.
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/cli/volume_input.hpp>
-#include <zdg/estimators/ambrosio_tortorelli.hpp>
-#include <zdg/estimators/contour_estimators.hpp>
-#include <zdg/estimators/digital_integration.hpp>
-#include <zdg/estimators/heat_geodesics.hpp>
-#include <zdg/estimators/volume_ii.hpp>
-#include <zdg/kernel/curves/image_contours.hpp>
 #include <zdg/kernel/io/mesh_io.hpp>
 #include <zdg/kernel/io/output_files.hpp>
-#include <zdg/kernel/parallel/parallel_for.hpp>
-#include <zdg/kernel/render/contour_svg.hpp>
 #include <zdg/kernel/render/picture.hpp>
 #include <zdg/kernel/render/render_contours.hpp>
 #include <zdg/kernel/render/render_mesh.hpp>
-#include <zdg/kernel/surfaces/image_surfaces.hpp>
-#include <zdg/kernel/surfaces/image_surfels.hpp>
-#include <zdg/kernel/surfaces/marching_cubes.hpp>
-#include <zdg/kernel/surfaces/primal_surface_mesh.hpp>
-#include <zdg/kernel/surfaces/surfel_complex.hpp>
 #include <zdg/kernel/topology/adjacency.hpp>
-#include <zdg/kernel/topology/betti_numbers.hpp>
-#include <zdg/kernel/topology/connected_components.hpp>
 #include <zdg/operations/progress.hpp>
 #include <zdg/operations/surface_operations.hpp>
 
@@ -53,14 +36,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
-#include <fstream>
-#include <limits>
-#include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <string>
 #include <tuple>
 #include <unistd.h>
@@ -97,27 +75,6 @@ std::int64_t parse_component(const std::string& text) {
     throw InvalidArgument("--component '" + text +
                           "': expected largest, all, or a rank K >= 1 (by decreasing size)");
   return k;
-}
-
-struct Radius {
-  double value = 5;
-  bool voxels = true;
-};
-
-// "R" (physical units) or "Rv" (voxels / pixels).
-Radius parse_radius(const std::string& text) {
-  Radius r;
-  std::string t = text;
-  r.voxels = !t.empty() && t.back() == 'v';
-  if (r.voxels) t.pop_back();
-  double v = 0;
-  const auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-  if (t.empty() || ec != std::errc() || p != t.data() + t.size() || !std::isfinite(v) || v <= 0)
-    throw InvalidArgument("--radius '" + text +
-                          "': expected a positive number, in physical units (R) or in voxels "
-                          "(Rv, e.g. 5v)");
-  r.value = v;
-  return r;
 }
 
 void refuse_input_as_output(const std::string& input, const std::string& output) {
@@ -251,11 +208,6 @@ ObjectImage object_image(LoadedObject& obj, const std::string& path) {
   return im;
 }
 
-EstimatorRadius estimator_radius(const std::string& text) {
-  const Radius r = parse_radius(text.empty() ? "5v" : text);
-  return {r.value, r.voxels, text};
-}
-
 // ------------------------------------------------------------------------------------------
 // zdg surface
 
@@ -359,7 +311,7 @@ void run_surface(const SurfaceArgs& a) {
     render.value_min = r->first;
     render.value_max = r->second;
   }
-  o.radius = estimator_radius(a.radius);
+  o.radius = parse_estimator_radius(a.radius);
   if (a.mesh != "primal" && a.mesh != "marching-cubes")
     throw InvalidArgument("--mesh '" + a.mesh + "': expected primal or marching-cubes");
   if (!a.output.empty() || !a.picture.png.empty())
@@ -506,7 +458,7 @@ void run_contour(const ContourArgs& a) {
     render.value_min = r->first;
     render.value_max = r->second;
   }
-  o.radius = estimator_radius(a.radius);
+  o.radius = parse_estimator_radius(a.radius);
   o.threads = a.threads;
   o.progress = progress_printer(a.quiet);
   if (!a.output.empty()) {

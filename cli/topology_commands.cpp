@@ -187,14 +187,8 @@ void run_simple(const TopologyArgs& a) {
   const auto mask = read_object(a);
   const auto pair = pair_of(a, mask.dim());
   const auto t0 = std::chrono::steady_clock::now();
-  Image<std::uint8_t> simple(mask.domain(), std::uint8_t{0});
   std::int64_t count = 0;
-  for (std::int64_t i = 0; i < mask.size(); ++i) {
-    if (mask[i] != 0 && is_simple_by_definition(pair, neighbourhood_configuration(mask, i))) {
-      simple[i] = 1;
-      ++count;
-    }
-  }
+  const Image<std::uint8_t> simple = simple_point_mask(mask, pair, &count);
   const double secs = since(t0);
   if (out) {
     write_image(staging, a.output, mask.domain(),

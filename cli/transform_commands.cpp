@@ -12,7 +12,6 @@
 #include <zdg/kernel/io/pgm_io.hpp>
 #include <zdg/kernel/io/vol_io.hpp>
 #include <zdg/kernel/io/volume_io.hpp>
-#include <zdg/kernel/parallel/populate_pages.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/distributed_transform.hpp>
 #include <zdg/kernel/transforms/out_of_core_transform.hpp>
@@ -21,6 +20,7 @@
 #include <zdg/kernel/transforms/reverse_distance_transform.hpp>
 #include <zdg/kernel/transforms/separable_engine.hpp>
 #include <zdg/kernel/transforms/voronoi_map.hpp>
+#include <zdg/operations/transform_operations.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -238,16 +238,6 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The narrowest unsigned dtype that holds every value up to `bound` (none past 64 bits): the
-// output type of every distance transform the command writes.
-std::optional<DType> narrowest_unsigned(const BigInt& bound) {
-  if (bound <= 255) return DType::U8;
-  if (bound <= 65535) return DType::U16;
-  if (bound <= BigInt(4294967295ULL)) return DType::U32;
-  if (bound <= BigInt(std::numeric_limits<std::uint64_t>::max())) return DType::U64;
-  return std::nullopt;
-}
-
 // fn(std::type_identity<T>{}) with T the unsigned type of the dtype (uint64 for any other).
 template <class Fn>
 void with_unsigned(DType dtype, Fn&& fn) {
@@ -342,63 +332,6 @@ Domain npy_domain(const TransformArgs& a, const NpyLayout& lay) {
   return Domain(lay.shape, low);
 }
 
-// The lean path of `dt` (issue #15): an integer .npy in, an .npy out. The input file is mapped
-// and read in place (items of any integer width: background when all bytes are 0, as
-// npy_to_mask reads them), the values are computed in one buffer (or out of core) and written
-// once, in the narrowest unsigned dtype that holds the largest value: the peak memory is about
-// the input's bytes plus the output's, where the general path below holds the input twice and
-// the output three times. Returns false (nothing done) for what it does not take: other
-// formats, floats, values past 64 bits.
-template <class T>
-void lean_dt_as(TransformArgs& a, const NpyLayout& lay, const Domain& dom,
-                const TransformOptions& opt, DType dtype) {
-  const auto t0 = std::chrono::steady_clock::now();
-  MappedInput in(a.in.path);
-  const std::uint8_t* mask = in.data() + lay.data_offset;
-  const int item = static_cast<int>(dtype_size(lay.dtype));
-  // Out of core when asked, or when the in-memory transform would pass the memory budget.
-  const std::uint64_t need = in_memory_transform_bytes<T>(dom, opt, item);
-  const bool budget_given = !a.memory.empty();
-  const std::uint64_t budget = budget_given ? parse_memory(a.memory) : std::uint64_t{4} << 30;
-  const bool out_of_core = a.out_of_core || (budget_given && need > budget);
-  // In memory, the background is checked before the output's space is reserved (out of core,
-  // the transform checks it slab by slab, within the budget).
-  if (!out_of_core) require_background(dom, mask, opt, item);
-  const std::string header = npy_header_bytes(dtype, lay.shape);
-  const auto n = static_cast<std::uint64_t>(dom.size());
-  ReservedFile out(a.staged, header.size() + n * sizeof(T)); // a disk too small fails here
-  out.write(0, header.data(), header.size());
-  if (out_of_core) {
-    OutOfCoreOptions ooc;
-    ooc.memory_budget = budget;
-    ooc.scratch_folder = std::filesystem::path(a.staged).parent_path().string();
-    if (ooc.scratch_folder.empty()) ooc.scratch_folder = ".";
-    ooc.mask_is_mapped_file = true;
-    ooc.progress = progress_printer(a);
-    const T mx = distance_transform_out_of_core<T>(dom, mask, item, opt, out, header.size(), ooc);
-    const double secs = since(t0);
-    out.finish();
-    commit(a);
-    report(a, "dt", dom, opt, dtype_name(dtype), std::to_string(mx), secs,
-           {{"out_of_core", true}, {"memory_budget", budget}, {"in_memory_bytes", need}});
-    return;
-  }
-  // In memory: the values in a buffer of the output's type (not zero-filled: the transform
-  // writes every value), then one sequential write.
-  std::unique_ptr<T[]> values(new T[n]);
-  // mapped (in huge pages where offered) by all the workers before the passes write it
-  populate_pages(values.get(), n * sizeof(T), worker_count(opt.threads, dom.size()));
-  distance_transform_into<T>(dom, mask, item, opt, values.get(), pass_printer(a));
-  const double secs = since(t0);
-  // The largest value and the write, in pieces by all the workers (write_values_max).
-  const T mx = write_values_max<T>(out, header.size(), values.get(), dom.size(),
-                                   worker_count(opt.threads, dom.size()));
-  values.reset();
-  out.finish();
-  commit(a);
-  report(a, "dt", dom, opt, dtype_name(dtype), std::to_string(mx), secs);
-}
-
 bool lean_dt(TransformArgs& a) {
   const bool npy = mapped_input(a) && extension(a.output) == ".npy";
   if (a.out_of_core && !npy) {
@@ -411,37 +344,32 @@ bool lean_dt(TransformArgs& a) {
   }
   if (!a.memory.empty()) parse_memory(a.memory); // a bad value fails before the input is read
   if (!npy) return false;
+  // The lean path (operations/transform_operations.hpp); the options are read here when it
+  // takes the file, so that their errors come as on the general path.
   const NpyLayout lay = read_npy_layout(a.in.path);
-  if (lay.fortran_order) {
-    // The mapped passes read the file in C order: a Fortran-order file is read and reordered.
-    if (a.out_of_core) {
-      throw InvalidArgument("--out-of-core: " + a.in.path +
-                            " is a Fortran-order array; the out-of-core transform maps C-order "
-                            "arrays (save it with np.ascontiguousarray)");
-    }
-    return false;
+  NpyTransformOptions o;
+  o.input = a.in.path;
+  o.output = a.staged;
+  o.out_of_core = a.out_of_core;
+  if (!a.memory.empty()) o.memory_budget = parse_memory(a.memory);
+  o.out_of_core_progress = progress_printer(a);
+  o.pass_progress = pass_printer(a);
+  const int dim = static_cast<int>(lay.shape.size());
+  const bool empty = std::find(lay.shape.begin(), lay.shape.end(), 0) != lay.shape.end();
+  if (!lay.fortran_order && !dtype_is_float(lay.dtype) && dim > 0 && !empty) {
+    if (!a.lower.empty()) o.lower = lower_of(a, dim);
+    o.transform = make_options(a, dim);
   }
-  if (dtype_is_float(lay.dtype)) {
-    // -0.0 is background: not a bytewise test, so floats take the general path.
-    if (a.out_of_core) {
-      throw InvalidArgument("--out-of-core: " + a.in.path + " holds " + dtype_name(lay.dtype) +
-                            " values; the out-of-core transform reads integer or bool masks");
-    }
-    return false;
-  }
-  const Domain dom = npy_domain(a, lay);
-  const auto opt = make_options(a, dom.dim());
-  const BigInt bound = distance_transform_max_value(dom, opt);
-  const auto dtype = narrowest_unsigned(bound);
-  if (!dtype) {
-    if (a.out_of_core) {
-      throw InvalidArgument("--out-of-core: values up to " + bound.str() +
-                            " do not fit 64 bits; use the in-memory transform");
-    }
-    return false;
-  }
-  with_unsigned(*dtype,
-                [&]<class T>(std::type_identity<T>) { lean_dt_as<T>(a, lay, dom, opt, *dtype); });
+  const auto r = npy_distance_transform(o);
+  if (!r) return false;
+  commit(a);
+  nlohmann::json extra = nlohmann::json::object();
+  if (r->out_of_core)
+    extra = {{"out_of_core", true},
+             {"memory_budget", r->memory_budget},
+             {"in_memory_bytes", r->in_memory_bytes}};
+  report(a, "dt", r->domain, o.transform, dtype_name(r->dtype), std::to_string(r->max_value),
+         r->seconds, extra);
   return true;
 }
 

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -321,6 +322,23 @@ std::set<std::string> check_estimator_names(const std::vector<std::string>& name
     out.insert(n);
   }
   return out;
+}
+
+EstimatorRadius parse_estimator_radius(const std::string& text) {
+  EstimatorRadius r;
+  r.text = text;
+  if (text.empty()) return r;
+  std::string t = text;
+  r.voxels = t.back() == 'v';
+  if (r.voxels) t.pop_back();
+  double v = 0;
+  const auto [p, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+  if (t.empty() || ec != std::errc() || p != t.data() + t.size() || !std::isfinite(v) || v <= 0)
+    throw InvalidArgument("--radius '" + text +
+                          "': expected a positive number, in physical units (R) or in voxels "
+                          "(Rv, e.g. 5v)");
+  r.value = v;
+  return r;
 }
 
 double isotropic_step(const std::vector<double>& spacing, const std::string& name) {

@@ -99,6 +99,10 @@ struct EstimatorRadius {
   std::string text; ///< as the user gave it, for messages ("" = the default)
 };
 
+/// Parses "R" (physical units) or "Rv" (voxels or pixels, e.g. 5v); "" gives the default 5v.
+/// InvalidArgument unless R is a positive finite number.
+EstimatorRadius parse_estimator_radius(const std::string& text);
+
 /// The grid step of an isotropic image (every spacing equal); InvalidArgument naming `name`
 /// and the spacing otherwise.
 double isotropic_step(const std::vector<double>& spacing, const std::string& name);

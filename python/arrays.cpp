@@ -29,6 +29,7 @@
 #include <zdg/kernel/topology/connected_components.hpp>
 #include <zdg/kernel/topology/critical_kernel_thinning.hpp>
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
+#include <zdg/kernel/topology/simple_points.hpp>
 #include <zdg/kernel/topology/skeleton_constraints.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/power_map.hpp>
@@ -354,6 +355,18 @@ py::dict betti_numbers_py(const py::object& obj, const std::optional<std::string
   return d;
 }
 
+// The simple points of the object (zdg topology simple): uint8, 1 on the simple points.
+py::array simple_points_py(const py::object& obj, const std::optional<std::string>& adjacency) {
+  Image<std::uint8_t> img = image_of(obj, "simple_points");
+  const AdjacencyPair pair = pair_of(adjacency, img.dim());
+  Image<std::uint8_t> simple = [&] {
+    py::gil_scoped_release release;
+    return simple_point_mask(img, pair);
+  }();
+  std::vector<std::int64_t> shape = img.domain().extents();
+  return owning_array(std::move(simple.values()), shape);
+}
+
 py::array thinning_py(const py::object& obj, const std::string& method, const std::string& skeleton,
                       const std::optional<std::string>& adjacency, unsigned threads) {
   Image<std::uint8_t> img = image_of(obj, "thinning");
@@ -539,6 +552,76 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
   return d;
 }
 
+// zdg contour's operation (operations/surface_operations.hpp) on the whole 2D object: the
+// contours as Freeman chains, the Betti numbers and the estimates asked for.
+py::dict contour_py(const py::object& obj, const std::string& adjacency,
+                    const std::vector<std::string>& estimates, const std::string& radius,
+                    const py::object& spacing, unsigned threads) {
+  Image<std::uint8_t> img = image_of(obj, "contour");
+  if (img.dim() != 2) throw InvalidArgument("contour: a 2D image is needed");
+  ContourOptions o;
+  o.adjacency = parse_adjacency_pair(adjacency, 2);
+  o.estimates = estimates;
+  o.radius = parse_estimator_radius(radius);
+  o.threads = threads;
+  ObjectImage im;
+  im.name = "contour";
+  im.spacing = {1, 1};
+  const Domain& dom = img.domain();
+  im.origin = {double(dom.lower(0)), double(dom.lower(1))};
+  if (!spacing.is_none()) {
+    std::vector<double> sp;
+    for (py::handle v : py::iter(spacing)) sp.push_back(v.cast<double>());
+    if (sp.size() != 2 || !(sp[0] > 0 && sp[1] > 0) || !std::isfinite(sp[0]) ||
+        !std::isfinite(sp[1]))
+      throw InvalidArgument("contour: spacing must be two positive numbers (y, x)");
+    im.spacing = sp;
+  }
+  im.mask = std::move(img);
+  ContourResult r = [&] {
+    py::gil_scoped_release release;
+    return contour_operation(std::move(im), o);
+  }();
+  py::list contours;
+  const auto& req = r.request;
+  const auto& e = r.estimates;
+  for (std::size_t c = 0; c < r.contours.contours.size(); ++c) {
+    const auto& k = r.contours.contours[c];
+    py::dict d;
+    d["start"] = py::make_tuple(k.start.x, k.start.y);
+    std::vector<std::uint8_t> codes(k.codes.begin(), k.codes.end());
+    const auto n = static_cast<std::int64_t>(codes.size());
+    d["codes"] = owning_array(std::move(codes), {n});
+    const auto area2 = k.twice_signed_area();
+    d["pixels"] = area2 / 2;
+    d["kind"] = area2 > 0 ? "outer" : "hole";
+    if (req.ii_curvature)
+      d["ii_curvature"] = owning_array(std::vector<double>(e.ii_curvature[c]), {n});
+    for (const auto& [want, name, field] :
+         {std::tuple{req.bc_tangent, "bc_tangent", &e.bc_tangent},
+          std::tuple{req.lmst_tangent, "lmst_tangent", &e.lmst_tangent}}) {
+      if (!want) continue;
+      std::vector<double> xy;
+      for (const auto& t : (*field)[c]) {
+        xy.push_back(t.x);
+        xy.push_back(t.y);
+      }
+      const auto m = static_cast<std::int64_t>((*field)[c].size());
+      d[name] = owning_array(std::move(xy), {m, 2});
+    }
+    if (req.mlp_length) d["mlp_length"] = e.mlp_length[c];
+    contours.append(d);
+  }
+  py::dict out;
+  out["adjacency"] = r.adjacency.name();
+  out["betti"] = py::make_tuple(r.betti.b[0], r.betti.b[1]);
+  out["euler"] = r.betti.euler;
+  out["linels"] = r.contours.linels();
+  out["contours"] = contours;
+  if (req.gauss_area) out["gauss_area"] = e.gauss_area;
+  return out;
+}
+
 // --- volumes --------------------------------------------------------------------------------
 
 struct DTypeName {
@@ -651,6 +734,11 @@ void bind_arrays(py::module_& m) {
         "binary image for the adjacency pair 'object,background' (default 8,4 / 26,6): b0 "
         "and b2 from component counts, chi from the 2x2(x2) block configurations, b1 by "
         "Euler-Poincare. O(N). Returns {'betti', 'euler', 'adjacency'}.");
+  m.def("simple_points", &simple_points_py, py::arg("image"), py::kw_only(),
+        py::arg("adjacency") = py::none(),
+        "The simple points of the object of a 2D or 3D binary image under the adjacency pair "
+        "(default 8,4 / 26,6): the points whose removal keeps the topology (the definition on "
+        "the 3^d neighbourhood). Returns a uint8 array, 1 on the simple points.");
   m.def("thinning", &thinning_py, py::arg("image"), py::kw_only(),
         py::arg("method") = "critical-kernel", py::arg("skeleton") = "ultimate",
         py::arg("adjacency") = py::none(), py::arg("threads") = 0,
@@ -688,6 +776,17 @@ void bind_arrays(py::module_& m) {
         "'adjacency'}, the mesh zdg surface writes as PLY. estimate='mean' or 'principal' (primal "
         "mesh only: face f is surfel f) adds the integral-invariant estimates per face at grid "
         "step h and radius R, as ii_curvature returns them.");
+  m.def("contour", &contour_py, py::arg("image"), py::kw_only(), py::arg("adjacency") = "4,8",
+        py::arg("estimates") = std::vector<std::string>{}, py::arg("radius") = "5v",
+        py::arg("spacing") = py::none(), py::arg("threads") = 0,
+        "The contours of the nonzero pixels of a 2D image (axes y, x) under the adjacency pair "
+        "('4,8' default or '8,4'), as zdg contour computes them: {'adjacency', 'betti' (b0, b1), "
+        "'euler', 'linels', 'contours': [{'start' (x, y), 'codes' (Freeman codes, uint8), "
+        "'pixels' (signed area: negative for a hole), 'kind' ('outer' or 'hole'), and per "
+        "estimate 'ii_curvature' (per linel), 'bc_tangent', 'lmst_tangent' ((n, 2) per pointel), "
+        "'mlp_length'}], 'gauss_area'}. estimates: names among ii-curvature, bc-tangent, "
+        "lmst-tangent, mlp-length, gauss-area; radius 'R' (physical units) or 'Rv' (pixels); "
+        "spacing (sy, sx), equal for the estimates.");
   m.def("read_volume", &read_volume_py, py::arg("path"), py::kw_only(), py::arg("metadata") = false,
         "Reads a volume (.vol v2/v3, .nii, .nii.gz, .npy, .pgm; path: str, bytes or "
         "os.PathLike) into a numpy array of its "

@@ -301,6 +301,26 @@ py::dict hull_ellipse_py(py::handle cx, py::handle cy, py::handle a, py::handle 
   return body_hull_dict(h);
 }
 
+// The integer hull of the polygon of half-planes a x + b y <= c (rationals as for hull_disc).
+py::dict hull_halfplanes_py(py::handle halfplanes) {
+  std::vector<HalfPlane<BigInt>> hs;
+  for (py::handle h : py::iter(halfplanes)) {
+    const auto t = py::reinterpret_borrow<py::sequence>(h);
+    if (!py::isinstance<py::sequence>(h) || py::len(t) != 3)
+      throw InvalidArgument("hull_halfplanes: each half-plane is (a, b, c): a x + b y <= c");
+    hs.push_back({rational_of(t[0], "hull_halfplanes: a"), rational_of(t[1], "hull_halfplanes: b"),
+                  rational_of(t[2], "hull_halfplanes: c")});
+  }
+  if (hs.empty()) throw InvalidArgument("hull_halfplanes: no half-plane");
+  auto h = [&] {
+    py::gil_scoped_release release;
+    return halfplane_hull_exact(std::span<const HalfPlane<BigInt>>(hs));
+  }();
+  py::dict d = body_hull_dict(h);
+  d["region"] = to_string(h.value.region);
+  return d;
+}
+
 py::dict recognize_plane_py(py::handle points) {
   auto in = points_nd(points, "recognize_plane", {3});
   std::vector<Point3<BigInt>> pts;
@@ -502,6 +522,10 @@ PYBIND11_MODULE(_zdg, m) {
         "Vertices of the convex hull of the lattice points of ((x - cx)/a)^2 + ((y - cy)/b)^2 "
         "<= 1 (rationals as for hull_disc; a, b > 0), exact. Returns {'vertices', "
         "'integer_type'}.");
+  m.def("hull_halfplanes", &hull_halfplanes_py, py::arg("halfplanes"),
+        "Vertices of the integer hull of the polygon {a x + b y <= c} of the half-planes "
+        "[(a, b, c), ...] (rationals as for hull_disc), exact. Returns {'region' ('bounded', "
+        "'unbounded' or 'empty'), 'vertices' (empty unless bounded), 'integer_type'}.");
   m.def("recognize_plane", &recognize_plane_py, py::arg("points"),
         "Is a set of 3D integer points a naive digital plane segment (mu <= N.x < mu + "
         "||N||_inf)? Exact, by the chord theorem (kernel/surfaces/digital_plane_recognition.hpp). "

@@ -266,4 +266,21 @@ bool is_simple_point(const Image<std::uint8_t>& image, std::int64_t i, const Adj
                        : is_simple_by_definition(pair, config);
 }
 
+Image<std::uint8_t> simple_point_mask(const Image<std::uint8_t>& image, const AdjacencyPair& pair,
+                                      std::int64_t* count) {
+  if (image.dim() != pair.dim)
+    throw InvalidArgument("simple points: a " + std::to_string(image.dim()) +
+                          "D image under the pair " + pair.name());
+  Image<std::uint8_t> simple(image.domain(), std::uint8_t{0});
+  std::int64_t n = 0;
+  for (std::int64_t i = 0; i < image.size(); ++i) {
+    if (image[i] != 0 && is_simple_by_definition(pair, neighbourhood_configuration(image, i))) {
+      simple[i] = 1;
+      ++n;
+    }
+  }
+  if (count != nullptr) *count = n;
+  return simple;
+}
+
 } // namespace zdg

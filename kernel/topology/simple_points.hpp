@@ -68,4 +68,11 @@ private:
 /// object: InvalidArgument otherwise)? One query: the table in 2D, the definition in 3D.
 bool is_simple_point(const Image<std::uint8_t>& image, std::int64_t i, const AdjacencyPair& pair);
 
+/// The simple points of the object (value != 0) of a 2D or 3D image under the pair: 1 on
+/// them, 0 elsewhere, each tested on its own 3^d neighbourhood by the definition (the object is
+/// not changed between tests; zdg topology simple). O(N 3^d); their number in `count` when
+/// given.
+Image<std::uint8_t> simple_point_mask(const Image<std::uint8_t>& image, const AdjacencyPair& pair,
+                                      std::int64_t* count = nullptr);
+
 } // namespace zdg

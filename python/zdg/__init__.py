@@ -5,15 +5,16 @@ and say which type served), numpy arrays go in and out without copies where the 
 and long computations release the GIL. Errors: ValueError (bad argument), OSError (files),
 OverflowError (never from an exact entry point).
 """
-from ._zdg import (betti_numbers, cf, christoffel, connected_components, converge, hull,
-                   hull_disc, hull_ellipse, distance_transform, dsl_subsegment, floor_sum,
+from ._zdg import (betti_numbers, cf, christoffel, connected_components, contour, converge, hull,
+                   hull_disc, hull_ellipse, hull_halfplanes, distance_transform, dsl_subsegment, floor_sum,
                    ii_curvature, power_map, probe_plane, read_volume, recognize_dss,
-                   recognize_plane, reduced_medial_axis, reverse_distance_transform, surface,
+                   recognize_plane, reduced_medial_axis, reverse_distance_transform, simple_points, surface,
                    surfels, tangential_cover, thinning, voronoi_map, write_volume)
 
-__all__ = ["betti_numbers", "cf", "christoffel", "connected_components", "converge", "hull",
-           "hull_disc", "hull_ellipse", "power_map", "probe_plane", "recognize_plane", "skeleton",
-           "surface",
+__all__ = ["betti_numbers", "cf", "christoffel", "connected_components", "contour", "converge",
+           "hull",
+           "hull_disc", "hull_ellipse", "hull_halfplanes", "power_map", "probe_plane", "recognize_plane", "skeleton",
+           "simple_points", "surface",
            "distance_transform", "dsl_subsegment", "floor_sum", "ii_curvature", "plot",
            "reduced_medial_axis", "reverse_distance_transform", "voronoi_map",
            "read_volume", "recognize_dss", "surfels", "tangential_cover", "thinning",

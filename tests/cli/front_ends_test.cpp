@@ -8,9 +8,11 @@
 #include "tests/support/python.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
@@ -29,6 +31,8 @@ struct Operation {
 const std::vector<Operation>& operations() {
   static const std::string files = "works on files (paths in, files out); Python reads and "
                                    "writes arrays";
+  static const std::string kIntegerImage = "serve: takes an image of integer values (weights, "
+                                           "squared radii); a served 'image' is a binary mask";
   static const std::vector<Operation> ops = {
       {"cf", "cf", "cf", ""},
       {"christoffel", "christoffel", "christoffel", ""},
@@ -38,22 +42,23 @@ const std::vector<Operation>& operations() {
       {"dss subsegment", "dss subsegment", "dsl_subsegment", ""},
       {"hull points", "hull points", "hull", ""},
       {"hull disc", "hull disc", "hull_disc", ""},
-      {"hull ellipse", "", "hull_ellipse", "serve: not yet a served operation"},
-      {"hull halfplanes", "", "", "serve and Python: not yet bound"},
-      {"plane recognize", "", "recognize_plane", "serve: not yet a served operation"},
+      {"hull ellipse", "hull ellipse", "hull_ellipse", ""},
+      {"hull halfplanes", "hull halfplanes", "hull_halfplanes", ""},
+      {"plane recognize", "plane recognize", "recognize_plane", ""},
       {"plane probe", "plane probe", "probe_plane", ""},
       {"transform dt", "transform dt", "distance_transform", ""},
       {"transform voronoi", "transform voronoi", "voronoi_map", ""},
-      {"transform power", "", "power_map", "serve: not yet a served operation"},
-      {"transform rdt", "", "reverse_distance_transform", "serve: not yet a served operation"},
-      {"transform rma", "", "reduced_medial_axis", "serve: not yet a served operation"},
-      {"topology components", "", "connected_components", "serve: not yet a served operation"},
+      {"transform power", "", "power_map", kIntegerImage},
+      {"transform rdt", "", "reverse_distance_transform", kIntegerImage},
+      {"transform rma", "", "reduced_medial_axis", kIntegerImage},
+      {"topology components", "topology components", "connected_components", ""},
       {"topology betti", "topology betti", "betti_numbers", ""},
-      {"topology simple", "", "", "serve and Python: not yet bound"},
-      {"topology thin", "", "thinning", "serve: not yet a served operation"},
+      {"topology simple", "topology simple", "simple_points", ""},
+      {"topology thin", "", "thinning",
+       "serve: 'topology skeleton' with \"skeleton\": \"ultimate\" is this thinning"},
       {"topology skeleton", "topology skeleton", "skeleton", ""},
       {"surface", "surface", "surface", ""},
-      {"contour", "", "", "serve and Python: not yet bound"},
+      {"contour", "contour", "contour", ""},
       {"convert", "", "", "serve: " + files + " (read_volume, write_volume)"},
       {"", "", "read_volume", "command line: zdg convert reads and writes; serve: " + files},
       {"", "", "write_volume", "command line: zdg convert reads and writes; serve: " + files},
@@ -153,6 +158,90 @@ TEST(FrontEnds, EveryOperationIsReachableOrSaysWhyNot) {
     EXPECT_TRUE(functions.count(f)) << "the module has no function " << f;
   for (const auto& f : functions)
     EXPECT_TRUE(table_python.count(f)) << "zdg." << f << " is not in the table";
+}
+
+// The operations added to zdg serve answer what the command line prints (same keys, same
+// values) on the same input: the contours of an image with a hole, an ellipse hull, the
+// half-plane hull of a triangle, a plane segment, the components and simple points of an image.
+TEST(FrontEnds, ServedOperationsAnswerWhatTheCommandLinePrints) {
+  const auto dir = test::scratch_dir("front_ends_serve");
+  // A 7 x 6 image: a ring (one hole) and an isolated pixel, as PGM for the command line.
+  const std::vector<std::string> rows = {"0000000", "0111100", "0100100",
+                                         "0111100", "0000000", "0000001"};
+  std::string pgm = "P2\n7 6\n1\n", image = "[";
+  for (const auto& row : rows) {
+    image += std::string(image.size() > 1 ? "," : "") + "[";
+    for (std::size_t x = 0; x < row.size(); ++x) {
+      pgm += std::string(1, row[x]) + (x + 1 < row.size() ? " " : "\n");
+      image += std::string(x > 0 ? "," : "") + row[x];
+    }
+    image += "]";
+  }
+  image += "]";
+  {
+    std::ofstream f(dir / "ring.pgm");
+    f << pgm;
+  }
+  const auto serve = [](const std::string& op, const std::string& request) {
+    const auto r = test::run_zdg("serve " + op, request + "\n");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const auto cli = [](const std::string& args) {
+    const auto r = test::run_zdg(args);
+    EXPECT_EQ(r.status, 0) << args << ": " << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+
+  auto sc =
+      serve("contour", "{\"image\":" + image + ",\"estimates\":[\"mlp-length\",\"gauss-area\"]}");
+  auto cc = cli("contour " + (dir / "ring.pgm").string() +
+                " --estimate mlp-length,gauss-area --json --quiet");
+  for (const char* k : {"adjacency", "betti", "euler", "linels", "contours", "estimates"})
+    EXPECT_EQ(sc[k], cc[k]) << k << ": " << sc[k].dump() << " vs " << cc[k].dump();
+  EXPECT_EQ(sc["betti"], nlohmann::json({"2", "1"}));
+
+  auto se = serve("hull ellipse", R"({"cx":"1/2","cy":"0","a":"7","b":"3"})");
+  auto ce = cli("hull ellipse 1/2 0 7 3 --json");
+  EXPECT_EQ(se["vertices"], ce["vertices"]) << se.dump() << " vs " << ce.dump();
+
+  {
+    std::ofstream f(dir / "triangle.txt");
+    f << "-1 0 0\n0 -1 0\n1 1 7/2\n";
+  }
+  auto sh = serve("hull halfplanes", R"({"halfplanes":[[-1,0,0],[0,-1,0],[1,1,"7/2"]]})");
+  auto ch = cli("hull halfplanes " + (dir / "triangle.txt").string() + " --json");
+  EXPECT_EQ(sh["vertices"], ch["vertices"]) << sh.dump() << " vs " << ch.dump();
+  EXPECT_EQ(sh["vertices"].size(), 3u) << sh.dump(); // (0,0), (3,0), (0,3)
+
+  {
+    std::ofstream f(dir / "plane.txt");
+    for (int x = 0; x < 4; ++x)
+      for (int y = 0; y < 4; ++y) f << x << " " << y << " " << (2 * x + y) / 3 << "\n";
+  }
+  std::string pts = "[";
+  for (int x = 0; x < 4; ++x)
+    for (int y = 0; y < 4; ++y)
+      pts += std::string(pts.size() > 1 ? "," : "") + "[" + std::to_string(x) + "," +
+             std::to_string(y) + "," + std::to_string((2 * x + y) / 3) + "]";
+  pts += "]";
+  auto sp = serve("plane recognize", "{\"points\":" + pts + "}");
+  auto cp = cli("plane recognize " + (dir / "plane.txt").string() + " --json");
+  for (const char* k : {"is_plane", "normal", "mu", "omega", "points"})
+    EXPECT_EQ(sp[k], cp[k]) << k << ": " << sp.dump() << " vs " << cp.dump();
+  EXPECT_TRUE(sp["is_plane"].get<bool>());
+
+  auto sk = serve("topology components", "{\"image\":" + image + "}");
+  auto ck = cli("topology components " + (dir / "ring.pgm").string() + " --json");
+  EXPECT_EQ(sk["components"], ck["components"]) << sk.dump() << " vs " << ck.dump();
+  EXPECT_EQ(sk["sizes"], nlohmann::json({"10", "1"}));
+  EXPECT_EQ(sk["labels"][1][1], 1);
+  EXPECT_EQ(sk["labels"][5][6], 2);
+
+  auto ss = serve("topology simple", "{\"image\":" + image + "}");
+  auto cs = cli("topology simple " + (dir / "ring.pgm").string() + " --json");
+  EXPECT_EQ(ss["count"], cs["simple"]) << ss.dump() << " vs " << cs.dump();
+  std::filesystem::remove_all(dir);
 }
 
 } // namespace

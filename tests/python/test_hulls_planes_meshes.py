@@ -226,3 +226,13 @@ def test_skeleton_is_the_curve_thinning_and_keeps_the_topology():
     assert np.array_equal(sk, zdg.thinning(torus.astype(np.uint8), skeleton="curve"))
     assert zdg.betti_numbers(sk)["betti"] == zdg.betti_numbers(torus)["betti"] == (1, 1, 0)
     assert 0 < sk.sum() < torus.sum() / 2
+
+
+def test_halfplane_hull_of_a_triangle_and_of_unbounded_regions():
+    r = zdg.hull_halfplanes([(-1, 0, 0), (0, -1, 0), (1, 1, "7/2")])
+    assert r["region"] == "bounded"
+    assert sorted(r["vertices"]) == [(0, 0), (0, 3), (3, 0)]
+    assert zdg.hull_halfplanes([(-1, 0, 0)])["region"] == "unbounded"
+    assert zdg.hull_halfplanes([(1, 0, -1), (-1, 0, -1)])["region"] == "empty"
+    with pytest.raises(ValueError):
+        zdg.hull_halfplanes([(1, 2)])

@@ -62,3 +62,36 @@ def test_bad_input():
         zdg.surfels(np.ones((3, 3), dtype=np.uint8))
     with pytest.raises(ValueError):
         zdg.ii_curvature(np.ones((3, 3, 3), dtype=np.uint8), h=1, radius=-1)
+
+
+@given(arrays(np.bool_, st.tuples(st.integers(1, 8), st.integers(1, 8))))
+def test_contour_signed_areas_add_up_to_the_pixels(image):
+    """Green's theorem on zdg.contour: the signed areas of the contours (holes negative) add
+    up to the pixel count; b0 outer contours, b1 holes; each chain closes (its steps sum to 0)."""
+    r = zdg.contour(image.astype(np.uint8))
+    assert sum(c["pixels"] for c in r["contours"]) == int(image.sum())
+    assert sum(c["kind"] == "outer" for c in r["contours"]) == r["betti"][0]
+    assert sum(c["kind"] == "hole" for c in r["contours"]) == r["betti"][1]
+    steps = np.array([(1, 0), (0, 1), (-1, 0), (0, -1)])
+    for c in r["contours"]:
+        assert np.all(steps[c["codes"]].sum(axis=0) == 0)
+    assert r["linels"] == sum(len(c["codes"]) for c in r["contours"])
+
+
+def test_contour_estimates_and_the_surface_topology():
+    y, x = np.mgrid[:60, :60]
+    disc = (((x - 29.5) ** 2 + (y - 29.5) ** 2) <= 20 ** 2).astype(np.uint8)
+    r = zdg.contour(disc, estimates=["ii-curvature", "mlp-length", "gauss-area", "bc-tangent"],
+                    radius="12v")
+    (c,) = r["contours"]
+    assert abs(c["mlp_length"] - 2 * np.pi * 20) < 0.05 * 2 * np.pi * 20
+    assert r["gauss_area"] == int(disc.sum())
+    # the integral invariant at a kernel of 12 pixels on a disc of radius 20: within 30% of 1/20
+    assert abs(np.nanmean(c["ii_curvature"]) - 1 / 20) < 0.015
+    assert c["bc_tangent"].shape == (len(c["codes"]), 2)
+    with pytest.raises(ValueError, match="unknown estimator 'nope'"):
+        zdg.contour(disc, estimates=["nope"])
+    z, y, x = np.mgrid[:20, :20, :20]
+    ball = (((x - 9.5) ** 2 + (y - 9.5) ** 2 + (z - 9.5) ** 2) <= 64).astype(np.uint8)
+    s = zdg.surface(ball)
+    assert s["betti"] == (1, 0, 0) and s["surfaces"] == 1 and s["object_components"] == 1

@@ -107,3 +107,15 @@ def test_bad_input():
         zdg.thinning(cube(), method="magic")
     with pytest.raises(ValueError, match="phase"):
         zdg.connected_components(cube(), 26, phase="neither")
+
+
+def test_simple_points_of_a_square_and_a_ring():
+    """In a filled 3 x 3 square (8,4) the corners and edge midpoints are simple, the centre is
+    not; in a ring (a hole) no point of a 1-thick loop is simple."""
+    square = np.zeros((5, 5), np.uint8)
+    square[1:4, 1:4] = 1
+    s = zdg.simple_points(square)
+    assert s.dtype == np.uint8 and s[2, 2] == 0 and s[1, 1] == 1 and s[1, 2] == 1
+    ring = square.copy()
+    ring[2, 2] = 0
+    assert zdg.simple_points(ring, adjacency="4,8").sum() == 0
