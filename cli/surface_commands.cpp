@@ -21,6 +21,7 @@
 #include <zdg/cli/volume_input.hpp>
 #include <zdg/kernel/io/mesh_io.hpp>
 #include <zdg/kernel/io/output_files.hpp>
+#include <zdg/kernel/render/mesh_html.hpp>
 #include <zdg/kernel/render/picture.hpp>
 #include <zdg/kernel/render/render_contours.hpp>
 #include <zdg/kernel/render/render_mesh.hpp>
@@ -214,7 +215,8 @@ ObjectImage object_image(LoadedObject& obj, const std::string& path) {
 struct SurfaceArgs {
   VolumeInputArgs in;
   std::string adjacency = "6,26", component = "all", estimate, radius, mesh = "primal";
-  std::string output, csv, source, at_alpha, at_lambda;
+  std::string output, csv, source, at_alpha, at_lambda, html;
+  std::int64_t max_faces = 2'000'000;
   PictureArgs picture;
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
@@ -314,17 +316,21 @@ void run_surface(const SurfaceArgs& a) {
   o.radius = parse_estimator_radius(a.radius);
   if (a.mesh != "primal" && a.mesh != "marching-cubes")
     throw InvalidArgument("--mesh '" + a.mesh + "': expected primal or marching-cubes");
-  if (!a.output.empty() || !a.picture.png.empty())
+  if (!a.output.empty() || !a.picture.png.empty() || !a.html.empty())
     o.mesh = a.mesh == "primal" ? SurfaceMesh::primal : SurfaceMesh::marching_cubes;
+  if (!a.html.empty() && lower_extension(a.html) != ".html")
+    throw IoError(a.html + ": the viewer is an .html file (got '" + lower_extension(a.html) + "')");
+  if (a.max_faces < 1) throw InvalidArgument("--max-faces must be at least 1");
   o.keep_surfels = !a.csv.empty();
   o.threads = a.threads;
   o.progress = progress_printer(a.quiet);
   std::optional<MeshFormat> mesh_format;
   if (!a.output.empty()) mesh_format = mesh_format_of(a.output);
-  for (const auto* out : {&a.output, &a.csv, &a.picture.png})
+  for (const auto* out : {&a.output, &a.csv, &a.picture.png, &a.html})
     refuse_input_as_output(a.in.path, *out);
   OutputSet outputs(a.force ? Existing::replace : Existing::refuse);
   const std::string mesh_staging = a.output.empty() ? "" : outputs.add(a.output).string();
+  const std::string html_staging = a.html.empty() ? "" : outputs.add(a.html).string();
   const std::string csv_staging = a.csv.empty() ? "" : outputs.add(a.csv).string();
   const std::string png_staging = a.picture.png.empty() ? "" : outputs.add(a.picture.png).string();
 
@@ -361,6 +367,15 @@ void run_surface(const SurfaceArgs& a) {
           picture_json(a.picture.png, color, png_w, png_h, p.value_min, p.value_max, p.color_map);
     }
   }
+  if (r.mesh && !a.html.empty()) {
+    steps.start("viewer " + a.html);
+    MeshHtmlOptions page;
+    page.title = std::filesystem::path(a.in.path).filename().string();
+    page.field = color;
+    page.max_faces = a.max_faces;
+    write_mesh_html(html_staging, *r.mesh, page);
+    steps.done("write_html");
+  }
   if (!a.csv.empty()) {
     steps.start("writing " + a.csv);
     write_surface_csv(csv_staging, r);
@@ -379,6 +394,7 @@ void run_surface(const SurfaceArgs& a) {
     if (r.mesh && !a.output.empty()) j["mesh"]["path"] = a.output;
     if (!picture.is_null()) j["picture"] = picture;
     if (!a.csv.empty()) j["csv"] = a.csv;
+    if (!a.html.empty()) j["html"] = a.html;
     print_json(j);
     return;
   }
@@ -411,6 +427,7 @@ void run_surface(const SurfaceArgs& a) {
                  est.R / est.h);
   }
   if (!a.csv.empty()) fmt::print("  per-surfel values -> {}\n", a.csv);
+  if (!a.html.empty()) fmt::print("  viewer -> {}\n", a.html);
   if (!picture.is_null()) print_picture_line(picture);
 }
 
@@ -611,6 +628,12 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                       "picture view AZIMUTH,ELEVATION in degrees (default -60,30; 90,90 looks "
                       "down the z axis with x to the right)");
   surface->add_option("--mesh", s->mesh, "primal (one quad per surfel, default) or marching-cubes");
+  surface->add_option("--html", s->html,
+                      "write a self-contained viewer page (WebGL, no network): the mesh coloured "
+                      "by any estimate, picking, the normals as glyphs");
+  surface->add_option("--max-faces", s->max_faces,
+                      "the most faces the viewer page holds (default 2000000); a larger mesh is "
+                      "refused before any work is written");
   surface->callback([s] { run_surface(*s); });
 
   auto c = std::make_shared<ContourArgs>();

@@ -1,5 +1,7 @@
 """Runs the Python module's test suite (ctest: python.pytest). Exit 77 (ctest: skipped) when
-pytest or numpy is missing; the module itself must import (the build made it)."""
+pytest or numpy is missing, or when every test of the file skipped itself (e.g. the viewer
+tests without a browser: the reason is printed); the module itself must import (the build
+made it)."""
 import sys
 
 try:
@@ -9,4 +11,27 @@ except ImportError as e:
     print(f"zdg python tests skipped: {e}")
     sys.exit(77)
 
-sys.exit(pytest.main(["-q", "-p", "no:cacheprovider", *sys.argv[1:]]))
+
+class Outcomes:
+    """Counts what ran: a file whose tests all skipped is reported as skipped, not passed."""
+
+    def __init__(self):
+        self.passed = 0
+        self.skipped = 0
+
+    def pytest_runtest_logreport(self, report):
+        if report.when == "call" and report.passed:
+            self.passed += 1
+        if report.skipped:
+            self.skipped += 1
+
+    def pytest_collectreport(self, report):
+        if report.skipped:
+            self.skipped += 1
+
+
+outcomes = Outcomes()
+code = pytest.main(["-q", "-rs", "-p", "no:cacheprovider", *sys.argv[1:]], plugins=[outcomes])
+if code == 0 and outcomes.passed == 0 and outcomes.skipped > 0:
+    sys.exit(77)
+sys.exit(code)

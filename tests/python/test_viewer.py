@@ -1,0 +1,149 @@
+"""The viewer page of `zdg surface --html` in a real browser: headless Chromium driven by
+Selenium (Debian: chromium, chromium-driver, python3-selenium). The page loads with no console
+error and draws; a click on a face reports its index and the values the CSV holds for that
+surfel (a primal face is a surfel); the colour under the click is the colour map's colour of
+the face's value (matplotlib's map as the oracle, shading allowed for); toggling a layer
+changes the picture. Without the browser the file reports itself skipped with the reason,
+unless ZDG_REQUIRE_BROWSER=1 (CI), where that is a failure."""
+import base64
+import csv
+import io
+import os
+import shutil
+import subprocess
+import time
+
+import numpy as np
+import pytest
+
+CLI = os.environ.get("ZDG_CLI", "")
+MISSING = [name for name, ok in (("chromium", shutil.which("chromium")),
+                                  ("chromium-driver", shutil.which("chromedriver")))
+           if not ok]
+try:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.action_chains import ActionChains
+except ImportError:
+    MISSING.append("python3-selenium")
+if not CLI or not os.path.exists(CLI):
+    pytest.skip("the zdg CLI was not built", allow_module_level=True)
+if MISSING:
+    message = ("the viewer tests need a browser: apt-get install " + " ".join(MISSING))
+    if os.environ.get("ZDG_REQUIRE_BROWSER") == "1":
+        raise RuntimeError(message + " (ZDG_REQUIRE_BROWSER=1)")
+    pytest.skip(message, allow_module_level=True)
+
+
+@pytest.fixture(scope="module")
+def ball(tmp_path_factory):
+    d = tmp_path_factory.mktemp("viewer")
+    z, y, x = np.mgrid[:24, :24, :24]
+    v = (((x - 11.5) ** 2 + (y - 11.5) ** 2 + ((z - 11.5) * 1.3) ** 2) <= 9 ** 2).astype(np.uint8)
+    np.save(d / "ball.npy", v)
+    r = subprocess.run([CLI, "surface", str(d / "ball.npy"), "--estimate", "ii-mean,ii-normal",
+                        "--radius", "4v", "--csv", str(d / "ball.csv"), "--html",
+                        str(d / "ball.html"), "-o", str(d / "ball.ply"), "--quiet"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with open(d / "ball.csv") as f:
+        rows = list(csv.DictReader(f))
+    return d, rows
+
+
+@pytest.fixture(scope="module")
+def driver():
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = shutil.which("chromium")
+    for a in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=960,640",
+              "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-extensions"):
+        opts.add_argument(a)
+    opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    drv = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=opts)
+    yield drv
+    drv.quit()
+
+
+def load(drv, path):
+    t0 = time.monotonic()
+    drv.get("file://" + str(path))
+    for _ in range(300):
+        if drv.execute_script("return !!(window.zdgViewer && window.zdgViewer.ready)"):
+            return time.monotonic() - t0
+        time.sleep(0.05)
+    raise AssertionError("the page did not become ready: " + str(drv.get_log("browser")))
+
+
+def pixels(drv):
+    """The canvas as RGB integers (a PNG of the drawing buffer, which the page keeps)."""
+    image = pytest.importorskip("matplotlib.image")
+    url = drv.execute_script("return document.getElementById('view').toDataURL('image/png')")
+    rgba = image.imread(io.BytesIO(base64.b64decode(url.split(",", 1)[1])), format="png")
+    return np.rint(rgba[:, :, :3] * 255).astype(np.int32)
+
+
+def test_page_loads_draws_and_picks_the_faces_values(ball, driver):
+    d, rows = ball
+    seconds = load(driver, d / "ball.html")
+    errors = [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+    assert not errors, errors
+    img = pixels(driver)
+    drawn = np.any(img < 250, axis=2)
+    assert drawn.sum() > 0.05 * drawn.size, "the canvas is blank"
+    assert driver.execute_script("return zdgViewer.faces") == len(rows)
+    # a real click at the middle of the canvas: the panel names the face and its values
+    view = driver.find_element("id", "view")
+    ActionChains(driver).move_to_element(view).click().perform()
+    text = driver.find_element("id", "pick").text
+    assert text.startswith("face "), text
+    f = int(text.split()[1])
+    row = rows[f]
+    info = driver.execute_script("return zdgViewer.info(arguments[0])", f)
+    assert info["face"] == f
+    assert info["values"]["ii-mean"] == pytest.approx(float(row["ii_mean"]), rel=1e-6, abs=1e-7)
+    centre = [float(row["x"]), float(row["y"]), float(row["z"])]
+    assert np.allclose(info["centre"], centre, atol=1e-4), (info["centre"], centre)
+    normal = [float(row["nx"]), float(row["ny"]), float(row["nz"])]
+    assert np.allclose(info["normal"], normal, atol=0.02)
+    print(f"page ready in {seconds:.2f} s ({len(rows)} faces)")
+
+
+def test_colour_under_a_pick_is_the_colour_maps(ball, driver):
+    matplotlib = pytest.importorskip("matplotlib")
+    d, rows = ball
+    load(driver, d / "ball.html")
+    w, h = driver.execute_script("return [view.width, view.height]")
+    img = pixels(driver)
+    checked = 0
+    for fx, fy in ((0.5, 0.5), (0.45, 0.55), (0.55, 0.45), (0.5, 0.4)):
+        x, y = int(w * fx), int(h * fy)
+        f = driver.execute_script("return zdgViewer.pick(arguments[0], arguments[1])", x, y)
+        if f < 0:
+            continue
+        s = driver.execute_script("return zdgViewer.state()")
+        value = float(rows[f]["ii_mean"])
+        t = min(1.0, max(0.0, (value - s["lo"]) / (s["hi"] - s["lo"])))
+        expected = np.array(matplotlib.colormaps[s["cmap"]](t)[:3]) * 255
+        shown = np.array(driver.execute_script("return zdgViewer.faceColor(arguments[0])", f))
+        assert np.all(np.abs(shown - expected) <= 8), (shown, expected, s)
+        pixel = img[y, x].astype(float)
+        shade = pixel.max() / max(1.0, shown.max())
+        assert 0.25 <= shade <= 1.02, (pixel, shown)
+        assert np.all(np.abs(pixel - shade * shown) <= 4), (pixel, shown, shade)
+        checked += 1
+    assert checked >= 2
+
+
+def test_layers_and_fields_change_the_picture(ball, driver):
+    d, _ = ball
+    load(driver, d / "ball.html")
+    before = pixels(driver)
+    driver.execute_script("zdgViewer.setLayer('normals', true)")
+    with_glyphs = pixels(driver)
+    assert np.abs(with_glyphs - before).sum() > 0, "the normals layer drew nothing"
+    driver.execute_script("zdgViewer.setLayer('surface', false); zdgViewer.setLayer('normals', false)")
+    assert np.all(pixels(driver) >= 250), "hiding every layer leaves the mesh drawn"
+    driver.execute_script("zdgViewer.setLayer('surface', true)")
+    assert np.abs(pixels(driver) - before).sum() == 0
+    driver.execute_script("zdgViewer.setColorMap('grey')")
+    assert np.abs(pixels(driver) - before).sum() > 0
