@@ -217,7 +217,9 @@ void attach_estimates(PolygonMesh& mesh, SurfaceMesh kind, const ImageSurfels& s
     return;
   }
   const std::int64_t n = sf.size();
-  for (auto& [name, values] : fields) {
+  // (no structured binding: clang 14, the fuzzers' compiler, cannot capture one in a lambda)
+  for (auto& field : fields) {
+    const std::vector<double>& values = field.second;
     std::vector<double> per_face(static_cast<std::size_t>(mesh.face_count()));
     parallel_chunks(mesh.face_count(), threads, [&](std::int64_t b, std::int64_t e) {
       for (std::int64_t f = b; f < e; ++f) {
@@ -231,7 +233,7 @@ void attach_estimates(PolygonMesh& mesh, SurfaceMesh kind, const ImageSurfels& s
         per_face[std::size_t(f)] = s / k;
       }
     });
-    mesh.face_scalars.emplace_back(name, std::move(per_face));
+    mesh.face_scalars.emplace_back(field.first, std::move(per_face));
   }
   // Vertex normals: the surfels' (vertices 0 .. n - 1), the centres' the mean of their surfel
   // neighbours' (the surfel normals are not changed while the centres sum them).

@@ -163,8 +163,9 @@ void write_page(std::ostream& out, const PolygonMesh& mesh, const MeshHtmlOption
                             [&](std::size_t i) { return std::uint32_t(mesh.indices[i]); });
   out << "\",\"fields\":[";
   bool first = true;
-  for (const auto& [name, values] : mesh.face_scalars) {
-    out << (first ? "" : ",") << "{\"name\":" << json_string(name) << ",\"values\":\"";
+  for (const auto& field : mesh.face_scalars) {
+    const std::vector<double>& values = field.second; // (a lambda below captures it)
+    out << (first ? "" : ",") << "{\"name\":" << json_string(field.first) << ",\"values\":\"";
     put_base64<float>(out, values.size(), [&](std::size_t i) { return float(values[i]); });
     out << "\"}";
     first = false;
