@@ -12,11 +12,13 @@
 #include <zdg/kernel/io/pgm_io.hpp>
 #include <zdg/kernel/io/vol_io.hpp>
 #include <zdg/kernel/io/volume_io.hpp>
+#include <zdg/kernel/render/mesh_html.hpp>
 #include <zdg/kernel/topology/betti_numbers.hpp>
 #include <zdg/kernel/topology/connected_components.hpp>
 #include <zdg/kernel/topology/critical_kernel_thinning.hpp>
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
 #include <zdg/kernel/topology/simple_points.hpp>
+#include <zdg/operations/surface_operations.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -35,6 +37,7 @@ namespace {
 struct TopologyArgs {
   VolumeInputArgs in;
   std::string command, output, adjacency, method = "sequential", skeleton, priority = "dt", anchors;
+  std::string html; ///< thin, skeleton: the viewer page of the result's boundary (3D)
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
 };
@@ -106,6 +109,14 @@ std::unique_ptr<OutputSet> plan_output(const TopologyArgs& a, bool required, std
   auto out = std::make_unique<OutputSet>(a.force ? Existing::replace : Existing::refuse);
   staging = out->add(a.output).string();
   return out;
+}
+
+// --html: an .html file beside the output, in the same OutputSet (all or nothing).
+std::string plan_html(const TopologyArgs& a, OutputSet& out) {
+  if (a.html.empty()) return "";
+  if (extension(a.html) != ".html")
+    throw IoError(a.html + ": the viewer is an .html file (got '" + extension(a.html) + "')");
+  return out.add(a.html).string();
 }
 
 double since(std::chrono::steady_clock::time_point t0) {
@@ -203,7 +214,10 @@ void run_simple(const TopologyArgs& a) {
 void run_thin(const TopologyArgs& a, SkeletonKind default_kind) {
   std::string staging;
   auto out = plan_output(a, true, staging);
+  const std::string html_staging = plan_html(a, *out);
   const auto mask = read_object(a);
+  if (!a.html.empty() && mask.dim() != 3)
+    throw InvalidArgument("--html shows 3D results (" + a.in.path + " is 2D)");
   ThinningOptions opt;
   opt.pair = pair_of(a, mask.dim());
   opt.skeleton = a.skeleton.empty() ? default_kind : parse_skeleton_kind(a.skeleton);
@@ -256,6 +270,22 @@ void run_thin(const TopologyArgs& a, SkeletonKind default_kind) {
   write_image(staging, a.output, mask.domain(),
               std::vector<std::uint64_t>(r.skeleton.values().begin(), r.skeleton.values().end()),
               DType::U8);
+  if (!html_staging.empty()) {
+    // The boundary of the result's voxels (the primal surface, as zdg surface draws it).
+    ObjectImage im;
+    im.mask = r.skeleton;
+    const Domain& d = mask.domain();
+    im.spacing = {1, 1, 1};
+    im.origin = {double(d.lower(0)), double(d.lower(1)), double(d.lower(2))};
+    im.name = a.in.path;
+    SurfaceOptions so;
+    so.adjacency = opt.pair;
+    so.mesh = SurfaceMesh::primal;
+    so.threads = a.threads;
+    MeshHtmlOptions page;
+    page.title = std::filesystem::path(a.in.path).filename().string() + " (" + a.command + ")";
+    write_mesh_html(html_staging, *surface_operation(std::move(im), so).mesh, page);
+  }
   out->commit();
   report(a, opt.pair, r.skeleton, secs,
          {{"method", a.method},
@@ -306,6 +336,9 @@ void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
                       "size (smaller first; sequential only)")
           ->capture_default_str();
       sub->add_option("--anchors", args->anchors, "image FILE: nonzero points are never deleted");
+      sub->add_option("--html", args->html,
+                      "also write a viewer page (.html, 3D) of the result's voxels: their "
+                      "boundary surface, to turn and pick in a browser");
     }
     sub->callback([args, name] {
       if (name == "components") run_components(*args);

@@ -118,6 +118,29 @@ TEST(TopologyCommands, OutputsEqualTheKernel) {
 }
 
 // Bad input: one line on stderr, exit 2, nothing created, an existing output untouched.
+// Issue #35: --html on a skeleton writes the viewer page of the result's voxels: as many faces
+// as zdg surface counts surfels on the written skeleton; a 2D input is refused before any work.
+TEST(TopologyCommands, SkeletonViewerPageHoldsTheResultsBoundary) {
+  Files f;
+  save(f.path("in.npy"), test::torus_image(9, 3));
+  auto r = test::run_zdg("topology skeleton " + f("in.npy") + " -o " + f("sk.npy") + " --html " +
+                         f("sk.html") + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = test::run_zdg("surface " + f("sk.npy") + " --adjacency 26,6 --json --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto surfels = nlohmann::json::parse(r.out)["surfels"].get<std::string>();
+  const std::string page = test::read_file(f.path("sk.html"));
+  EXPECT_NE(page.find("\"faces\":" + surfels + ","), std::string::npos) << surfels;
+  Image<std::uint8_t> flat(Domain({5, 5}), std::uint8_t{1});
+  flat[12] = 0;
+  save(f.path("flat.npy"), flat);
+  r = test::run_zdg("topology skeleton " + f("flat.npy") + " -o " + f("fs.npy") + " --html " +
+                    f("fs.html"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--html shows 3D results"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(f.path("fs.npy")));
+}
+
 TEST(TopologyCommands, BadInputRows) {
   Files f;
   save(f.path("in.npy"), test::torus_image(6, 2));
