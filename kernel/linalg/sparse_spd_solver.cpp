@@ -93,6 +93,9 @@ class CholmodFactor {
 public:
   explicit CholmodFactor(const CholmodApi& api) : api_(api) {
     api_.start(&common_);
+    // CHOLMOD prints its own warnings with printf, on stdout (a matrix that is not positive
+    // definite, ...), where a command's --json goes; zdg reports every failure itself: off.
+    common_.print = 0;
     common_.final_asis = 1;
     common_.supernodal = CHOLMOD_SUPERNODAL;
     common_.nmethods = 1;
