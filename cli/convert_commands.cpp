@@ -30,9 +30,8 @@ struct ConvertArgs {
 void run_convert(const ConvertArgs& a) {
   namespace fs = std::filesystem;
   using clock = std::chrono::steady_clock;
+  check_not_input(a.in.path, a.output);
   std::error_code ec;
-  if (fs::exists(a.output, ec) && fs::equivalent(a.in.path, a.output, ec))
-    throw InvalidArgument(a.output + ": is the input file; refusing to overwrite it");
   const VolumeFormat out_format = volume_format_of(a.output);
   OutputSet out(a.force ? Existing::replace : Existing::refuse);
   const fs::path staging = out.add(a.output); // checked before the input is read

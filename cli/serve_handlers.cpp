@@ -309,21 +309,36 @@ json serve_topology_skeleton(const json& j) {
 // zdg surface on a whole 3D object (--component all; operations/surface_operations.hpp):
 // counts, Betti numbers and one row per object component (by decreasing size) with its
 // surfaces' totals.
-json serve_surface(const json& j) {
+// The request's image as the object of an operation on `dim`-dimensional images (named `op`
+// in messages): unit spacing, origin at 0; an image of another dimension or without object
+// is refused.
+ObjectImage object_field(const json& j, int dim, const std::string& op) {
   ObjectImage im;
   im.mask = image_field(j);
-  if (im.mask.dim() != 3) throw InvalidArgument("surface: the image is not 3D");
+  if (im.mask.dim() != dim)
+    throw InvalidArgument(op + ": the image is not " + std::to_string(dim) + "D");
   const auto& v = im.mask.values();
   if (std::all_of(v.begin(), v.end(), [](std::uint8_t x) { return x == 0; }))
-    throw InvalidArgument("surface: the object is empty");
-  im.spacing = {1, 1, 1};
-  im.origin = {0, 0, 0};
-  im.name = "surface";
+    throw InvalidArgument(op + ": the object is empty");
+  im.spacing.assign(std::size_t(dim), 1.0);
+  im.origin.assign(std::size_t(dim), 0.0);
+  im.name = op;
+  return im;
+}
+
+// An operation's JSON without what describes the run rather than the answer.
+json answer_of(json r) {
+  for (const char* k : {"component", "seconds", "cpu_seconds", "threads"}) r.erase(k);
+  return r;
+}
+
+json serve_surface(const json& j) {
+  ObjectImage im = object_field(j, 3, "surface");
   SurfaceOptions o;
   o.adjacency = adjacency_field(j, 3);
   o.threads = 1;
-  json r = to_json(surface_operation(std::move(im), o));
-  for (const char* k : {"component", "estimates", "seconds", "cpu_seconds", "threads"}) r.erase(k);
+  json r = answer_of(to_json(surface_operation(std::move(im), o)));
+  r.erase("estimates"); // none are asked for
   return r;
 }
 
@@ -408,15 +423,7 @@ json serve_topology_components(const json& j) {
 // zdg contour on a whole 2D object (operations/surface_operations.hpp): the contours, Betti
 // numbers and the estimates asked for ("estimates": a list of names, "radius": "R" or "Rv").
 json serve_contour(const json& j) {
-  ObjectImage im;
-  im.mask = image_field(j);
-  if (im.mask.dim() != 2) throw InvalidArgument("contour: the image is not 2D");
-  const auto& v = im.mask.values();
-  if (std::all_of(v.begin(), v.end(), [](std::uint8_t x) { return x == 0; }))
-    throw InvalidArgument("contour: the object is empty");
-  im.spacing = {1, 1};
-  im.origin = {0, 0};
-  im.name = "contour";
+  ObjectImage im = object_field(j, 2, "contour");
   ContourOptions o;
   if (j.contains("adjacency")) o.adjacency = parse_adjacency_pair(text_field(j, "adjacency"), 2);
   if (j.contains("estimates")) {
@@ -429,9 +436,7 @@ json serve_contour(const json& j) {
   }
   o.radius = parse_estimator_radius(j.contains("radius") ? text_field(j, "radius") : "");
   o.threads = 1;
-  json r = to_json(contour_operation(std::move(im), o));
-  for (const char* k : {"component", "seconds", "cpu_seconds", "threads"}) r.erase(k);
-  return r;
+  return answer_of(to_json(contour_operation(std::move(im), o)));
 }
 
 // "halfplanes": a list of [a, b, c] (a x + b y <= c), each an integer or a rational as text.

@@ -78,13 +78,6 @@ std::int64_t parse_component(const std::string& text) {
   return k;
 }
 
-void refuse_input_as_output(const std::string& input, const std::string& output) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!output.empty() && fs::exists(output, ec) && fs::equivalent(input, output, ec))
-    throw InvalidArgument(output + ": is the input file; refusing to overwrite it");
-}
-
 // The picture options shared by surface and contour.
 struct PictureArgs {
   std::string png, color, view, size, range;
@@ -199,6 +192,24 @@ void add_steps(nlohmann::json& j, const OperationProgress& steps) {
   for (const auto& [k, v] : steps.cpu_seconds) j["cpu_seconds"][k] = v;
 }
 
+// The command's own steps, starting with the input's reading and selection (their CPU
+// seconds together: the loader reports wall seconds only).
+OperationProgress input_steps(const LoadedObject& obj, double cpu_before,
+                              const ProgressCallback& callback) {
+  OperationProgress steps(callback);
+  steps.seconds["read"] = obj.read_seconds;
+  steps.seconds["select"] = obj.select_seconds;
+  steps.cpu_seconds["read_select"] = process_cpu_seconds() - cpu_before;
+  return steps;
+}
+
+// "total": the wall seconds since t0 and the process's CPU seconds.
+void record_total(OperationProgress& steps, std::chrono::steady_clock::time_point t0) {
+  steps.seconds["total"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  steps.cpu_seconds["total"] = process_cpu_seconds();
+}
+
 // The object of the loaded image, as the operations take it.
 ObjectImage object_image(LoadedObject& obj, const std::string& path) {
   ObjectImage im;
@@ -251,24 +262,33 @@ double parse_positive(const std::string& text, const std::string& option) {
   return v;
 }
 
-// The estimator that computes a colour field (at-v: at-normal).
-std::string estimator_of_field(const std::vector<std::pair<std::string, std::string>>& fields,
-                               const std::string& field) {
-  for (const auto& [f, e] : fields)
-    if (f == field) return e;
-  return "";
+using ColorFields = std::vector<std::pair<std::string, std::string>>;
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// "a, b, c or none".
-std::string field_names(const std::vector<std::pair<std::string, std::string>>& fields) {
-  std::string out;
-  for (const auto& f : fields) {
-    out += f.first;
-    out += ", ";
+// The field that colours the picture: --color (its estimator added to `estimates` when not
+// asked for; InvalidArgument for a name that is not a colour field), "" for --color none;
+// without --color, with --png, the first colour field whose estimator is asked for, else "".
+std::string picture_color(const PictureArgs& p, const ColorFields& fields,
+                          std::vector<std::string>& estimates) {
+  if (p.color == "none") return "";
+  if (!p.color.empty()) {
+    for (const auto& [f, e] : fields) {
+      if (f != p.color) continue;
+      if (!contains(estimates, e)) estimates.push_back(e);
+      return f;
+    }
+    std::string names;
+    for (const auto& f : fields) names += f.first + ", ";
+    names.resize(names.size() - 2);
+    throw InvalidArgument("--color '" + p.color + "': expected " + names + " or none");
   }
-  out.resize(out.size() - 2);
-  out += " or none";
-  return out;
+  if (!p.png.empty())
+    for (const auto& [f, e] : fields)
+      if (contains(estimates, e)) return f;
+  return "";
 }
 
 void run_surface(const SurfaceArgs& a) {
@@ -285,24 +305,10 @@ void run_surface(const SurfaceArgs& a) {
   // The picture's colour: --color (computed when not in --estimate), else the first scalar
   // estimate, else none (a grey surface).
   const auto [png_w, png_h] = picture_size(a.picture, 1200, 900);
-  std::string color = a.picture.color;
-  const auto& color_fields = surface_color_fields();
-  auto asked = [&](const std::string& e) {
-    return std::find(o.estimates.begin(), o.estimates.end(), e) != o.estimates.end();
-  };
-  if (!color.empty() && color != "none") {
-    const std::string e = estimator_of_field(color_fields, color);
-    if (e.empty())
-      throw InvalidArgument("--color '" + color + "': expected " + field_names(color_fields));
-    if (!asked(e)) o.estimates.push_back(e);
-  }
-  if ((!a.at_alpha.empty() || !a.at_lambda.empty()) && !asked("at-normal"))
+  const std::string color = picture_color(a.picture, surface_color_fields(), o.estimates);
+  if ((!a.at_alpha.empty() || !a.at_lambda.empty()) && !contains(o.estimates, "at-normal"))
     throw InvalidArgument("--at-alpha and --at-lambda are only read by --estimate at-normal");
   check_surface_options(o);
-  if (color.empty() && !a.picture.png.empty())
-    for (const auto& [f, e] : color_fields)
-      if (color.empty() && asked(e)) color = f;
-  if (color == "none") color.clear();
   MeshRenderOptions render;
   render.width = png_w;
   render.height = png_h;
@@ -327,19 +333,16 @@ void run_surface(const SurfaceArgs& a) {
   std::optional<MeshFormat> mesh_format;
   if (!a.output.empty()) mesh_format = mesh_format_of(a.output);
   for (const auto* out : {&a.output, &a.csv, &a.picture.png, &a.html})
-    refuse_input_as_output(a.in.path, *out);
+    check_not_input(a.in.path, *out);
   OutputSet outputs(a.force ? Existing::replace : Existing::refuse);
   const std::string mesh_staging = a.output.empty() ? "" : outputs.add(a.output).string();
   const std::string html_staging = a.html.empty() ? "" : outputs.add(a.html).string();
   const std::string csv_staging = a.csv.empty() ? "" : outputs.add(a.csv).string();
   const std::string png_staging = a.picture.png.empty() ? "" : outputs.add(a.picture.png).string();
 
-  OperationProgress steps(o.progress);
   const double cpu_read = process_cpu_seconds();
   LoadedObject obj = load_object(a.in, 3, a.threads, !a.quiet);
-  steps.seconds["read"] = obj.read_seconds;
-  steps.seconds["select"] = obj.select_seconds;
-  steps.cpu_seconds["read_select"] = process_cpu_seconds() - cpu_read;
+  OperationProgress steps = input_steps(obj, cpu_read, o.progress);
   const nlohmann::json input = std::move(obj.json);
   ObjectImage image = object_image(obj, a.in.path);
   // Grey values for marching cubes: the threshold's level (positions interpolated); otherwise
@@ -382,9 +385,7 @@ void run_surface(const SurfaceArgs& a) {
     steps.done("write_csv");
   }
   outputs.commit();
-  steps.seconds["total"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_total).count();
-  steps.cpu_seconds["total"] = process_cpu_seconds();
+  record_total(steps, t_total);
 
   if (a.json) {
     nlohmann::json j = to_json(r);
@@ -453,21 +454,7 @@ void run_contour(const ContourArgs& a) {
   // The picture's colour: --color ii-curvature (computed when not in --estimate), the default
   // when ii-curvature is estimated; otherwise the contours are drawn in black.
   const auto [png_w, png_h] = picture_size(a.picture, 1000, 800);
-  std::string color = a.picture.color;
-  const auto& color_fields = contour_color_fields();
-  auto asked = [&](const std::string& e) {
-    return std::find(o.estimates.begin(), o.estimates.end(), e) != o.estimates.end();
-  };
-  if (!color.empty() && color != "none") {
-    const std::string e = estimator_of_field(color_fields, color);
-    if (e.empty())
-      throw InvalidArgument("--color '" + color + "': expected " + field_names(color_fields));
-    if (!asked(e)) o.estimates.push_back(e);
-  }
-  if (color.empty() && !a.picture.png.empty())
-    for (const auto& [f, e] : color_fields)
-      if (color.empty() && asked(e)) color = f;
-  if (color == "none") color.clear();
+  const std::string color = picture_color(a.picture, contour_color_fields(), o.estimates);
   ContourRenderOptions render;
   render.width = png_w;
   render.height = png_h;
@@ -484,19 +471,15 @@ void run_contour(const ContourArgs& a) {
     if (e != ".svg")
       throw IoError(a.output + ": the contour drawing is an .svg file (got '" + e + "')");
   }
-  for (const auto* out : {&a.output, &a.csv, &a.picture.png})
-    refuse_input_as_output(a.in.path, *out);
+  for (const auto* out : {&a.output, &a.csv, &a.picture.png}) check_not_input(a.in.path, *out);
   OutputSet outputs(a.force ? Existing::replace : Existing::refuse);
   const std::string svg_staging = a.output.empty() ? "" : outputs.add(a.output).string();
   const std::string csv_staging = a.csv.empty() ? "" : outputs.add(a.csv).string();
   const std::string png_staging = a.picture.png.empty() ? "" : outputs.add(a.picture.png).string();
 
-  OperationProgress steps(o.progress);
   const double cpu_read = process_cpu_seconds();
   LoadedObject obj = load_object(a.in, 2, a.threads, !a.quiet);
-  steps.seconds["read"] = obj.read_seconds;
-  steps.seconds["select"] = obj.select_seconds;
-  steps.cpu_seconds["read_select"] = process_cpu_seconds() - cpu_read;
+  OperationProgress steps = input_steps(obj, cpu_read, o.progress);
   const nlohmann::json input = std::move(obj.json);
   ObjectImage image = object_image(obj, a.in.path);
   std::vector<unsigned char>().swap(obj.volume.array.bytes); // frees (= {} keeps the capacity)
@@ -522,9 +505,7 @@ void run_contour(const ContourArgs& a) {
         picture_json(a.picture.png, color, png_w, png_h, p.value_min, p.value_max, p.color_map);
   }
   outputs.commit();
-  steps.seconds["total"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_total).count();
-  steps.cpu_seconds["total"] = process_cpu_seconds();
+  record_total(steps, t_total);
 
   if (a.json) {
     nlohmann::json j = to_json(r);

@@ -13,12 +13,14 @@
 #include <zdg/kernel/io/vol_io.hpp>
 #include <zdg/kernel/io/volume_io.hpp>
 #include <zdg/kernel/render/mesh_html.hpp>
+#include <zdg/kernel/surfaces/image_surfaces.hpp>
+#include <zdg/kernel/surfaces/image_surfels.hpp>
+#include <zdg/kernel/surfaces/primal_surface_mesh.hpp>
 #include <zdg/kernel/topology/betti_numbers.hpp>
 #include <zdg/kernel/topology/connected_components.hpp>
 #include <zdg/kernel/topology/critical_kernel_thinning.hpp>
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
 #include <zdg/kernel/topology/simple_points.hpp>
-#include <zdg/operations/surface_operations.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -101,11 +103,7 @@ std::unique_ptr<OutputSet> plan_output(const TopologyArgs& a, bool required, std
   if (e != ".npy" && e != ".vol" && e != ".pgm") {
     throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
   }
-  std::error_code ec;
-  if (std::filesystem::exists(a.output, ec) &&
-      std::filesystem::equivalent(a.in.path, a.output, ec)) {
-    throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
-  }
+  check_not_input(a.in.path, a.output);
   auto out = std::make_unique<OutputSet>(a.force ? Existing::replace : Existing::refuse);
   staging = out->add(a.output).string();
   return out;
@@ -116,6 +114,7 @@ std::string plan_html(const TopologyArgs& a, OutputSet& out) {
   if (a.html.empty()) return "";
   if (extension(a.html) != ".html")
     throw IoError(a.html + ": the viewer is an .html file (got '" + extension(a.html) + "')");
+  check_not_input(a.in.path, a.html);
   return out.add(a.html).string();
 }
 
@@ -271,20 +270,13 @@ void run_thin(const TopologyArgs& a, SkeletonKind default_kind) {
               std::vector<std::uint64_t>(r.skeleton.values().begin(), r.skeleton.values().end()),
               DType::U8);
   if (!html_staging.empty()) {
-    // The boundary of the result's voxels (the primal surface, as zdg surface draws it).
-    ObjectImage im;
-    im.mask = r.skeleton;
-    const Domain& d = mask.domain();
-    im.spacing = {1, 1, 1};
-    im.origin = {double(d.lower(0)), double(d.lower(1)), double(d.lower(2))};
-    im.name = a.in.path;
-    SurfaceOptions so;
-    so.adjacency = opt.pair;
-    so.mesh = SurfaceMesh::primal;
-    so.threads = a.threads;
+    // The boundary of the result's voxels: the primal surface, as zdg surface draws it.
+    const ImageSurfels sf = image_surfels(r.skeleton, a.threads);
+    const PolygonMesh m = primal_surface_mesh(r.skeleton, sf, SurfaceConvention::of(opt.pair),
+                                              VoxelPlacement::lattice(sf.grid), a.threads);
     MeshHtmlOptions page;
     page.title = std::filesystem::path(a.in.path).filename().string() + " (" + a.command + ")";
-    write_mesh_html(html_staging, *surface_operation(std::move(im), so).mesh, page);
+    write_mesh_html(html_staging, m, page);
   }
   out->commit();
   report(a, opt.pair, r.skeleton, secs,

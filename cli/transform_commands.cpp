@@ -140,13 +140,9 @@ TransformOptions make_options(const TransformArgs& a, int dim) {
 // folder, an existing file is refused unless --force, the output is not the input) and
 // prepares its staging file.
 void check_paths(TransformArgs& a) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
   if (a.output.empty()) throw InvalidArgument("no output file (-o OUT)");
   parse_metric(a.metric); // a metric out of the supported range fails before the input is read
-  if (fs::exists(a.output, ec) && fs::equivalent(a.in.path, a.output, ec)) {
-    throw InvalidArgument("output " + a.output + " is the input file: refusing to overwrite it");
-  }
+  check_not_input(a.in.path, a.output);
   const std::string e = extension(a.output);
   if (e != ".npy" && e != ".pgm" && e != ".vol") {
     throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
@@ -238,21 +234,6 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// fn(std::type_identity<T>{}) with T the unsigned type of the dtype (uint64 for any other).
-template <class Fn>
-void with_unsigned(DType dtype, Fn&& fn) {
-  switch (dtype) {
-  case DType::U8:
-    return fn(std::type_identity<std::uint8_t>{});
-  case DType::U16:
-    return fn(std::type_identity<std::uint16_t>{});
-  case DType::U32:
-    return fn(std::type_identity<std::uint32_t>{});
-  default:
-    return fn(std::type_identity<std::uint64_t>{});
-  }
-}
-
 template <class T>
 void run_dt_as(TransformArgs& a, const Image<std::uint8_t>& mask, const TransformOptions& opt,
                DType dtype, std::chrono::steady_clock::time_point t0) {
@@ -342,21 +323,21 @@ bool lean_dt(TransformArgs& a) {
     throw InvalidArgument("--out-of-core reads and writes .npy files (got " + a.in.path + " and " +
                           a.output + ")");
   }
-  if (!a.memory.empty()) parse_memory(a.memory); // a bad value fails before the input is read
-  if (!npy) return false;
-  // The lean path (operations/transform_operations.hpp); the options are read here when it
-  // takes the file, so that their errors come as on the general path.
-  const NpyLayout lay = read_npy_layout(a.in.path);
   NpyTransformOptions o;
+  // A bad --memory fails before the input is read.
+  if (!a.memory.empty()) o.memory_budget = parse_memory(a.memory);
+  if (!npy) return false;
+  // The lean path (operations/transform_operations.hpp). The options are read here with the
+  // array's dimension, as the general path reads them (the same errors on either path); a 0-D
+  // or empty array is left to the operation's own message.
+  const NpyLayout lay = read_npy_layout(a.in.path);
   o.input = a.in.path;
   o.output = a.staged;
   o.out_of_core = a.out_of_core;
-  if (!a.memory.empty()) o.memory_budget = parse_memory(a.memory);
   o.out_of_core_progress = progress_printer(a);
   o.pass_progress = pass_printer(a);
   const int dim = static_cast<int>(lay.shape.size());
-  const bool empty = std::find(lay.shape.begin(), lay.shape.end(), 0) != lay.shape.end();
-  if (!lay.fortran_order && !dtype_is_float(lay.dtype) && dim > 0 && !empty) {
+  if (dim > 0 && std::find(lay.shape.begin(), lay.shape.end(), 0) == lay.shape.end()) {
     if (!a.lower.empty()) o.lower = lower_of(a, dim);
     o.transform = make_options(a, dim);
   }

@@ -70,17 +70,36 @@ ComponentSelection select_components(Image<std::uint8_t>& mask, int k, std::int6
   return s;
 }
 
-// The radius in physical units, checked against the image's extent (in voxels or pixels).
-double physical_radius(const EstimatorRadius& radius, double h, std::int64_t extent,
-                       const std::string& name, const std::string& shape, const char* unit) {
-  const double R = radius.voxels ? radius.value * h : radius.value;
-  const double rv = R / h;
+// The radius in physical units at grid step h.
+double physical_radius(const EstimatorRadius& radius, double h) {
+  return radius.voxels ? radius.value * h : radius.value;
+}
+
+// The radius an estimator reads: positive, and at most the image's largest extent (in voxels
+// or pixels, `unit`; `shape` names the image's size in messages).
+void check_radius(const EstimatorRadius& radius, double h, std::int64_t extent,
+                  const std::string& name, const std::string& shape, const char* unit) {
   if (!(radius.value > 0) || !std::isfinite(radius.value))
     throw InvalidArgument("--radius " + radius_text(radius) + ": a positive number is needed");
+  const double rv = physical_radius(radius, h) / h;
   if (rv > double(extent))
     throw InvalidArgument(name + ": --radius " + radius_text(radius) + " is " +
                           fmt::format("{}", rv) + " " + unit + ", larger than the " + shape);
-  return R;
+}
+
+// The object's components under the pair's object adjacency (the mask keeps the selected
+// ones: select_components) and its Betti numbers, reported as two steps.
+ComponentSelection components_and_betti(Image<std::uint8_t>& mask, const AdjacencyPair& pair,
+                                        std::int64_t component, unsigned threads,
+                                        const std::string& name, OperationProgress& progress,
+                                        BettiNumbers& betti) {
+  progress.start("components");
+  ComponentSelection comps = select_components(mask, pair.object, component, threads, name);
+  progress.done("components", str(comps.count) + " component(s)");
+  progress.start("Betti numbers");
+  betti = betti_numbers(mask, pair, threads);
+  progress.done("betti");
+  return comps;
 }
 
 const ImageEstimator* find(const std::vector<ImageEstimator>& reg, const std::string& n) {
@@ -387,21 +406,21 @@ nlohmann::json value_stats(const std::vector<double>& v) {
 
 // --- zdg surface ---------------------------------------------------------------------------
 
-void check_surface_options(const SurfaceOptions& o) {
-  const auto names = check_estimator_names(o.estimates, surface_estimators());
+std::set<std::string> check_surface_options(const SurfaceOptions& o) {
+  auto names = check_estimator_names(o.estimates, surface_estimators());
   if (names.count("geodesic") != 0 && !o.source)
     throw InvalidArgument("--estimate geodesic needs --source SURFEL or --source X,Y,Z");
   if (o.source && names.count("geodesic") == 0)
     throw InvalidArgument("--source is only read by --estimate geodesic");
+  return names;
 }
 
 SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
   if (image.mask.dim() != 3) throw InvalidArgument(image.name + ": the surface needs a 3D image");
   make_adjacency_pair(3, o.adjacency.object, o.adjacency.background);
-  check_surface_options(o);
   SurfaceResult r;
   auto& est = r.estimates;
-  est.names = check_estimator_names(o.estimates, surface_estimators());
+  est.names = check_surface_options(o);
   est.at = o.at;
   const SurfaceConvention conv = SurfaceConvention::of(o.adjacency);
   OperationProgress progress(o.progress);
@@ -421,10 +440,11 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
     if (!(est.h > 0) || !std::isfinite(est.h))
       throw InvalidArgument(image.name + ": the grid step h must be a positive number");
     const std::int64_t extent = std::max({dom.extent(0), dom.extent(1), dom.extent(2)});
-    est.R = physical_radius(o.radius, est.h, extent, image.name,
-                            "volume (" + str(dom.extent(2)) + " x " + str(dom.extent(1)) + " x " +
-                                str(dom.extent(0)) + " voxels)",
-                            "voxels");
+    check_radius(o.radius, est.h, extent, image.name,
+                 "volume (" + str(dom.extent(2)) + " x " + str(dom.extent(1)) + " x " +
+                     str(dom.extent(0)) + " voxels)",
+                 "voxels");
+    est.R = physical_radius(o.radius, est.h);
     const double rv = est.R / est.h;
     if (rv > 256)
       throw InvalidArgument("--radius " + radius_text(o.radius) + " is " + fmt::format("{}", rv) +
@@ -432,15 +452,9 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
   }
   if (o.mesh != SurfaceMesh::marching_cubes) image.grey.reset();
 
-  progress.start("components");
-  ComponentSelection comps =
-      select_components(mask, o.adjacency.object, o.component, o.threads, image.name);
-  progress.done("components", str(comps.count) + " component(s)");
+  ComponentSelection comps = components_and_betti(mask, o.adjacency, o.component, o.threads,
+                                                  image.name, progress, r.betti);
   r.object_components = comps.count;
-
-  progress.start("Betti numbers");
-  r.betti = betti_numbers(mask, o.adjacency, o.threads);
-  progress.done("betti");
 
   progress.start("boundary surfels");
   ImageSurfels sf = image_surfels(mask, o.threads);
@@ -658,23 +672,17 @@ ContourResult contour_operation(ObjectImage image, const ContourOptions& o) {
   if (image.spacing.size() != 2 || image.origin.size() != 2)
     throw InvalidArgument(image.name + ": spacing and origin need two values (y, x)");
   r.h = isotropic_step(image.spacing, image.name);
-  r.R = o.radius.voxels ? o.radius.value * r.h : o.radius.value;
   if (req.ii_curvature || req.bc_tangent)
-    r.R = physical_radius(o.radius, r.h, std::max(dom.extent(0), dom.extent(1)), image.name,
-                          "image (" + str(dom.extent(1)) + " x " + str(dom.extent(0)) + " pixels)",
-                          "pixels");
+    check_radius(o.radius, r.h, std::max(dom.extent(0), dom.extent(1)), image.name,
+                 "image (" + str(dom.extent(1)) + " x " + str(dom.extent(0)) + " pixels)",
+                 "pixels");
+  r.R = physical_radius(o.radius, r.h);
   r.origin_pixel = Pixel{dom.lower(1), dom.lower(0)};
   r.origin = Point2<double>{image.origin[1], image.origin[0]};
 
-  progress.start("components");
-  ComponentSelection comps =
-      select_components(mask, o.adjacency.object, o.component, o.threads, image.name);
-  comps.labels.reset();
-  progress.done("components", str(comps.count) + " component(s)");
-  r.object_components = comps.count;
-  progress.start("Betti numbers");
-  r.betti = betti_numbers(mask, o.adjacency, o.threads);
-  progress.done("betti");
+  r.object_components =
+      components_and_betti(mask, o.adjacency, o.component, o.threads, image.name, progress, r.betti)
+          .count;
   progress.start("contours");
   r.contours = image_contours(mask, o.adjacency.object, o.adjacency.background);
   progress.done("contours", str(std::int64_t(r.contours.contours.size())) + " contours");

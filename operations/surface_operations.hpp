@@ -175,8 +175,9 @@ struct SurfaceResult {
 };
 
 /// The checks that need no image (estimator names, the source with geodesic only): the front
-/// ends call it before they read the input. surface_operation calls it too.
-void check_surface_options(const SurfaceOptions& options);
+/// ends call it before they read the input; surface_operation calls it too. Returns the
+/// estimator names as a set.
+std::set<std::string> check_surface_options(const SurfaceOptions& options);
 
 SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& options);
 

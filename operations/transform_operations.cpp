@@ -20,21 +20,6 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// fn(std::type_identity<T>{}) with T the unsigned type of the dtype (uint64 for any other).
-template <class Fn>
-void with_unsigned(DType dtype, Fn&& fn) {
-  switch (dtype) {
-  case DType::U8:
-    return fn(std::type_identity<std::uint8_t>{});
-  case DType::U16:
-    return fn(std::type_identity<std::uint16_t>{});
-  case DType::U32:
-    return fn(std::type_identity<std::uint32_t>{});
-  default:
-    return fn(std::type_identity<std::uint64_t>{});
-  }
-}
-
 template <class T>
 NpyTransformResult lean_dt_as(const NpyTransformOptions& o, const NpyLayout& lay, const Domain& dom,
                               DType dtype) {

@@ -22,6 +22,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace zdg {
@@ -55,5 +56,21 @@ std::optional<NpyTransformResult> npy_distance_transform(const NpyTransformOptio
 
 /// The narrowest unsigned dtype that holds every value up to `bound` (none past 64 bits).
 std::optional<DType> narrowest_unsigned(const BigInt& bound);
+
+/// fn(std::type_identity<T>{}) with T the unsigned integer type of the dtype (uint8, uint16,
+/// uint32; uint64 for any other): the type of the values written in that dtype.
+template <class Fn>
+void with_unsigned(DType dtype, Fn&& fn) {
+  switch (dtype) {
+  case DType::U8:
+    return fn(std::type_identity<std::uint8_t>{});
+  case DType::U16:
+    return fn(std::type_identity<std::uint16_t>{});
+  case DType::U32:
+    return fn(std::type_identity<std::uint32_t>{});
+  default:
+    return fn(std::type_identity<std::uint64_t>{});
+  }
+}
 
 } // namespace zdg

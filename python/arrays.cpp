@@ -483,6 +483,19 @@ py::dict ii_curvature_py(const py::object& obj, double h, double radius, bool pr
   return d;
 }
 
+// A spacing argument: `dim` positive finite numbers, in array order ((z, y, x) or (y, x)).
+std::vector<double> spacing_of(const py::object& spacing, int dim, const std::string& what) {
+  std::vector<double> sp;
+  for (py::handle v : py::iter(spacing)) sp.push_back(v.cast<double>());
+  const bool ok = sp.size() == std::size_t(dim) && std::all_of(sp.begin(), sp.end(), [](double x) {
+                    return x > 0 && std::isfinite(x);
+                  });
+  if (!ok)
+    throw InvalidArgument(what + ": spacing must be " + (dim == 3 ? "three" : "two") +
+                          " positive numbers (" + (dim == 3 ? "z, y, x" : "y, x") + ")");
+  return sp;
+}
+
 // zdg surface's operation (operations/surface_operations.hpp) on the whole object, with its
 // mesh; the estimates at step h and radius R (physical units) when asked.
 py::dict surface_py(const py::object& obj, const std::string& mesh,
@@ -499,15 +512,7 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
   im.spacing = {1, 1, 1};
   const Domain& dom = img.domain();
   im.origin = {double(dom.lower(0)), double(dom.lower(1)), double(dom.lower(2))};
-  if (!spacing.is_none()) {
-    std::vector<double> sp;
-    for (py::handle v : py::iter(spacing)) sp.push_back(v.cast<double>());
-    if (sp.size() != 3 || !(sp[0] > 0 && sp[1] > 0 && sp[2] > 0) ||
-        !(std::isfinite(sp[0]) && std::isfinite(sp[1]) && std::isfinite(sp[2]))) {
-      throw InvalidArgument("surface: spacing must be three positive numbers (z, y, x)");
-    }
-    im.spacing = sp;
-  }
+  if (!spacing.is_none()) im.spacing = spacing_of(spacing, 3, "surface");
   if (mesh != "primal" && mesh != "marching-cubes") {
     throw InvalidArgument("surface: mesh '" + mesh + "' is not 'primal' or 'marching-cubes'");
   }
@@ -569,14 +574,7 @@ py::dict contour_py(const py::object& obj, const std::string& adjacency,
   im.spacing = {1, 1};
   const Domain& dom = img.domain();
   im.origin = {double(dom.lower(0)), double(dom.lower(1))};
-  if (!spacing.is_none()) {
-    std::vector<double> sp;
-    for (py::handle v : py::iter(spacing)) sp.push_back(v.cast<double>());
-    if (sp.size() != 2 || !(sp[0] > 0 && sp[1] > 0) || !std::isfinite(sp[0]) ||
-        !std::isfinite(sp[1]))
-      throw InvalidArgument("contour: spacing must be two positive numbers (y, x)");
-    im.spacing = sp;
-  }
+  if (!spacing.is_none()) im.spacing = spacing_of(spacing, 2, "contour");
   im.mask = std::move(img);
   ContourResult r = [&] {
     py::gil_scoped_release release;

@@ -81,48 +81,27 @@ void put_base64(std::ostream& out, std::size_t n, Value value) {
   constexpr std::size_t kBlock = 3 * 16384; // elements: a multiple of 3, so of 3 bytes
   std::vector<T> block;
   block.reserve(kBlock);
-  std::string text(kBlock * sizeof(T) / 3 * 4, '\0');
   for (std::size_t b = 0; b < n; b += kBlock) {
     const std::size_t m = std::min(kBlock, n - b);
     block.clear();
     for (std::size_t i = 0; i < m; ++i) block.push_back(value(b + i));
-    const std::size_t bytes = m * sizeof(T);
-    if (b + m < n || bytes % 3 == 0) {
-      const char* end = encode_groups(reinterpret_cast<const unsigned char*>(block.data()),
-                                      bytes / 3, text.data());
-      out.write(text.data(), end - text.data());
-    } else {
-      out << base64(block.data(), bytes); // the last block, with its padding
-    }
+    out << base64(block.data(), m * sizeof(T)); // padded only in the last block
   }
 }
 
 } // namespace
 
 std::string base64(const void* data, std::size_t n) {
-  static const char* a = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  // The whole groups, then the last one or two bytes padded with zeros and '='.
   const auto* p = static_cast<const unsigned char*>(data);
-  std::string out;
-  out.reserve((n + 2) / 3 * 4);
-  std::size_t i = 0;
-  for (; i + 3 <= n; i += 3) {
-    const unsigned v = (unsigned(p[i]) << 16) | (unsigned(p[i + 1]) << 8) | p[i + 2];
-    out += a[v >> 18];
-    out += a[(v >> 12) & 63];
-    out += a[(v >> 6) & 63];
-    out += a[v & 63];
-  }
-  if (i + 1 == n) {
-    const unsigned v = unsigned(p[i]) << 16;
-    out += a[v >> 18];
-    out += a[(v >> 12) & 63];
-    out += "==";
-  } else if (i + 2 == n) {
-    const unsigned v = (unsigned(p[i]) << 16) | (unsigned(p[i + 1]) << 8);
-    out += a[v >> 18];
-    out += a[(v >> 12) & 63];
-    out += a[(v >> 6) & 63];
-    out += '=';
+  std::string out((n + 2) / 3 * 4, '=');
+  char* end = encode_groups(p, n / 3, out.data());
+  if (const std::size_t rest = n % 3; rest != 0) {
+    unsigned char last[3] = {0, 0, 0};
+    for (std::size_t k = 0; k < rest; ++k) last[k] = p[n - rest + k];
+    char four[4];
+    encode_groups(last, 1, four);
+    for (std::size_t k = 0; k <= rest; ++k) end[k] = four[k];
   }
   return out;
 }
