@@ -20,6 +20,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cctype>
+#include <filesystem>
 #include <string>
 
 namespace zdg::cli {
@@ -39,6 +41,15 @@ void add_surface_commands(CLI::App& app, Context& ctx);
 void add_plane_commands(CLI::App& app, Context& ctx);
 void add_check_commands(CLI::App& app, Context& ctx);
 void add_serve_commands(CLI::App& app, Context& ctx);
+void add_view_commands(CLI::App& app, Context& ctx);
+
+/// The extension of a path in lower case ("a/B.PLY" -> ".ply"), for the checks of the
+/// output and input formats.
+inline std::string lower_extension(const std::string& path) {
+  std::string e = std::filesystem::path(path).extension().string();
+  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
 
 /// Prints j on stdout (two-space indent), followed by a newline.
 void print_json(const nlohmann::json& j);

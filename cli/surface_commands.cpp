@@ -83,12 +83,6 @@ struct PictureArgs {
   std::string png, color, view, size, range;
 };
 
-std::string lower_extension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
 double parse_number(const std::string& text, const std::string& option) {
   double v = 0;
   const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
@@ -466,8 +460,7 @@ void run_contour(const ContourArgs& a) {
   o.threads = a.threads;
   o.progress = progress_printer(a.quiet);
   if (!a.output.empty()) {
-    std::string e = std::filesystem::path(a.output).extension().string();
-    for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::string e = lower_extension(a.output);
     if (e != ".svg")
       throw IoError(a.output + ": the contour drawing is an .svg file (got '" + e + "')");
   }

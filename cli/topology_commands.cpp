@@ -44,16 +44,10 @@ struct TopologyArgs {
   bool json = false, quiet = false, force = false;
 };
 
-std::string extension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
 // A .pgm output holds a 2D image and a .vol output a 3D one: checked before any work.
 void check_output_dim(const TopologyArgs& a, int dim) {
   if (a.output.empty()) return;
-  const std::string e = extension(a.output);
+  const std::string e = lower_extension(a.output);
   if ((e == ".pgm" && dim != 2) || (e == ".vol" && dim != 3)) {
     throw InvalidArgument(a.output + ": a " + e + " image is " + (e == ".pgm" ? "2D" : "3D") +
                           " and " + a.in.path + " is " + std::to_string(dim) + "D; use .npy or " +
@@ -73,7 +67,7 @@ Image<std::uint8_t> read_object(const TopologyArgs& a) {
 // file).
 void write_image(const std::string& path, const std::string& named, const Domain& dom,
                  const std::vector<std::uint64_t>& v, DType dtype) {
-  const std::string e = extension(named);
+  const std::string e = lower_extension(named);
   if (e == ".pgm") {
     if (dom.dim() != 2) throw IoError(named + ": a .pgm image is 2D; use .npy or .vol");
     write_pgm(path, Image<std::uint64_t>(dom, v));
@@ -99,7 +93,7 @@ std::unique_ptr<OutputSet> plan_output(const TopologyArgs& a, bool required, std
     if (required) throw InvalidArgument("no output file (-o OUT.npy|.vol|.pgm)");
     return nullptr;
   }
-  const std::string e = extension(a.output);
+  const std::string e = lower_extension(a.output);
   if (e != ".npy" && e != ".vol" && e != ".pgm") {
     throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
   }
@@ -112,8 +106,8 @@ std::unique_ptr<OutputSet> plan_output(const TopologyArgs& a, bool required, std
 // --html: an .html file beside the output, in the same OutputSet (all or nothing).
 std::string plan_html(const TopologyArgs& a, OutputSet& out) {
   if (a.html.empty()) return "";
-  if (extension(a.html) != ".html")
-    throw IoError(a.html + ": the viewer is an .html file (got '" + extension(a.html) + "')");
+  if (lower_extension(a.html) != ".html")
+    throw IoError(a.html + ": the viewer is an .html file (got '" + lower_extension(a.html) + "')");
   check_not_input(a.in.path, a.html);
   return out.add(a.html).string();
 }

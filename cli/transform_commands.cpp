@@ -53,12 +53,6 @@ struct TransformArgs {
   std::string staged;
 };
 
-std::string extension(const std::string& path) {
-  std::string e = std::filesystem::path(path).extension().string();
-  for (char& c : e) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
 std::vector<std::int64_t> parse_int_list(const std::string& text, const std::string& what) {
   std::vector<std::int64_t> out;
   std::string_view rest = text;
@@ -95,7 +89,7 @@ Image<T> at_lower(const TransformArgs& a, Image<T> img) {
 
 // The lean, out-of-core and MPI paths map the .npy file itself: C order, no selection.
 bool mapped_input(const TransformArgs& a) {
-  return !has_selection(a.in) && !raw_layout(a.in).given() && extension(a.in.path) == ".npy";
+  return !has_selection(a.in) && !raw_layout(a.in).given() && lower_extension(a.in.path) == ".npy";
 }
 
 // The input's values as exact integers (power, rdt), in any format (read_integer_image).
@@ -143,7 +137,7 @@ void check_paths(TransformArgs& a) {
   if (a.output.empty()) throw InvalidArgument("no output file (-o OUT)");
   parse_metric(a.metric); // a metric out of the supported range fails before the input is read
   check_not_input(a.in.path, a.output);
-  const std::string e = extension(a.output);
+  const std::string e = lower_extension(a.output);
   if (e != ".npy" && e != ".pgm" && e != ".vol") {
     throw IoError(a.output + ": unknown output format '" + e + "' (.npy, .pgm or .vol)");
   }
@@ -164,7 +158,7 @@ std::vector<std::int64_t> shape_of(const Domain& d) {
 void write_unsigned(const TransformArgs& a, const Domain& dom, const std::vector<std::uint64_t>& v,
                     DType dtype) {
   const std::string& path = a.staged;
-  std::string e = extension(a.output);
+  std::string e = lower_extension(a.output);
   if (e == ".pgm") {
     write_pgm(path, Image<std::uint64_t>(dom, v));
   } else if (e == ".vol") {
@@ -182,8 +176,9 @@ void write_unsigned(const TransformArgs& a, const Domain& dom, const std::vector
 }
 
 void require_npy(const std::string& path, const char* what) {
-  if (extension(path) != ".npy") {
-    throw IoError(path + ": " + what + " output is an .npy array (got '" + extension(path) + "')");
+  if (lower_extension(path) != ".npy") {
+    throw IoError(path + ": " + what + " output is an .npy array (got '" + lower_extension(path) +
+                  "')");
   }
 }
 
@@ -314,9 +309,9 @@ Domain npy_domain(const TransformArgs& a, const NpyLayout& lay) {
 }
 
 bool lean_dt(TransformArgs& a) {
-  const bool npy = mapped_input(a) && extension(a.output) == ".npy";
+  const bool npy = mapped_input(a) && lower_extension(a.output) == ".npy";
   if (a.out_of_core && !npy) {
-    if (extension(a.in.path) == ".npy" && extension(a.output) == ".npy") {
+    if (lower_extension(a.in.path) == ".npy" && lower_extension(a.output) == ".npy") {
       throw InvalidArgument("--out-of-core maps the object value != 0 of an .npy file (no "
                             "--threshold, --range, --label, --invert or raw options)");
     }
@@ -556,7 +551,7 @@ void run_mpi_rank(TransformArgs& a, Context& ctx, const std::string& cmd, MpiSes
       throw InvalidArgument("--mpi with --out-of-core or --memory: the ranks hold the volume "
                             "between them in memory (give one or the other)");
     }
-    if (extension(a.in.path) != ".npy" || extension(a.output) != ".npy") {
+    if (lower_extension(a.in.path) != ".npy" || lower_extension(a.output) != ".npy") {
       throw InvalidArgument("--mpi reads and writes .npy files (got " + a.in.path + " and " +
                             a.output + ")");
     }

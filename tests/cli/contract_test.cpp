@@ -80,6 +80,11 @@ std::string cube_npy() {
 
 // Files whose header promises more than they hold.
 const char* const kCutPgm = "P5\n4 4\n255\nab";
+// A valid ascii PLY triangle with one face field k (its last line is "3 0 1 2 0.5\n").
+const char* const kPlyTriangle =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+    "property float k\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 0.5\n";
 const char* const kCutVol = "X: 4\nY: 4\nZ: 4\nVersion: 2\n.\nab";
 
 std::vector<BadInput> bad_inputs() {
@@ -312,6 +317,54 @@ std::vector<BadInput> bad_inputs() {
        {{"v.npy", cube_npy()}},
        {},
        "--max-faces must be at least 1"},
+      {"view of a mesh that is not a PLY",
+       "view {dir}/m.obj -o {dir}/v.html",
+       {{"m.obj", "v 0 0 0\n"}},
+       {},
+       "zdg view reads a .ply mesh (got '.obj')"},
+      {"view page of another format",
+       "view {dir}/m.ply -o {dir}/v.png",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "the viewer is an .html file (got '.png')"},
+      {"view of a missing mesh",
+       "view {dir}/none.ply -o {dir}/v.html",
+       {},
+       {},
+       "none.ply"},
+      {"view of a PLY cut short",
+       "view {dir}/m.ply -o {dir}/v.html",
+       {{"m.ply", std::string(kPlyTriangle).substr(0, std::string(kPlyTriangle).size() - 4)}},
+       {},
+       "the file ends inside face 0"},
+      {"view of a PLY whose header claims more than the file holds",
+       "view {dir}/m.ply -o {dir}/v.html",
+       {{"m.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 999999999\n"
+                  "property float x\nproperty float y\nproperty float z\nelement face 0\n"
+                  "property list uchar int vertex_indices\nend_header\n"}},
+       {},
+       "claims 999999999 records"},
+      {"view of a PLY face with a vertex out of range",
+       "view {dir}/m.ply -o {dir}/v.html",
+       {{"m.ply", std::string(kPlyTriangle).substr(0, std::string(kPlyTriangle).size() - 12) +
+                      "3 0 1 3 0.5\n"}},
+       {},
+       "vertex index 3 out of range (3 vertices)"},
+      {"view past the face budget",
+       "view {dir}/m.ply -o {dir}/v.html --max-faces 0",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "--max-faces must be at least 1"},
+      {"view of a field the mesh lacks",
+       "view {dir}/m.ply -o {dir}/v.html --field ii-mean",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "the field 'ii-mean' is not on the mesh (k)"},
+      {"existing view page",
+       "view {dir}/m.ply -o {dir}/v.html",
+       {{"m.ply", kPlyTriangle}},
+       {"v.html"},
+       "exists"},
       {"surface mesh of an unknown format",
        "surface {dir}/v.npy -o {dir}/m.stl",
        {{"v.npy", cube_npy()}},
