@@ -13,9 +13,12 @@
 // (validate_experiment_settings): a flag given on the command line overrides the file.
 //   zdg paper cviu2014-ii2d -o DIR [--quick]
 //
-// Outputs in DIR: results.csv, summary.json (fits, verdicts, provenance), convergence.png
-// and .svg (papers/plot_convergence.py, run with /usr/bin/python3). Exit status 1 when a
-// theory check fails, 2 for bad input.
+// Outputs in DIR: results.csv, summary.json (fits, verdicts, provenance), convergence.png,
+// .svg and .html (the interactive page: curves per series, toggles, tooltips, verdicts), all
+// three drawn by papers/plot_convergence.py run with /usr/bin/python3; --no-plot skips them.
+// When the config file's directory holds a published.csv (papers/NAME/published.csv), its
+// curves that match the run are drawn too. Exit status 1 when a theory check fails, 2 for
+// bad input.
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/convergence/config.hpp>
@@ -222,12 +225,14 @@ std::string parameters_text(const Estimator& e) {
   return out;
 }
 
-// The outputs of a run in DIR (results.csv, summary.json, convergence.png and .svg): checked
-// before any work, written to staging files, moved in place together at the end
+// The outputs of a run in DIR (results.csv, summary.json, convergence.png, .svg and .html):
+// checked before any work, written to staging files, moved in place together at the end
 // (kernel/io/output_files.hpp). A DIR created for the run is removed again when the run fails.
+// published: a published.csv whose matching curves the plot and the page draw (none: empty).
 class ConvergeOutputs {
 public:
-  ConvergeOutputs(const std::string& output, bool force, bool plot) : dir_(output) {
+  ConvergeOutputs(const std::string& output, bool force, bool plot, fs::path published)
+      : dir_(output), published_(std::move(published)) {
     if (fs::exists(dir_) && !fs::is_directory(dir_)) {
       throw IoError("'" + output + "' exists and is not a directory");
     }
@@ -246,6 +251,7 @@ public:
       if (plot) {
         png_ = set_->add(dir_ / "convergence.png");
         svg_ = set_->add(dir_ / "convergence.svg");
+        html_ = set_->add(dir_ / "convergence.html");
       }
     } catch (...) {
       discard();
@@ -260,9 +266,9 @@ public:
 
   const fs::path& dir() const { return dir_; }
 
-  // Writes everything to the staging files, draws the plot from them, then commits. A plot
-  // that cannot be drawn is a warning: its outputs are left as they were. Returns whether
-  // the plot was drawn.
+  // Writes everything to the staging files, draws the plot and the page from them, then
+  // commits. A plot that cannot be drawn is a warning: its three outputs are left as they
+  // were. Returns whether the plot was drawn.
   bool write(const std::string& csv, const std::string& summary) {
     write_text(csv_, csv);
     write_text(json_, summary);
@@ -273,16 +279,20 @@ public:
         for (char c : p.string()) w += c == '\'' ? std::string("'\\''") : std::string(1, c);
         return w + "'";
       };
-      const std::string cmd = "/usr/bin/python3 " + q(script) + " --csv " + q(csv_) +
-                              " --summary " + q(json_) + " --png " + q(png_) + " --svg " + q(svg_) +
-                              " >/dev/null 2>&1";
+      const std::string cmd =
+          "/usr/bin/python3 " + q(script) + " --csv " + q(csv_) + " --summary " + q(json_) +
+          " --png " + q(png_) + " --svg " + q(svg_) + " --html " + q(html_) +
+          (published_.empty() ? std::string() : " --published " + q(published_)) +
+          " >/dev/null 2>&1";
       if (!fs::exists(script) || std::system(cmd.c_str()) != 0 || !fs::exists(png_) ||
-          !fs::exists(svg_)) {
+          !fs::exists(svg_) || !fs::exists(html_)) {
         std::cerr << "zdg: warning: the plot could not be drawn (" << script
-                  << " with /usr/bin/python3 and matplotlib); convergence.png and .svg left "
-                     "as they were\n";
+                  << " with /usr/bin/python3 and matplotlib"
+                  << (published_.empty() ? std::string() : ", " + published_.string())
+                  << "); convergence.png, .svg and .html left as they were\n";
         set_->drop(dir_ / "convergence.png");
         set_->drop(dir_ / "convergence.svg");
+        set_->drop(dir_ / "convergence.html");
       }
     }
     set_->commit();
@@ -291,7 +301,7 @@ public:
   }
 
 private:
-  fs::path dir_, created_;
+  fs::path dir_, created_, published_;
 
   void discard() {
     set_.reset(); // the staging files first
@@ -301,9 +311,17 @@ private:
     }
   }
   std::unique_ptr<OutputSet> set_;
-  fs::path csv_, json_, png_, svg_;
+  fs::path csv_, json_, png_, svg_, html_;
   bool committed_ = false;
 };
+
+// The published curves of a run: the published.csv beside its config file (papers/NAME/),
+// none for a run from flags alone.
+fs::path published_csv(const ConvergeOptions& o) {
+  if (o.config_file.empty()) return {};
+  const fs::path p = fs::path(o.config_file).parent_path() / "published.csv";
+  return fs::is_regular_file(p) ? p : fs::path();
+}
 
 void print_list() {
   std::cout << "shapes:\n";
@@ -361,7 +379,9 @@ void run_converge(ConvergeOptions o, Context& ctx) {
   if (o.output.empty() && !o.json) throw InvalidArgument("no output directory given (-o DIR)");
   // Every output is checked (and DIR created) before any work.
   std::unique_ptr<ConvergeOutputs> outputs;
-  if (!o.output.empty()) outputs = std::make_unique<ConvergeOutputs>(o.output, o.force, !o.no_plot);
+  if (!o.output.empty()) {
+    outputs = std::make_unique<ConvergeOutputs>(o.output, o.force, !o.no_plot, published_csv(o));
+  }
   const fs::path dir(o.output);
   const bool show = !o.quiet && isatty(2) != 0;
   ProgressFn progress;
@@ -416,7 +436,10 @@ void run_converge(ConvergeOptions o, Context& ctx) {
     if (!o.output.empty()) {
       std::cout << "results: " << (dir / "results.csv").string()
                 << "\nsummary: " << (dir / "summary.json").string() << '\n';
-      if (plotted) std::cout << "plot:    " << (dir / "convergence.png").string() << '\n';
+      if (plotted) {
+        std::cout << "plot:    " << (dir / "convergence.png").string()
+                  << "\npage:    " << (dir / "convergence.html").string() << '\n';
+      }
     }
   }
   if (!result.all_pass) ctx.exit_code = 1;
@@ -430,13 +453,14 @@ void add_text_option(CLI::App* cmd, const std::string& name, std::optional<std::
 }
 
 void add_run_options(CLI::App* cmd, ConvergeOptions& o) {
-  cmd->add_option("-o,--output", o.output, "Output directory (results.csv, summary.json, plot)");
+  cmd->add_option("-o,--output", o.output,
+                  "Output directory (results.csv, summary.json, plot, page)");
   add_text_option(cmd, "--threads", o.threads,
                   "Worker threads (runs in parallel), 0..1024 (default 0: all cores)");
   cmd->add_flag("--json", o.json, "Print runs and fits as JSON on stdout");
   cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
   cmd->add_flag("--force", o.force, "Replace results already in the output directory");
-  cmd->add_flag("--no-plot", o.no_plot, "Do not draw convergence.png/.svg");
+  cmd->add_flag("--no-plot", o.no_plot, "Do not draw convergence.png/.svg/.html");
 }
 
 } // namespace

@@ -134,7 +134,9 @@ TEST(ConvergeCli, NoPlotNamesNoPlotFile) {
   EXPECT_NE(r.out.find("results.csv"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("convergence.png"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("plot:"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("page:"), std::string::npos) << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir / "convergence.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "convergence.html"));
   std::filesystem::remove_all(dir);
 }
 
