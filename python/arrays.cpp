@@ -20,6 +20,7 @@
 #include <zdg/kernel/io/output_files.hpp>
 #include <zdg/kernel/io/volume_io.hpp>
 #include <zdg/kernel/parallel/populate_pages.hpp>
+#include <zdg/kernel/render/mesh_html.hpp>
 #include <zdg/kernel/surfaces/image_surfaces.hpp>
 #include <zdg/kernel/surfaces/image_surfels.hpp>
 #include <zdg/kernel/surfaces/marching_cubes.hpp>
@@ -42,6 +43,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -528,7 +530,10 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
     }
     if (radius.is_none()) throw InvalidArgument("surface: an estimate needs radius=R");
     const double R = radius.cast<double>();
-    o.estimates = {what == "mean" ? "ii-mean" : "ii-k1"};
+    // 'principal': one pass of principal curvatures, whose k1, k2 and Gaussian curvature
+    // become the mesh's fields.
+    o.estimates = what == "mean" ? std::vector<std::string>{"ii-mean"}
+                                 : std::vector<std::string>{"ii-k1", "ii-k2", "ii-gaussian"};
     o.radius = {R, false, py::str(radius).cast<std::string>()};
     o.step = h;
   }
@@ -554,6 +559,22 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
   d["object_components"] = r.object_components;
   d["surfaces"] = r.surfaces;
   if (!o.estimates.empty()) put_ii_estimates(d, std::move(r.estimates.mean), r.estimates.principal);
+  // The mesh's per-face fields and face normals, as zdg surface --html puts them on its page.
+  py::dict fields;
+  for (auto& field : m.face_scalars) {
+    const auto n = static_cast<std::int64_t>(field.second.size());
+    fields[py::str(field.first)] = owning_array(std::move(field.second), {n});
+  }
+  d["fields"] = fields;
+  if (!m.face_normals.empty()) {
+    std::vector<double> n3(3 * m.face_normals.size());
+    for (std::size_t f = 0; f < m.face_normals.size(); ++f) {
+      n3[3 * f] = m.face_normals[f].x;
+      n3[3 * f + 1] = m.face_normals[f].y;
+      n3[3 * f + 2] = m.face_normals[f].z;
+    }
+    d["face_normals"] = owning_array(std::move(n3), {nf, 3});
+  }
   return d;
 }
 
@@ -618,6 +639,101 @@ py::dict contour_py(const py::object& obj, const std::string& adjacency,
   out["contours"] = contours;
   if (req.gauss_area) out["gauss_area"] = e.gauss_area;
   return out;
+}
+
+// --- viewer pages ---------------------------------------------------------------------------
+
+std::string shape_text(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t k = 0; k < a.ndim(); ++k)
+    s += (k ? ", " : "") + std::to_string(a.shape(k)) + (a.ndim() == 1 ? "," : "");
+  return s + ")";
+}
+
+/// `obj` as a C-contiguous array of T (a copy when its type or layout differ), after checking
+/// that it holds numbers (integers only when `integral`; bools refused) and has `shape` (-1:
+/// any extent); InvalidArgument naming `what` else.
+template <class T>
+py::array_t<T> numbers_of(const py::object& obj, const std::string& what, bool integral,
+                          const std::vector<std::int64_t>& shape) {
+  py::array a = py::array::ensure(obj);
+  if (!a) throw InvalidArgument("view: " + what + " is not an array");
+  const char k = a.dtype().kind();
+  if (!(k == 'i' || k == 'u' || (!integral && k == 'f')))
+    throw InvalidArgument("view: " + what + " must hold " + (integral ? "integers" : "numbers") +
+                          ", not " + std::string(py::str(a.dtype())));
+  bool ok = a.ndim() == py::ssize_t(shape.size());
+  std::string want = "(";
+  for (std::size_t d = 0; d < shape.size(); ++d) {
+    ok = ok && (shape[d] < 0 || a.shape(py::ssize_t(d)) == shape[d]);
+    want += (d ? ", " : "") + (shape[d] < 0 ? std::string("n") : std::to_string(shape[d]));
+  }
+  want += shape.size() == 1 ? ",)" : ")";
+  if (!ok) throw InvalidArgument("view: " + what + " has shape " + shape_text(a) + ", not " + want);
+  return py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+}
+
+/// Triples of numbers as points; InvalidArgument naming the first non-finite one.
+std::vector<Point3<double>> finite_points(const py::array_t<double>& a, const char* what) {
+  const double* p = a.data();
+  std::vector<Point3<double>> out(static_cast<std::size_t>(a.shape(0)));
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i] = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+    if (!std::isfinite(out[i].x) || !std::isfinite(out[i].y) || !std::isfinite(out[i].z))
+      throw InvalidArgument(std::string("view: ") + what + " " + std::to_string(i) + " is (" +
+                            std::to_string(out[i].x) + ", " + std::to_string(out[i].y) + ", " +
+                            std::to_string(out[i].z) + "), not finite");
+  }
+  return out;
+}
+
+// The viewer page (kernel/render/mesh_html.hpp) of the mesh of the arrays: vertices (V, 3),
+// faces (F, k) vertex indices, fields {name: (F,)} or None, face normals (F, 3) or None.
+std::string mesh_html_py(const py::object& vertices, const py::object& faces,
+                         const py::object& fields, const py::object& normals,
+                         const std::string& title, const std::string& field,
+                         std::int64_t max_faces) {
+  if (max_faces < 1)
+    throw InvalidArgument("view: max_faces is " + std::to_string(max_faces) + ", not positive");
+  const auto fa = numbers_of<std::int64_t>(faces, "faces", true, {-1, -1});
+  const std::int64_t nf = fa.shape(0);
+  if (nf > max_faces)
+    throw InvalidArgument("view: the page would hold " + std::to_string(nf) +
+                          " faces, more than max_faces=" + std::to_string(max_faces) +
+                          "; a browser would not open it smoothly");
+  const auto va = numbers_of<double>(vertices, "vertices", false, {-1, 3});
+  PolygonMesh mesh;
+  mesh.face_size = static_cast<int>(fa.shape(1));
+  mesh.indices.assign(fa.data(), fa.data() + fa.size());
+  mesh.vertices = finite_points(va, "vertex");
+  if (!fields.is_none()) {
+    if (!py::isinstance<py::dict>(fields))
+      throw InvalidArgument("view: fields must be a dict {name: per-face values}");
+    for (const auto& [key, values] : py::reinterpret_borrow<py::dict>(fields)) {
+      if (!py::isinstance<py::str>(key))
+        throw InvalidArgument("view: a field name is " + std::string(py::repr(key)) +
+                              ", not a str");
+      const std::string name = py::str(key);
+      const auto v = numbers_of<double>(py::reinterpret_borrow<py::object>(values),
+                                        "field '" + name + "'", false, {nf});
+      mesh.face_scalars.emplace_back(name, std::vector<double>(v.data(), v.data() + v.size()));
+    }
+  }
+  if (!normals.is_none())
+    mesh.face_normals =
+        finite_points(numbers_of<double>(normals, "face normals", false, {nf, 3}), "face normal");
+  MeshHtmlOptions o;
+  o.title = title;
+  o.field = field;
+  o.max_faces = max_faces;
+  py::gil_scoped_release release;
+  return mesh_html(mesh, o);
+}
+
+void write_text_py(const py::object& path_arg, const std::string& text, bool force) {
+  const std::string path = path_argument(path_arg, "write");
+  py::gil_scoped_release release;
+  write_file_atomically(path, text, force ? Existing::replace : Existing::refuse);
 }
 
 // --- volumes --------------------------------------------------------------------------------
@@ -771,7 +887,9 @@ void bind_arrays(py::module_& m) {
         "ambiguities resolved by the adjacency pair ('6,26' default, '26,6', '6,18', '18,6'); "
         "spacing (sz, sy, sx) scales the vertices. Returns {'vertices' (n, 3) float64 as x, y, "
         "z (x along the last axis), 'faces' (m, 4 or 3) int64, counter-clockwise from outside, "
-        "'adjacency'}, the mesh zdg surface writes as PLY. estimate='mean' or 'principal' (primal "
+        "'adjacency', 'fields' {name: (m,) float64}, the per-face fields of zdg surface's mesh "
+        "and viewer page, 'face_normals' (m, 3) (primal mesh)}, the mesh zdg surface writes as "
+        "PLY (zdg.view shows it). estimate='mean' or 'principal' (primal "
         "mesh only: face f is surfel f) adds the integral-invariant estimates per face at grid "
         "step h and radius R, as ii_curvature returns them.");
   m.def("contour", &contour_py, py::arg("image"), py::kw_only(), py::arg("adjacency") = "4,8",
@@ -785,6 +903,20 @@ void bind_arrays(py::module_& m) {
         "'mlp_length'}], 'gauss_area'}. estimates: names among ii-curvature, bc-tangent, "
         "lmst-tangent, mlp-length, gauss-area; radius 'R' (physical units) or 'Rv' (pixels); "
         "spacing (sy, sx), equal for the estimates.");
+  m.def("mesh_html", &mesh_html_py, py::arg("vertices"), py::arg("faces"),
+        py::arg("fields") = py::none(), py::arg("normals") = py::none(), py::kw_only(),
+        py::arg("title") = MeshHtmlOptions{}.title, py::arg("field") = "",
+        py::arg("max_faces") = MeshHtmlOptions{}.max_faces,
+        "The self-contained viewer page of zdg surface --html (WebGL, no network) of a mesh: "
+        "vertices (V, 3) numbers, faces (F, k >= 3) vertex indices counter-clockwise from "
+        "outside, fields {name: (F,) numbers} (non-finite values are shown as 'no value') or "
+        "None, face normals (F, 3) or None; field: the one shown first ('': the first). "
+        "Non-finite vertices or normals, indices out of range, wrong shapes or more than "
+        "max_faces faces raise ValueError. Returns the page's text (zdg.view wraps it).");
+  m.def("_write_text", &write_text_py, py::arg("path"), py::arg("text"), py::kw_only(),
+        py::arg("force") = false,
+        "Writes text (UTF-8) to path atomically (a staging file renamed in place); an "
+        "existing file is refused unless force=True.");
   m.def("read_volume", &read_volume_py, py::arg("path"), py::kw_only(), py::arg("metadata") = false,
         "Reads a volume (.vol v2/v3, .nii, .nii.gz, .npy, .pgm; path: str, bytes or "
         "os.PathLike) into a numpy array of its "

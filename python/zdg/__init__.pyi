@@ -1,5 +1,5 @@
 # Type stubs of the zdg package (the extension zdg._zdg and zdg.plot).
-from typing import Any, Literal, Optional, Sequence, TypedDict, Union, overload
+from typing import Any, Literal, Mapping, Optional, Sequence, TypedDict, Union, overload
 
 import os
 
@@ -164,3 +164,30 @@ def converge(shapes: Sequence[str], estimators: Sequence[str], *,
              fit_levels: int = 0, tolerance: float = 0.1, threads: int = 1,
              box: Optional[tuple[float, float]] = None) -> ConvergeResult: ...
 def plot(result: ConvergeResult, norm: str = "linf", ax: Any = None) -> Any: ...
+def mesh_html(vertices: npt.ArrayLike, faces: npt.ArrayLike,
+              fields: Optional[dict[str, npt.ArrayLike]] = None,
+              normals: Optional[npt.ArrayLike] = None, *, title: str = "zdg view",
+              field: str = "", max_faces: int = 2_000_000) -> str: ...
+
+class Viewer:
+    faces: int
+    fields: tuple[str, ...]
+    title: str
+    width: str
+    height: str
+    def __init__(self, page: str, faces: int, fields: Sequence[str], title: str) -> None: ...
+    @property
+    def html(self) -> str: ...
+    def _repr_html_(self) -> str: ...
+    def save(self, path: StrOrBytesPath, force: bool = False) -> StrOrBytesPath: ...
+
+MeshArrays = Union[
+    Mapping[str, Any],  # zdg.surface's result, or {'vertices', 'faces', 'fields', 'face_normals'}
+    tuple[npt.ArrayLike, npt.ArrayLike],
+    tuple[npt.ArrayLike, npt.ArrayLike, Optional[Mapping[str, npt.ArrayLike]]],
+    tuple[npt.ArrayLike, npt.ArrayLike, Optional[Mapping[str, npt.ArrayLike]],
+          Optional[npt.ArrayLike]],
+]
+
+def view(obj: MeshArrays, field: Optional[str] = None, title: Optional[str] = None,
+         max_faces: Optional[int] = None) -> Viewer: ...
