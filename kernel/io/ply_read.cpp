@@ -337,7 +337,6 @@ PlyMesh parse_ply(std::string_view bytes, const std::string& source) {
     if (e.name == "face") face_el = &e;
   }
   if (!vertex_el) throw IoError(source + ": no vertex element");
-  if (!face_el) throw IoError(source + ": no face element (a point cloud is not a mesh)");
   auto find = [](const Element& e, std::string_view name) -> int {
     for (std::size_t k = 0; k < e.props.size(); ++k)
       if (e.props[k].name == name) return int(k);
@@ -369,6 +368,7 @@ PlyMesh parse_ply(std::string_view bytes, const std::string& source) {
     vrole[i] = 6 + int(out.vertex_scalars.size());
     out.vertex_scalars.emplace_back(p.name, std::vector<double>{});
   }
+  if (!face_el) throw IoError(source + ": no face element (a point cloud is not a mesh)");
   // The face element's roles: 0 the indices, 1..3 normal, 4 + j the j-th scalar.
   std::vector<int> frole(face_el->props.size(), -1);
   int ind = find(*face_el, "vertex_indices");

@@ -68,6 +68,13 @@ const std::vector<Operation>& operations() {
       {"", "", "plot",
        "command line: zdg converge and zdg paper draw their plots; serve: a "
        "picture is not a JSON answer"},
+      {"view", "", "view",
+       "serve: a page is not a JSON answer (Python's view takes a mesh or a surface() result, "
+       "not a .ply)"},
+      {"", "", "Viewer", "the page object zdg.view returns (_repr_html_, save)"},
+      {"", "", "mesh_html",
+       "command line: zdg view and the commands' --html write the page; serve: a page is not a "
+       "JSON answer"},
       {"paper", "", "", "serve and Python: reproduces a figure from the repository's papers/"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
