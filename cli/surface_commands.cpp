@@ -83,6 +83,13 @@ struct PictureArgs {
   std::string png, color, view, size, range;
 };
 
+// --html names an .html page and --max-faces is positive (checked before any work).
+void check_viewer_options(const std::string& html, std::int64_t max_faces) {
+  if (!html.empty() && lower_extension(html) != ".html")
+    throw IoError(html + ": the viewer is an .html file (got '" + lower_extension(html) + "')");
+  if (max_faces < 1) throw InvalidArgument("--max-faces must be at least 1");
+}
+
 double parse_number(const std::string& text, const std::string& option) {
   double v = 0;
   const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
@@ -318,9 +325,7 @@ void run_surface(const SurfaceArgs& a) {
     throw InvalidArgument("--mesh '" + a.mesh + "': expected primal or marching-cubes");
   if (!a.output.empty() || !a.picture.png.empty() || !a.html.empty())
     o.mesh = a.mesh == "primal" ? SurfaceMesh::primal : SurfaceMesh::marching_cubes;
-  if (!a.html.empty() && lower_extension(a.html) != ".html")
-    throw IoError(a.html + ": the viewer is an .html file (got '" + lower_extension(a.html) + "')");
-  if (a.max_faces < 1) throw InvalidArgument("--max-faces must be at least 1");
+  check_viewer_options(a.html, a.max_faces);
   o.keep_surfels = !a.csv.empty();
   o.threads = a.threads;
   o.progress = progress_printer(a.quiet);
@@ -432,7 +437,8 @@ void run_surface(const SurfaceArgs& a) {
 struct ContourArgs {
   VolumeInputArgs in;
   std::string adjacency = "4,8", component = "all", estimate, radius;
-  std::string output, csv;
+  std::string output, csv, html;
+  std::int64_t max_faces = 2'000'000;
   PictureArgs picture;
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
@@ -464,9 +470,12 @@ void run_contour(const ContourArgs& a) {
     if (e != ".svg")
       throw IoError(a.output + ": the contour drawing is an .svg file (got '" + e + "')");
   }
-  for (const auto* out : {&a.output, &a.csv, &a.picture.png}) check_not_input(a.in.path, *out);
+  check_viewer_options(a.html, a.max_faces);
+  for (const auto* out : {&a.output, &a.csv, &a.picture.png, &a.html})
+    check_not_input(a.in.path, *out);
   OutputSet outputs(a.force ? Existing::replace : Existing::refuse);
   const std::string svg_staging = a.output.empty() ? "" : outputs.add(a.output).string();
+  const std::string html_staging = a.html.empty() ? "" : outputs.add(a.html).string();
   const std::string csv_staging = a.csv.empty() ? "" : outputs.add(a.csv).string();
   const std::string png_staging = a.picture.png.empty() ? "" : outputs.add(a.picture.png).string();
 
@@ -482,6 +491,17 @@ void run_contour(const ContourArgs& a) {
     steps.start("writing " + a.output);
     write_contour_svg(svg_staging, r);
     steps.done("write_svg");
+  }
+  if (!a.html.empty()) {
+    steps.start("viewer " + a.html);
+    MeshHtmlOptions page;
+    page.title = std::filesystem::path(a.in.path).filename().string();
+    page.field = r.request.ii_curvature ? "ii-curvature" : "contour";
+    page.max_faces = a.max_faces;
+    page.top_view = true;
+    page.note = "each face is a linel (a ribbon along it); centre: its midpoint";
+    write_mesh_html(html_staging, contour_mesh(r), page);
+    steps.done("write_html");
   }
   if (!a.csv.empty()) {
     steps.start("writing " + a.csv);
@@ -507,6 +527,7 @@ void run_contour(const ContourArgs& a) {
     j["input"] = input;
     if (!a.output.empty()) j["svg"] = a.output;
     if (!a.csv.empty()) j["csv"] = a.csv;
+    if (!a.html.empty()) j["html"] = a.html;
     if (!picture.is_null()) j["picture"] = picture;
     print_json(j);
     return;
@@ -522,6 +543,7 @@ void run_contour(const ContourArgs& a) {
   }
   if (!a.output.empty()) fmt::print("  drawing -> {}\n", a.output);
   if (!a.csv.empty()) fmt::print("  per-linel values -> {}\n", a.csv);
+  if (!a.html.empty()) fmt::print("  viewer -> {}\n", a.html);
   if (!picture.is_null()) print_picture_line(picture);
 }
 
@@ -536,6 +558,14 @@ std::string estimate_help(const std::vector<ImageEstimator>& registry) {
     out += ")";
   }
   return out;
+}
+
+template <class Args>
+void add_viewer_options(CLI::App* cmd, Args& a, const char* help) {
+  cmd->add_option("--html", a.html, help);
+  cmd->add_option("--max-faces", a.max_faces,
+                  "the most faces the viewer page holds (default 2000000); a larger result is "
+                  "refused before any output is written");
 }
 
 template <class Args>
@@ -602,12 +632,9 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                       "picture view AZIMUTH,ELEVATION in degrees (default -60,30; 90,90 looks "
                       "down the z axis with x to the right)");
   surface->add_option("--mesh", s->mesh, "primal (one quad per surfel, default) or marching-cubes");
-  surface->add_option("--html", s->html,
-                      "write a self-contained viewer page (WebGL, no network): the mesh coloured "
-                      "by any estimate, picking, the normals as glyphs");
-  surface->add_option("--max-faces", s->max_faces,
-                      "the most faces the viewer page holds (default 2000000); a larger mesh is "
-                      "refused before any work is written");
+  add_viewer_options(surface, *s,
+                     "write a self-contained viewer page (WebGL, no network): the mesh coloured "
+                     "by any estimate, picking, the normals as glyphs");
   surface->callback([s] { run_surface(*s); });
 
   auto c = std::make_shared<ContourArgs>();
@@ -625,6 +652,9 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                       "the estimate that colours the contours in the picture: ii-curvature "
                       "(computed if not in --estimate) or none; default: ii-curvature when "
                       "estimated");
+  add_viewer_options(contour, *c,
+                     "write a self-contained viewer page (WebGL, no network): the contours seen "
+                     "from above, each linel a face coloured by any estimate, picking");
   contour->callback([c] { run_contour(*c); });
 }
 

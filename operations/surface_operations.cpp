@@ -791,6 +791,58 @@ void write_contour_csv(const std::string& path, const ContourResult& r) {
   if (!f) throw IoError(path + ": write failed");
 }
 
+PolygonMesh contour_mesh(const ContourResult& r) {
+  const auto& cs = r.contours;
+  const auto& req = r.request;
+  const auto& e = r.estimates;
+  const double h = r.h, w = h / 6;
+  PolygonMesh m;
+  m.face_size = 4;
+  std::vector<double> contour, ii, bx, by, lx, ly;
+  for (std::size_t c = 0; c < cs.contours.size(); ++c) {
+    const auto& k = cs.contours[c];
+    Pixel p = k.start;
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      const Pixel d = freeman_step(k.codes[i]);
+      // The pointel q at origin + h (q - origin_pixel - 1/2), as in write_contour_csv.
+      const double ax = r.origin.x + h * (double(p.x - r.origin_pixel.x) - 0.5);
+      const double ay = r.origin.y + h * (double(p.y - r.origin_pixel.y) - 0.5);
+      const double bx_ = ax + h * double(d.x), by_ = ay + h * double(d.y);
+      // The left normal of the step (-dy, dx): the ribbon's corners a - wn, b - wn, b + wn,
+      // a + wn turn counterclockwise.
+      const double nx = -double(d.y) * w, ny = double(d.x) * w;
+      const auto v = m.vertex_count();
+      m.vertices.push_back({ax - nx, ay - ny, 0});
+      m.vertices.push_back({bx_ - nx, by_ - ny, 0});
+      m.vertices.push_back({bx_ + nx, by_ + ny, 0});
+      m.vertices.push_back({ax + nx, ay + ny, 0});
+      m.indices.insert(m.indices.end(), {v, v + 1, v + 2, v + 3});
+      contour.push_back(double(c));
+      if (req.ii_curvature) ii.push_back(e.ii_curvature[c][i]);
+      if (req.bc_tangent) {
+        bx.push_back(e.bc_tangent[c][i].x);
+        by.push_back(e.bc_tangent[c][i].y);
+      }
+      if (req.lmst_tangent) {
+        lx.push_back(e.lmst_tangent[c][i].x);
+        ly.push_back(e.lmst_tangent[c][i].y);
+      }
+      p = p + d;
+    }
+  }
+  if (req.ii_curvature) m.face_scalars.emplace_back("ii-curvature", std::move(ii));
+  if (req.bc_tangent) {
+    m.face_scalars.emplace_back("bc-tangent x", std::move(bx));
+    m.face_scalars.emplace_back("bc-tangent y", std::move(by));
+  }
+  if (req.lmst_tangent) {
+    m.face_scalars.emplace_back("lmst-tangent x", std::move(lx));
+    m.face_scalars.emplace_back("lmst-tangent y", std::move(ly));
+  }
+  m.face_scalars.emplace_back("contour", std::move(contour));
+  return m;
+}
+
 void write_contour_svg(const std::string& path, const ContourResult& r) {
   const auto& dom = r.mask.domain();
   ContourDrawing drawing;

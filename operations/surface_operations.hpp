@@ -237,6 +237,13 @@ void write_contour_svg(const std::string& path, const ContourResult& r);
 /// linels' at a pointel), for render_contours_png.
 std::vector<ContourPolyline> contour_polylines(const ContourResult& r, const std::string& field);
 
+/// The contours as a flat mesh in the plane z = 0 for the viewer page (mesh_html with
+/// top_view): each linel a quad ribbon along it, of width h / 3, counterclockwise seen from +z,
+/// in physical coordinates (those of the CSV's midpoints). Per-face fields: "contour" (its
+/// index), "ii-curvature" when estimated, and each tangent estimate's components at the linel's
+/// start pointel ("bc-tangent x", "bc-tangent y", likewise lmst-tangent). O(linels).
+PolygonMesh contour_mesh(const ContourResult& r);
+
 // --- JSON helpers --------------------------------------------------------------------------
 
 /// {"min","max","mean","count"} of the finite values ({"count":"0"} when none).

@@ -162,6 +162,8 @@ void write_page(std::ostream& out, const PolygonMesh& mesh, const MeshHtmlOption
     out << "\"";
   }
   if (!o.field.empty()) out << ",\"field\":" << json_string(o.field);
+  if (!o.note.empty()) out << ",\"note\":" << json_string(o.note);
+  if (o.top_view) out << ",\"view\":\"top\"";
   out << "}" << kPage.substr(d + 6);
 }
 

@@ -228,3 +228,43 @@ def test_screenshot_of_a_fixed_scene_matches_the_reference(tmp_path, driver):
     # most pixels equal up to rounding; a few (edges, antialiasing) may differ more
     assert np.mean(diff > 12) < 0.01, f"{np.mean(diff > 12):.3%} of the pixels differ"
     assert np.abs(shot - ref).mean() < 2.0
+
+
+def test_contour_page_shows_each_linel_with_its_values(tmp_path, driver):
+    """zdg contour --html: the contours seen from above, a face per linel (the CSV's rows, in
+    order), its midpoint as the face centre and its ii-curvature as the value."""
+    y, x = np.mgrid[:40, :40]
+    disc = ((x - 19.5) ** 2 + (y - 19.5) ** 2 <= 15 ** 2) & ((x - 19.5) ** 2 + (y - 19.5) ** 2 > 36)
+    np.save(tmp_path / "ring.npy", disc.astype(np.uint8))
+    r = subprocess.run([CLI, "contour", str(tmp_path / "ring.npy"), "--estimate",
+                        "ii-curvature,bc-tangent", "--radius", "3v", "--csv",
+                        str(tmp_path / "c.csv"), "--html", str(tmp_path / "c.html"), "--quiet"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    with open(tmp_path / "c.csv") as f:
+        rows = list(csv.DictReader(f))
+    load(driver, tmp_path / "c.html")
+    assert not [e for e in driver.get_log("browser") if e["level"] == "SEVERE"]
+    assert driver.execute_script("return zdgViewer.faces") == len(rows)
+    img = pixels(driver)
+    assert np.any(img < 250, axis=2).mean() > 0.005, "the contours are not drawn"
+    w, h = driver.execute_script("return [view.width, view.height]")
+    picked = set()
+    for f in range(0, len(rows), max(1, len(rows) // 40)):
+        # the face's centre on the canvas: scan a small grid near where the page projects it
+        info = driver.execute_script("return zdgViewer.info(arguments[0])", f)
+        row = rows[f]
+        assert info["values"]["contour"] == float(row["contour"])
+        assert info["values"]["ii-curvature"] == pytest.approx(float(row["ii_curvature"]),
+                                                               rel=1e-6, abs=1e-7)
+        assert info["values"]["bc-tangent x"] == pytest.approx(float(row["bc_tx"]), abs=1e-6)
+        assert np.allclose(info["centre"][:2], [float(row["midpoint_x"]), float(row["midpoint_y"])],
+                           atol=1e-5)
+    # the drawn pixels of the canvas's middle row
+    row_y = h // 2
+    for x in np.nonzero(np.any(img[row_y] < 250, axis=1))[0]:
+        f = driver.execute_script("return zdgViewer.pick(arguments[0], arguments[1])", int(x), row_y)
+        if f >= 0:
+            picked.add(f)
+    # a horizontal line through the middle of the canvas crosses the ring's two contours
+    assert {int(rows[f]["contour"]) for f in picked} == {0, 1}, picked
