@@ -36,6 +36,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace zdg::cli {
@@ -465,6 +466,38 @@ void add_run_options(CLI::App* cmd, ConvergeOptions& o) {
 
 } // namespace
 
+namespace {
+
+// A figure whose study is not a sweep of `zdg converge` (papers/NAME/run.py: it runs zdg's
+// commands on volumes it makes itself, as a user would) runs its script with this zdg:
+//   /usr/bin/python3 papers/NAME/run.py -o DIR [--quick] --zdg <this executable>
+// The output folder is checked as converge checks its own (given, and refused when it holds a
+// summary.json unless --force); the script's exit status is the command's.
+void run_paper_script(const fs::path& script, const std::string& output, bool quick, bool force) {
+  if (output.empty())
+    throw InvalidArgument("zdg paper " + script.parent_path().filename().string() +
+                          " needs -o DIR (its script writes its figure and summary there)");
+  if (fs::exists(fs::path(output) / "summary.json") && !force)
+    throw IoError((fs::path(output) / "summary.json").string() + ": exists (use --force)");
+  auto q = [](const std::string& w0) { // a shell word: '...' with each ' as '\''
+    std::string w = "'";
+    for (char c : w0) w += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return w + "'";
+  };
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  const std::string cmd = "/usr/bin/python3 " + q(script.string()) + " -o " + q(output) +
+                          (quick ? " --quick" : "") +
+                          (ec ? std::string() : " --zdg " + q(self.string()));
+  std::cout.flush();
+  const int status = std::system(cmd.c_str());
+  if (status != 0)
+    throw Error(script.string() + " failed (exit status " +
+                std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : status) + ")");
+}
+
+} // namespace
+
 void add_converge_commands(CLI::App& app, Context& ctx) {
   {
     auto o = std::make_shared<ConvergeOptions>();
@@ -505,14 +538,19 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     auto quick = std::make_shared<bool>(false);
     auto* cmd = app.add_subcommand("paper", "Reproduce one figure of papers/NAME");
     cmd->add_option("name", *name,
-                    "cviu2014-ii2d, cviu2014-compare, gauss-area, tangent-2d, cviu2014-ii3d, "
-                    "hausdorff")
+                    "a folder of papers/: cviu2014-ii2d, cviu2014-compare, gauss-area, "
+                    "tangent-2d, cviu2014-ii3d, hausdorff, lb-digital, at-normals (a script: "
+                    "needs -o DIR)")
         ->required();
     cmd->add_flag("--quick", *quick, "The reduced sweep (papers/NAME/quick.toml)");
     add_run_options(cmd, *o);
     cmd->callback([o, name, quick, &ctx] {
       fs::path dir = fs::path(source_dir()) / "papers" / *name;
       fs::path file = dir / (*quick ? "quick.toml" : "config.toml");
+      if (!fs::exists(file) && fs::exists(dir / "run.py")) {
+        run_paper_script(dir / "run.py", o->output, *quick, o->force);
+        return;
+      }
       if (!fs::exists(file)) {
         std::string known;
         if (fs::exists(fs::path(source_dir()) / "papers")) {

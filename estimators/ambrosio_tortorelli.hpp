@@ -16,7 +16,7 @@
 // continuous units alpha / h^2, sqrt(2) lambda / h, eps h / sqrt(2); derivation: docs/NOTES.md,
 // "estimators/ambrosio_tortorelli.hpp").
 //
-// Defaults: alpha 0.1, lambda 0.015, eps 2 -> 0.25 by halving, 10 steps per eps, tolerance 1e-4
+// Defaults: alpha 2.0, lambda 0.015, eps 2 -> 0.25 by halving, 10 steps per eps, tolerance 1e-4
 // (the measurements behind them: papers/at-normals/README.md).
 //
 // Minimisation (the papers' alternating scheme): u = g, v = 1; for eps = epsilon1, epsilon1 /
@@ -43,7 +43,7 @@
 namespace zdg {
 
 struct ATParameters {
-  double alpha = 0.1;          ///< data fidelity (> 0): the larger, the closer u stays to g
+  double alpha = 2.0;          ///< data fidelity (> 0): the larger, the closer u stays to g
   double lambda = 0.015;       ///< cost of a discontinuity per cell of length (> 0)
   double epsilon1 = 2.0;       ///< first eps (>= epsilon2), in cells
   double epsilon2 = 0.25;      ///< last eps (> 0)

@@ -216,7 +216,7 @@ def main():
                     help="a fixed II radius in voxels (default 3, the papers' setting; 0: the "
                          "convergent law R = k h^{1/3})")
     ap.add_argument("--at-alpha", default="2.0",
-                    help="zdg surface --at-alpha (default 2.0; zdg's own default is 0.1)")
+                    help="zdg surface --at-alpha (default 2.0, zdg's own default)")
     ap.add_argument("--at-lambda", help="zdg surface --at-lambda (default: zdg's)")
     ap.add_argument("--at-length", type=float,
                     help="instead of --at-alpha: AT's smoothing length L in the unit frame, the "
