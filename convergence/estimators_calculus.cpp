@@ -3,9 +3,10 @@
 // digital_integration.hpp), compared with the shape's area in closed form; and the
 // Laplace-Beltrami operators lb-heat (estimators/heat_laplace_beltrami.hpp), lb-cotan (primal
 // surface), lb-cotan-mc (marching-cubes mesh) and lb-combinatorial
-// (kernel/linalg/cotan_laplacian.hpp) applied to a test function u (the parameter `u`,
-// convergence/scalar_field.hpp), compared at every element with Delta_S u at the nearest point of
-// the true surface (its normal and principal curvatures from the shape's closed forms: exact for
+// (kernel/linalg/cotan_laplacian.hpp), lb-polygonal and grad-polygonal (the corrected polygonal
+// calculus, kernel/calculus/polygonal_calculus.hpp) applied to a test function u (the parameter
+// `u`, convergence/scalar_field.hpp), compared at every element with Delta_S u at the nearest point
+// of the true surface (its normal and principal curvatures from the shape's closed forms: exact for
 // spheres, from the fundamental forms for the ellipsoid, torus and polynomial shapes).
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
@@ -14,6 +15,7 @@
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
+#include <zdg/kernel/calculus/polygonal_calculus.hpp>
 #include <zdg/kernel/linalg/cotan_laplacian.hpp>
 #include <zdg/kernel/surfaces/image_surfaces.hpp>
 #include <zdg/kernel/surfaces/image_surfels.hpp>
@@ -146,6 +148,63 @@ ErrorStats run_lb_combinatorial(const RunInput& in) {
   return laplacian_errors(f, complex.centres, L.multiply(sampled(f, complex.centres)));
 }
 
+// The primal quads and the II normals (radius k h^{1/3}) that re-embed them.
+struct PolygonalSetup {
+  SurfelComplex complex;
+  PolygonMesh mesh;
+  std::vector<Point3<double>> normals;
+};
+
+// The stabilization of the inner product of 1-forms (de Goes et al. 2020's value).
+constexpr double kPolygonalLambda = 1.0;
+
+PolygonalSetup polygonal_setup(const RunInput& in, const detail::Digitized3& d) {
+  PolygonalSetup s{surfel_complex(primal_surface(d.surfels), in.h), {}, {}};
+  s.mesh.face_size = 4;
+  s.mesh.vertices = s.complex.pointels;
+  for (const auto& q : s.complex.surfels)
+    s.mesh.indices.insert(s.mesh.indices.end(), q.begin(), q.end());
+  // The II normals in the order of d.surfels, which surfel_complex keeps.
+  const auto ii =
+      ii_principal_curvatures(d.inside, d.box, d.surfels, in.h, in.k * std::cbrt(in.h), 1);
+  for (const auto& c : ii) s.normals.push_back(c.normal);
+  return s;
+}
+
+// -M^{-1} L u at the pointels, L = D^T M D of the corrected polygonal calculus.
+ErrorStats run_lb_polygonal(const RunInput& in) {
+  const detail::Digitized3 d = whole_surface(in, "lb-polygonal");
+  const TestFunction f = test_function(in, d);
+  const PolygonalSetup s = polygonal_setup(in, d);
+  const PolygonalCalculus calculus(s.mesh, s.normals);
+  const auto lu = calculus.laplacian(kPolygonalLambda).multiply(sampled(f, s.complex.pointels));
+  const auto m = calculus.vertex_masses();
+  std::vector<double> delta(lu.size());
+  for (std::size_t i = 0; i < lu.size(); ++i) delta[i] = -lu[i] / m[i];
+  return laplacian_errors(f, s.complex.pointels, delta);
+}
+
+// |G u - grad_S u| per surfel, grad_S u the tangential gradient at the centre's nearest surface
+// point.
+ErrorStats run_grad_polygonal(const RunInput& in) {
+  const detail::Digitized3 d = whole_surface(in, "grad-polygonal");
+  const TestFunction f = test_function(in, d);
+  const PolygonalSetup s = polygonal_setup(in, d);
+  const PolygonalCalculus calculus(s.mesh, s.normals);
+  const auto g = calculus.gradient().multiply(sampled(f, s.complex.pointels));
+  ErrorAccumulator acc;
+  for (std::size_t i = 0; i < s.complex.centres.size(); ++i) {
+    const auto c = s.complex.centres[i];
+    const SurfacePoint3 q = d.shape->project({c.x - d.t.x, c.y - d.t.y, c.z - d.t.z});
+    const Jet3 j = f.u.jet(q.point);
+    Point3<double> grad{j.gradient[0], j.gradient[1], j.gradient[2]};
+    grad = grad - dot(grad, q.normal) * q.normal;
+    const Point3<double> e{g[3 * i] - grad.x, g[3 * i + 1] - grad.y, g[3 * i + 2] - grad.z};
+    acc.add(std::sqrt(dot(e, e)));
+  }
+  return acc.stats();
+}
+
 EstimatorParameter function_parameter() {
   EstimatorParameter p{"u", "x", 0, 0,
                        "test function u(x, y, z), e.g. x^2-y^2 (convergence/scalar_field.hpp)"};
@@ -246,6 +305,36 @@ void register_calculus_estimators(std::vector<Estimator>& out) {
           return std::nullopt;
         }},
        run_lb_combinatorial});
+  out.push_back(
+      {"lb-polygonal",
+       3,
+       "Laplacian -M^{-1} D^T M_1 D of the corrected polygonal calculus (de Goes, Butts, Desbrun "
+       "2020, lambda = 1; the surfels re-embedded by the II normal of radius k h^{1/3}: "
+       "Coeurjolly, Lachaud, DGMM 2022) applied to u at the pointels, against Delta_S u at the "
+       "nearest surface point",
+       "Laplace-Beltrami",
+       {{"k", "1", 0.0, 1e6, "radius factor of the II normal: R = k h^{1/3}"},
+        function_parameter()},
+       {"pointwise convergence observed with converging normals, none proven (Coeurjolly, "
+        "Lachaud, DGMM 2022: experimental)",
+        [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          return std::nullopt;
+        }},
+       run_lb_polygonal});
+  out.push_back(
+      {"grad-polygonal",
+       3,
+       "per-surfel gradient G u of the corrected polygonal calculus against the tangential "
+       "gradient of u at the centre's nearest surface point (the norm of the difference)",
+       "gradient",
+       {{"k", "1", 0.0, 1e6, "radius factor of the II normal: R = k h^{1/3}"},
+        function_parameter()},
+       {"consistent with converging normals (the gradient is exact on linear functions of a "
+        "planar face; Coeurjolly, Lachaud, DGMM 2022); no rate proven",
+        [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          return std::nullopt;
+        }},
+       run_grad_polygonal});
 }
 
 } // namespace detail

@@ -15,6 +15,14 @@
 namespace zdg {
 namespace {
 
+MeshHtmlOptions options(const std::string& title, const std::string& field, std::int64_t max) {
+  MeshHtmlOptions o;
+  o.title = title;
+  o.field = field;
+  o.max_faces = max;
+  return o;
+}
+
 TEST(MeshHtml, Base64IsRfc4648) {
   const std::pair<const char*, const char*> v[] = {{"", ""},
                                                    {"f", "Zg=="},
@@ -70,7 +78,7 @@ RC_GTEST_PROP(MeshHtml, EmbeddedGeometryDecodesToTheMesh, ()) {
   std::vector<double> field;
   for (int f = 0; f < nf; ++f) field.push_back(*rc::gen::inRange(-100000, 100000) / 64.0);
   m.face_scalars.emplace_back("ii-mean", field);
-  const std::string page = mesh_html(m, {"t", "ii-mean", 1000});
+  const std::string page = mesh_html(m, options("t", "ii-mean", 1000));
   const auto pos = decode(blob(page, "positions"));
   RC_ASSERT(pos.size() == 12u * std::size_t(nv));
   for (int i = 0; i < nv; ++i) {
@@ -100,12 +108,12 @@ TEST(MeshHtml, RefusesWhatABrowserCannotOpenAndUnknownFields) {
   m.face_size = 3;
   m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   m.indices = {0, 1, 2, 0, 2, 1};
-  EXPECT_NO_THROW(mesh_html(m, {"t", "", 2}));
-  EXPECT_THROW(mesh_html(m, {"t", "", 1}), InvalidArgument);
-  EXPECT_THROW(mesh_html(m, {"t", "ii-mean", 10}), InvalidArgument);
+  EXPECT_NO_THROW(mesh_html(m, options("t", "", 2)));
+  EXPECT_THROW(mesh_html(m, options("t", "", 1)), InvalidArgument);
+  EXPECT_THROW(mesh_html(m, options("t", "ii-mean", 10)), InvalidArgument);
   // A name cannot end the data's script element.
   m.face_scalars.emplace_back("</script><b>", std::vector<double>{1, 2});
-  const std::string page = mesh_html(m, {"</script>", "", 10});
+  const std::string page = mesh_html(m, options("</script>", "", 10));
   EXPECT_EQ(page.find("</script><b>"), std::string::npos);
   EXPECT_NE(page.find("&lt;/script&gt;"), std::string::npos);
 }
