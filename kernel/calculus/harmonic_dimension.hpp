@@ -9,6 +9,11 @@
 // a count taken from the operators, independent of the Euler characteristic
 // V - E + F (kernel/surfaces/image_surfaces.hpp), which it must agree with: for one
 // connected closed surface rank d0 = V - 1 and rank d1 = F - 1, so dim = E - V - F + 2.
+// The count is that of the complex given: at a pinched linel (kernel/surfaces/
+// pointel_cycles.hpp) surfel_complex pairs the four sides in face order, not by the surfel
+// adjacency, and can glue the two passages crosswise (a surface then splits into two face
+// components and the dimension differs from 2 genus: found by the random property of the
+// test, which asserts 2 genus only without pinched linels); elsewhere it is 2 genus.
 //
 // O(nnz log nnz) per rank (graph incidences: modular_rank.hpp), twice (two primes); O(F)
 // memory. Counts int64. Errors: InvalidArgument when a surface label is out of range or when
