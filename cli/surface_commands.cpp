@@ -232,6 +232,7 @@ struct SurfaceArgs {
   PictureArgs picture;
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
+  bool harmonic = false;
 };
 
 // --source: a surfel index, or a point X,Y,Z in physical units (the nearest surfel centre,
@@ -327,6 +328,7 @@ void run_surface(const SurfaceArgs& a) {
     o.mesh = a.mesh == "primal" ? SurfaceMesh::primal : SurfaceMesh::marching_cubes;
   check_viewer_options(a.html, a.max_faces);
   o.keep_surfels = !a.csv.empty();
+  o.harmonic = a.harmonic;
   o.threads = a.threads;
   o.progress = progress_printer(a.quiet);
   std::optional<MeshFormat> mesh_format;
@@ -409,8 +411,11 @@ void run_surface(const SurfaceArgs& a) {
       break;
     }
     fmt::print("  component {}: {} voxels, {} surfels in {} surface(s), Euler characteristic {}, "
-               "genus {}\n",
-               c.rank, c.voxels, c.surfels, c.surfaces, c.euler, c.genus);
+               "genus {}{}\n",
+               c.rank, c.voxels, c.surfels, c.surfaces, c.euler, c.genus,
+               c.harmonic_dim < 0
+                   ? std::string()
+                   : fmt::format(", harmonic 1-forms of dimension {}", c.harmonic_dim));
   }
   if (r.pinched_pointels > 0 || r.pinched_linels > 0)
     fmt::print("  {} pinched pointel(s), {} pinched linel(s) (see zdg surface --help)\n",
@@ -632,6 +637,10 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                       "picture view AZIMUTH,ELEVATION in degrees (default -60,30; 90,90 looks "
                       "down the z axis with x to the right)");
   surface->add_option("--mesh", s->mesh, "primal (one quad per surfel, default) or marching-cubes");
+  surface->add_flag("--harmonic", s->harmonic,
+                    "per component, the dimension of the harmonic 1-forms of its closed surfaces "
+                    "(\"harmonic_dim\" in --json), from the exact ranks of the exterior "
+                    "derivatives d0 and d1 (2 genus on each closed surface)");
   add_viewer_options(surface, *s,
                      "write a self-contained viewer page (WebGL, no network): the mesh coloured "
                      "by any estimate, picking, the normals as glyphs");

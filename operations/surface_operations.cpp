@@ -3,6 +3,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_geodesics.hpp>
+#include <zdg/kernel/calculus/harmonic_dimension.hpp>
 #include <zdg/kernel/parallel/parallel_for.hpp>
 #include <zdg/kernel/surfaces/marching_cubes.hpp>
 #include <zdg/kernel/surfaces/primal_surface_mesh.hpp>
@@ -470,11 +471,25 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
   r.pinched_pointels = ss.pinched_pointels;
   r.pinched_linels = ss.pinched_linels;
 
+  // With harmonic: each closed surface's harmonic dimension from its exterior derivatives
+  // (the primal complex: face f is surfel f, as surface_of).
+  std::vector<HarmonicDimension> harmonic;
+  if (o.harmonic) {
+    progress.start("harmonic dimensions (exact ranks of d0, d1)");
+    harmonic =
+        harmonic_dimensions(surfel_complex(primal_surface_mesh(mask, sf, conv, r.place, o.threads)),
+                            ss.surface_of, std::int64_t(ss.surfaces.size()));
+    progress.done("harmonic");
+  }
   // Per selected component: voxels, surfels, surfaces, Euler characteristic and genus of its
-  // boundary (the genus is the sum of its surfaces' genera).
+  // boundary (the genus is the sum of its surfaces' genera), likewise the harmonic dimension.
   std::map<std::int64_t, SurfaceComponent> per;
-  for (auto l : comps.chosen) per[l].voxels = comps.sizes[std::size_t(l - 1)];
-  for (const auto& s : ss.surfaces) {
+  for (auto l : comps.chosen) {
+    per[l].voxels = comps.sizes[std::size_t(l - 1)];
+    if (o.harmonic) per[l].harmonic_dim = 0;
+  }
+  for (std::size_t k = 0; k < ss.surfaces.size(); ++k) {
+    const auto& s = ss.surfaces[k];
     std::int64_t l = comps.chosen.front();
     if (comps.labels) l = (*comps.labels)[code_voxel(sf.codes[std::size_t(s.first)])];
     auto& c = per[l];
@@ -482,6 +497,8 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
     c.surfaces += 1;
     c.euler += s.euler;
     c.genus += s.genus;
+    if (o.harmonic)
+      c.harmonic_dim = std::max<std::int64_t>(c.harmonic_dim, 0) + harmonic[k].dimension;
   }
   comps.labels.reset();
   for (auto& [l, c] : per) {
@@ -553,13 +570,15 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
 nlohmann::json to_json(const SurfaceResult& r) {
   const auto& est = r.estimates;
   nlohmann::json components = nlohmann::json::array();
-  for (const auto& c : r.components)
+  for (const auto& c : r.components) {
     components.push_back({{"rank", str(c.rank)},
                           {"voxels", str(c.voxels)},
                           {"surfels", str(c.surfels)},
                           {"surfaces", str(c.surfaces)},
                           {"euler", str(c.euler)},
                           {"genus", str(c.genus)}});
+    if (c.harmonic_dim >= 0) components.back()["harmonic_dim"] = str(c.harmonic_dim);
+  }
   nlohmann::json estimates = nlohmann::json::object();
   const std::size_t n = std::size_t(r.surfels);
   for (const auto& [name, cols] : surface_columns()) {

@@ -6,7 +6,9 @@
 //   surface_operation   3D: the object's components under the adjacency pair (all, or the
 //                       K-th largest), its Betti numbers (kernel/topology/betti_numbers.hpp),
 //                       the boundary surfels and their closed surfaces with Euler
-//                       characteristic and genus (kernel/surfaces/image_surfaces.hpp), the
+//                       characteristic and genus (kernel/surfaces/image_surfaces.hpp), with
+//                       harmonic the dimension of their harmonic 1-forms (exact ranks of d0
+//                       and d1, O(S log S)), the
 //                       estimates asked for (surface_estimators()), and a primal or
 //                       marching-cubes mesh carrying them per face. O(N) for the image of N
 //                       voxels plus the estimators' costs (integral invariants O(S R^3) for S
@@ -130,13 +132,18 @@ struct SurfaceOptions {
   ATParameters at;                      ///< for at-normal
   SurfaceMesh mesh = SurfaceMesh::none; ///< the mesh, with the estimates per face
   bool keep_surfels = false; ///< the surfels and their surfaces stay in the result (for CSV)
-  unsigned threads = 0;      ///< 0: all cores
+  /// The dimension of the harmonic 1-forms of each closed surface, from the exact ranks of
+  /// its exterior derivatives (kernel/calculus/harmonic_dimension.hpp; 2 genus, except on a
+  /// surface through a pinched linel, whose primal complex may glue its passages crosswise).
+  bool harmonic = false;
+  unsigned threads = 0; ///< 0: all cores
   ProgressCallback progress;
 };
 
 /// Per selected component: its voxels and the totals of its boundary's surfaces.
 struct SurfaceComponent {
   std::int64_t rank = 0, voxels = 0, surfels = 0, surfaces = 0, euler = 0, genus = 0;
+  std::int64_t harmonic_dim = -1; ///< the sum over its surfaces (-1: not asked for)
 };
 
 /// The estimates per surfel (in the order of the sorted surfel codes).
@@ -182,7 +189,8 @@ std::set<std::string> check_surface_options(const SurfaceOptions& options);
 SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& options);
 
 /// {"adjacency","component","object_components","components":[{"rank","voxels","surfels",
-/// "surfaces","euler","genus"}],"surfaces","surfels","euler","betti","pinched_pointels",
+/// "surfaces","euler","genus","harmonic_dim" (with
+/// harmonic)}],"surfaces","surfels","euler","betti","pinched_pointels",
 /// "pinched_linels","estimates":{...},"mesh":{"kind","vertices","faces","edges","euler"},
 /// "seconds","cpu_seconds","threads"} (counts as decimal strings).
 nlohmann::json to_json(const SurfaceResult& r);

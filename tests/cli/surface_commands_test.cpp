@@ -89,6 +89,40 @@ TEST(SurfaceCommand, TopologyOfKnownObjects) {
   }
 }
 
+// --harmonic: the dimension of the harmonic 1-forms of each component's closed surfaces,
+// from the exact ranks of d0 and d1 (kernel/calculus/harmonic_dimension.hpp), beside the genus
+// computed from V - F: 2 genus, summed over the surfaces (torus 2, a slab with two holes 4,
+// a hollow ball's two spheres 0); absent without the flag; printed in the text output.
+TEST(SurfaceCommand, HarmonicDimensionBesideTheGenus) {
+  Files f;
+  save_volume(f.path("torus.npy"), 20, torus);
+  save_volume(f.path("hollow.npy"), 18, hollow);
+  save_volume(f.path("two.npy"), 22, [](double x, double y, double z) {
+    const bool slab = std::abs(z) <= 1.5 && std::abs(x) <= 9 && std::abs(y) <= 4.5;
+    const bool hole = std::abs(y) <= 1.5 && (std::abs(x - 4.5) <= 1.5 || std::abs(x + 4.5) <= 1.5);
+    return slab && !hole;
+  });
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"torus.npy", "2"}, {"two.npy", "4"}, {"hollow.npy", "0"}};
+  for (const char* adj : {"6,26", "26,6", "6,18", "18,6"}) {
+    for (const auto& [name, dim] : cases) {
+      SCOPED_TRACE(std::string(adj) + " " + name);
+      const auto j = run_json("surface " + f(name) + " --harmonic --adjacency " + adj);
+      ASSERT_EQ(j["components"].size(), 1u);
+      const auto& c = j["components"][0];
+      EXPECT_EQ(c["harmonic_dim"], dim);
+      EXPECT_EQ(std::stoll(c["harmonic_dim"].get<std::string>()),
+                2 * std::stoll(c["genus"].get<std::string>()));
+    }
+  }
+  const auto plain = run_json("surface " + f("torus.npy"));
+  EXPECT_FALSE(plain["components"][0].contains("harmonic_dim"));
+  const auto text = test::run_zdg("surface " + f("torus.npy") + " --harmonic --quiet");
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("genus 1, harmonic 1-forms of dimension 2"), std::string::npos)
+      << text.out;
+}
+
 // Mesh sizes and Euler characteristics: the primal mesh has one quad per surfel and
 // V - E + F = the surfaces' sum; marching cubes too (a closed manifold: E = 3F/2).
 TEST(SurfaceCommand, MeshesHaveTheSurfacesEuler) {
