@@ -315,8 +315,10 @@ void register_calculus_estimators(std::vector<Estimator>& out) {
        "Laplace-Beltrami",
        {{"k", "1", 0.0, 1e6, "radius factor of the II normal: R = k h^{1/3}"},
         function_parameter()},
-       {"pointwise convergence observed with converging normals, none proven (Coeurjolly, "
-        "Lachaud, DGMM 2022: experimental)",
+       {"no convergence proven; with u sampled at the pointels (the staircase) the re-embedded "
+        "faces see an O(1) slope of u across them, and zdg measures no convergence on digital "
+        "spheres, even with the true normals (Coeurjolly, Lachaud, DGMM 2022 report "
+        "experiments only)",
         [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
           return std::nullopt;
         }},
