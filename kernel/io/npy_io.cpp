@@ -609,7 +609,15 @@ Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64
     throw IoError((source.empty() ? "" : source + ": ") + dtype_name(a.dtype) +
                   " array where integers are needed");
   Image<std::int64_t> img(npy_domain(a, lower, source));
-  for (std::int64_t i = 0; i < img.size(); ++i) img[i] = a.get(i);
+  for (std::int64_t i = 0; i < img.size(); ++i) {
+    try {
+      img[i] = a.get(i);
+    } catch (const Error& e) {
+      // A uint64 value past 2^63 - 1: say which file and which element.
+      throw IoError((source.empty() ? "" : source + ": ") + "element " + std::to_string(i) +
+                    ": " + e.what());
+    }
+  }
   return img;
 }
 

@@ -274,6 +274,25 @@ TEST(NpyIo, RegressionEmptyArrayWithHugeExtentsIsRefused) {
   EXPECT_EQ(a.count(), 0);
 }
 
+// Found by the npy fuzzer (kept in tests/fuzz/regressions/npy): a uint64 value past 2^63 - 1
+// was refused by npy_to_int64 with a message that named neither the file nor the element.
+TEST(NpyIo, RegressionUint64PastInt64NamesFileAndElement) {
+  std::string data(24, '\0');
+  const std::uint64_t values[3] = {7, ~std::uint64_t{4}, 9};
+  std::memcpy(data.data(), values, 24);
+  const NpyArray a =
+      parse_npy(npy_bytes("{'descr': '<u8', 'fortran_order': False, 'shape': (3,), }", data), "m");
+  try {
+    npy_to_int64(a, {}, "u.npy");
+    ADD_FAILURE() << "accepted";
+  } catch (const IoError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "u.npy: element 1: uint64 value 18446744073709551611 does not fit int64");
+  }
+  // The mask needs no conversion: nonzero bytes are object voxels.
+  EXPECT_EQ(npy_to_mask(a, {}, "u.npy").values(), (std::vector<std::uint8_t>{1, 1, 1}));
+}
+
 TEST(NpyIo, HeaderSizesAreCheckedBeforeAllocation) {
   auto expect_error = [](const std::string& bytes, const std::string& msg) {
     try {
