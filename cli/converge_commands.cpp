@@ -175,10 +175,11 @@ nlohmann::json entries_json(const ExperimentResult& r) {
     nlohmann::json params = nlohmann::json::object();
     for (const auto& p : e.estimator->parameters) {
       if (p.check_text) {
-        params[p.name] = e.parameters.function;
+        params[p.name] = p.name == "u" ? e.parameters.function : e.parameters.choice;
       } else {
         params[p.name] = p.name == "k"        ? e.parameters.k
                          : p.name == "degree" ? e.parameters.degree
+                         : p.name == "n"      ? e.parameters.count
                                               : e.parameters.alpha;
       }
     }

@@ -13,6 +13,7 @@
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/convergence/shapes_3d.hpp>
 
+#include <string>
 #include <vector>
 
 namespace zdg::detail {
@@ -38,5 +39,13 @@ Digitized3 digitize_3d(const RunInput& in);
 /// The surfels of d that carry an error: not on a clipped face, and farther than margin
 /// (continuous units) from every clipped face.
 std::vector<Surfel> evaluated_surfels(const Digitized3& d, double margin);
+
+/// The whole digitized surface (the calculus needs it closed): InvalidArgument naming
+/// `estimator` when the box clips the shape.
+Digitized3 whole_surface(const RunInput& in, const std::string& estimator);
+
+/// The surfel weights h^2 mu(s), mu = n_II . n_elem, II normal of radius R
+/// (estimators/digital_integration.hpp; convergence/estimators_calculus.cpp).
+std::vector<double> ii_surfel_weights(const Digitized3& d, double h, double R);
 
 } // namespace zdg::detail

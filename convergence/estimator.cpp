@@ -44,6 +44,7 @@ const std::vector<Estimator>& estimators() {
     detail::register_mdca_estimators(v);
     detail::register_ii_auto_estimators(v);
     detail::register_probing_estimators(v);
+    detail::register_spectrum_estimators(v);
     return v;
   }();
   return all;
@@ -185,12 +186,13 @@ EstimatorParameters resolve_parameters(const EstimatorSpec& spec,
     }
     const double value = checked_value(e, p, text, origin);
     if (p.check_text) {
-      out.function = text;
+      (p.name == "u" ? out.function : out.choice) = text;
       continue;
     }
     if (p.name == "k") out.k = value;
     if (p.name == "alpha") out.alpha = value;
     if (p.name == "degree") out.degree = value;
+    if (p.name == "n") out.count = value;
   }
   return out;
 }

@@ -61,7 +61,9 @@ struct EstimatorParameters {
   double alpha = 0;  // exponent of the law R = k h^alpha (or n = k h^{-alpha})
   double degree = 0; // polynomial degree (jet fitting); 0 where unused
   std::string function =
-      {}; // test function u (text, convergence/scalar_field.hpp); "" where unused
+      {};                  // test function u (text, convergence/scalar_field.hpp); "" where unused
+  double count = 0;        // how many (lb-spectrum: eigenvalues, `n`); 0 where unused
+  std::string choice = {}; // a named variant (lb-spectrum: `operator`); "" where unused
 };
 
 /// Everything one run needs.
@@ -74,6 +76,8 @@ struct RunInput {
   double alpha;                               // exponent of the radius law
   double degree = 0;                          // polynomial degree (jet fitting)
   std::string function = {};                  // test function u (Laplace-Beltrami estimators)
+  double count = 0;                           // how many (lb-spectrum: eigenvalues)
+  std::string choice = {};                    // a named variant (lb-spectrum: the operator)
 };
 
 /// One parameter of an estimator: its name (`k`, `alpha`, `degree`, `u`), default (a rational,
@@ -172,6 +176,7 @@ void register_vcm_cnc_estimators(std::vector<Estimator>& out);
 void register_mdca_estimators(std::vector<Estimator>& out); // mdca-curvature (2D)
 void register_ii_auto_estimators(std::vector<Estimator>& out);
 void register_probing_estimators(std::vector<Estimator>& out);
+void register_spectrum_estimators(std::vector<Estimator>& out); // lb-spectrum
 } // namespace detail
 
 } // namespace zdg

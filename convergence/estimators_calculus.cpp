@@ -27,14 +27,14 @@
 
 namespace zdg {
 
-namespace {
+namespace detail {
 
 // DI_h(1) = sum over the boundary surfels of h^2 n_II(s) . n_elem(s), minus the area. The
 // whole surface must be digitized: a box that clips the shape cuts the integral.
 // The whole digitized surface (the calculus needs it closed): InvalidArgument when the box
 // clips the shape.
-detail::Digitized3 whole_surface(const RunInput& in, const std::string& estimator) {
-  detail::Digitized3 d = detail::digitize_3d(in);
+Digitized3 whole_surface(const RunInput& in, const std::string& estimator) {
+  Digitized3 d = digitize_3d(in);
   for (bool c : d.clipped) {
     if (c) {
       throw InvalidArgument(estimator + ": the box clips '" + in.shape.spec() + "': " + estimator +
@@ -45,7 +45,7 @@ detail::Digitized3 whole_surface(const RunInput& in, const std::string& estimato
 }
 
 // The surfel weights h^2 mu(s), mu = n_II . n_elem, II normal of radius R.
-std::vector<double> ii_surfel_weights(const detail::Digitized3& d, double h, double R) {
+std::vector<double> ii_surfel_weights(const Digitized3& d, double h, double R) {
   const auto ii = ii_principal_curvatures(d.inside, d.box, d.surfels, h, R, 1);
   std::vector<Point3<double>> estimated, elementary;
   estimated.reserve(ii.size());
@@ -59,6 +59,13 @@ std::vector<double> ii_surfel_weights(const detail::Digitized3& d, double h, dou
   const std::vector<double> areas(mu.size(), h * h);
   return surfel_weights(mu, areas);
 }
+
+} // namespace detail
+
+namespace {
+
+using detail::ii_surfel_weights;
+using detail::whole_surface;
 
 ErrorStats run_di_area(const RunInput& in) {
   const auto& shape = detail::as_3d(in.shape);

@@ -149,7 +149,7 @@ ExperimentPlan plan_experiment(const ExperimentConfig& config) {
     const Estimator& e = find_estimator(spec.name);
     const EstimatorParameter* u = nullptr;
     for (const auto& p : e.parameters) {
-      if (p.check_text) u = &p;
+      if (p.check_text && p.name == "u") u = &p;
     }
     if (u == nullptr) {
       texts.push_back(text);
@@ -310,7 +310,9 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
                   r.k,
                   r.alpha,
                   entry.on_shape(job.shape).degree,
-                  entry.on_shape(job.shape).function};
+                  entry.on_shape(job.shape).function,
+                  entry.on_shape(job.shape).count,
+                  entry.on_shape(job.shape).choice};
       auto t0 = std::chrono::steady_clock::now();
       r.errors = entry.estimator->run(in);
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

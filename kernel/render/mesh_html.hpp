@@ -32,7 +32,7 @@ struct MeshHtmlOptions {
   std::string title = "zdg view"; ///< the page's title (e.g. the input's name)
   std::string field;              ///< the scalar shown first ("" = the first one, if any)
   std::int64_t max_faces = 2'000'000;
-  std::string note;      ///< a line the page shows under its title (e.g. what a face stands for)
+  std::string note = {}; ///< a line the page shows under its title (e.g. what a face stands for)
   bool top_view = false; ///< first seen from +z, x to the right (a flat mesh: contours)
 };
 

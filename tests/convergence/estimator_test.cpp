@@ -35,13 +35,14 @@ TEST(EstimatorRegistry, EveryEntryStatesParametersAndTheory) {
     EXPECT_TRUE(e.run) << e.name;
     for (const auto& p : e.parameters) {
       EXPECT_FALSE(p.meaning.empty());
-      if (p.check_text) { // a text parameter (the test function u): its default passes its check
-        EXPECT_EQ(p.name, "u") << e.name;
+      if (p.check_text) { // a text parameter (the test function u, lb-spectrum's operator): its
+                          // default passes its check
+        EXPECT_TRUE(p.name == "u" || p.name == "operator") << e.name;
         EXPECT_NO_THROW(p.check_text(p.default_text)) << e.name;
         continue;
       }
       // The names resolve_parameters maps onto EstimatorParameters.
-      EXPECT_TRUE(p.name == "k" || p.name == "alpha" || p.name == "degree")
+      EXPECT_TRUE(p.name == "k" || p.name == "alpha" || p.name == "degree" || p.name == "n")
           << e.name << " " << p.name;
       const double v = zdg::parse_real(p.default_text, p.name);
       EXPECT_GT(v, p.lo) << e.name << " " << p.name;

@@ -1,0 +1,168 @@
+#include <zdg/kernel/linalg/generalized_eigen.hpp>
+
+#include <zdg/arith/error.hpp>
+
+#include <Eigen/Core>
+#include <Spectra/SymGEigsShiftSolver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace zdg {
+
+namespace {
+
+// y = (L - sigma M)^{-1} x by one sparse Cholesky factorization (Spectra's OpType contract:
+// Scalar, rows, cols, set_shift, perform_op).
+class ShiftInvertOp {
+public:
+  using Scalar = double;
+  ShiftInvertOp(const SparseMatrix& l, const SparseMatrix& m, SpdBackend backend)
+      : l_(l), m_(m), backend_(backend) {}
+  Eigen::Index rows() const { return l_.rows; }
+  Eigen::Index cols() const { return l_.rows; }
+  void set_shift(double sigma) {
+    try {
+      solver_.emplace(add(1.0, l_, -sigma, m_), backend_);
+    } catch (const InvalidArgument&) {
+      throw;
+    } catch (const Error& e) {
+      throw Error("generalized eigenpairs: L - sigma M (sigma = " + std::to_string(sigma) +
+                  ") is not positive definite: L must be positive semi-definite and M positive "
+                  "definite (" +
+                  e.what() + ")");
+    }
+  }
+  void perform_op(const double* x, double* y) const {
+    const auto n = static_cast<std::size_t>(l_.rows);
+    const std::vector<double> r = solver_->solve(std::span<const double>(x, n));
+    std::copy(r.begin(), r.end(), y);
+    ++solves_;
+  }
+  std::int64_t solves() const { return solves_; }
+  SpdBackend backend() const { return solver_->backend(); }
+
+private:
+  const SparseMatrix& l_;
+  const SparseMatrix& m_;
+  SpdBackend backend_;
+  std::optional<SparseSpdSolver> solver_;
+  mutable std::int64_t solves_ = 0;
+};
+
+// y = M x (Spectra's BOpType contract).
+class MassOp {
+public:
+  using Scalar = double;
+  explicit MassOp(const SparseMatrix& m) : m_(m) {}
+  Eigen::Index rows() const { return m_.rows; }
+  Eigen::Index cols() const { return m_.rows; }
+  void perform_op(const double* x, double* y) const {
+    const std::vector<double> r = m_.multiply(std::span<const double>(x, std::size_t(m_.rows)));
+    std::copy(r.begin(), r.end(), y);
+  }
+
+private:
+  const SparseMatrix& m_;
+};
+
+double max_abs(const SparseMatrix& a) {
+  double out = 0;
+  for (double v : a.value) out = std::max(out, std::abs(v));
+  return out;
+}
+
+void check_symmetric(const SparseMatrix& a, const char* name) {
+  const double scale = max_abs(a);
+  const double asym = a.asymmetry();
+  if (!(asym <= 1e-10 * scale)) {
+    throw InvalidArgument(std::string("generalized eigenpairs: ") + name +
+                          " is not symmetric (max |a_ij - a_ji| = " + std::to_string(asym) +
+                          ", max |a_ij| = " + std::to_string(scale) + ")");
+  }
+}
+
+} // namespace
+
+GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, const SparseMatrix& m,
+                                                      std::int64_t k,
+                                                      const GeneralizedEigenOptions& options) {
+  const std::string what = "generalized eigenpairs: ";
+  if (l.rows != l.cols) {
+    throw InvalidArgument(what + "L is not square (" + std::to_string(l.rows) + " x " +
+                          std::to_string(l.cols) + ")");
+  }
+  if (m.rows != m.cols || m.rows != l.rows) {
+    throw InvalidArgument(what + "M is " + std::to_string(m.rows) + " x " + std::to_string(m.cols) +
+                          ", L is " + std::to_string(l.rows) + " x " + std::to_string(l.cols) +
+                          ": sizes differ");
+  }
+  const std::int64_t n = l.rows;
+  if (k < 1 || k >= n) {
+    throw InvalidArgument(what + "k = " + std::to_string(k) + " eigenpairs of a " +
+                          std::to_string(n) + " x " + std::to_string(n) +
+                          " problem: need 1 <= k < n");
+  }
+  if (!(options.shift <= 0) || !std::isfinite(options.shift)) {
+    throw InvalidArgument(what + "shift " + std::to_string(options.shift) +
+                          " must be negative (0: the default)");
+  }
+  if (options.subspace != 0 && (options.subspace <= k || options.subspace > n)) {
+    throw InvalidArgument(what + "subspace dimension " + std::to_string(options.subspace) +
+                          " must be in (k, n] = (" + std::to_string(k) + ", " + std::to_string(n) +
+                          "]");
+  }
+  if (options.max_iterations < 1 || !(options.tolerance > 0)) {
+    throw InvalidArgument(what + "max_iterations must be >= 1 and tolerance > 0");
+  }
+  check_symmetric(l, "L");
+  check_symmetric(m, "M");
+  double top = 0;
+  for (std::int64_t i = 0; i < n; ++i) {
+    const double mi = m.at(i, i);
+    if (!(mi > 0)) {
+      throw InvalidArgument(what + "M is not positive definite (M_" + std::to_string(i) + "," +
+                            std::to_string(i) + " = " + std::to_string(mi) + ")");
+    }
+    top = std::max(top, std::abs(l.at(i, i)) / mi);
+  }
+  const double sigma = options.shift < 0 ? options.shift : -1e-6 * (top > 0 ? top : 1.0);
+  const std::int64_t ncv = options.subspace != 0
+                               ? options.subspace
+                               : std::min<std::int64_t>(n, std::max<std::int64_t>(2 * k + 1, 20));
+
+  ShiftInvertOp op(l, m, options.backend);
+  MassOp mass(m);
+  Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(
+      op, mass, k, ncv, sigma);
+  eigs.init();
+  eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
+               Spectra::SortRule::SmallestAlge);
+  if (eigs.info() != Spectra::CompInfo::Successful) {
+    throw Error(what + "Lanczos did not converge (" + std::to_string(k) + " eigenpairs, " +
+                std::to_string(eigs.num_iterations()) + " restarts, subspace " +
+                std::to_string(ncv) + ", tolerance " + std::to_string(options.tolerance) + ")");
+  }
+  const Eigen::VectorXd values = eigs.eigenvalues();
+  const Eigen::MatrixXd vectors = eigs.eigenvectors();
+  std::vector<std::int64_t> order(static_cast<std::size_t>(values.size()));
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::int64_t a, std::int64_t b) { return values(a) < values(b); });
+  GeneralizedEigenpairs out;
+  for (const std::int64_t j : order) {
+    out.values.push_back(values(j));
+    out.vectors.emplace_back(vectors.col(j).data(), vectors.col(j).data() + n);
+  }
+  out.shift = sigma;
+  out.iterations = eigs.num_iterations();
+  out.operations = op.solves();
+  out.backend = op.backend();
+  return out;
+}
+
+} // namespace zdg
