@@ -159,60 +159,56 @@ void scatter(std::vector<SparseTriplet>& t, const std::vector<double>& b, int r,
 
 } // namespace
 
-SparseMatrix PolygonalCalculus::derivative() const {
+std::int64_t PolygonalCalculus::size_of(Space s) const {
+  return s == Space::vertex ? vertices_ : s == Space::corner ? corners_ : 3 * face_count();
+}
+
+std::int64_t PolygonalCalculus::index_in(Space s, std::size_t f, int i) const {
+  switch (s) {
+  case Space::vertex:
+    return index_[f][std::size_t(i)];
+  case Space::corner:
+    return first_corner_[f] + i;
+  case Space::face_vector:
+    break;
+  }
+  return std::int64_t(3 * f) + i;
+}
+
+SparseMatrix PolygonalCalculus::assemble(std::vector<double> PolygonalFace::*block, Space rows,
+                                         Space cols) const {
   std::vector<SparseTriplet> t;
   for (std::size_t f = 0; f < faces_.size(); ++f) {
-    const auto& F = faces_[f];
+    const int n = faces_[f].n;
     scatter(
-        t, F.D, F.n, F.n, [&](int i) { return first_corner_[f] + i; },
-        [&](int j) { return index_[f][std::size_t(j)]; });
+        t, faces_[f].*block, rows == Space::face_vector ? 3 : n, cols == Space::face_vector ? 3 : n,
+        [&](int i) { return index_in(rows, f, i); }, [&](int j) { return index_in(cols, f, j); });
   }
-  return SparseMatrix::from_triplets(corners_, vertices_, std::move(t));
+  return SparseMatrix::from_triplets(size_of(rows), size_of(cols), std::move(t));
+}
+
+SparseMatrix PolygonalCalculus::derivative() const {
+  return assemble(&PolygonalFace::D, Space::corner, Space::vertex);
 }
 
 SparseMatrix PolygonalCalculus::gradient() const {
-  std::vector<SparseTriplet> t;
-  for (std::size_t f = 0; f < faces_.size(); ++f)
-    scatter(
-        t, faces_[f].G, 3, faces_[f].n, [&](int i) { return std::int64_t(3 * f) + i; },
-        [&](int j) { return index_[f][std::size_t(j)]; });
-  return SparseMatrix::from_triplets(3 * face_count(), vertices_, std::move(t));
+  return assemble(&PolygonalFace::G, Space::face_vector, Space::vertex);
 }
 
 SparseMatrix PolygonalCalculus::co_gradient() const {
-  std::vector<SparseTriplet> t;
-  for (std::size_t f = 0; f < faces_.size(); ++f)
-    scatter(
-        t, faces_[f].C, 3, faces_[f].n, [&](int i) { return std::int64_t(3 * f) + i; },
-        [&](int j) { return index_[f][std::size_t(j)]; });
-  return SparseMatrix::from_triplets(3 * face_count(), vertices_, std::move(t));
+  return assemble(&PolygonalFace::C, Space::face_vector, Space::vertex);
 }
 
 SparseMatrix PolygonalCalculus::flat() const {
-  std::vector<SparseTriplet> t;
-  for (std::size_t f = 0; f < faces_.size(); ++f)
-    scatter(
-        t, faces_[f].V, faces_[f].n, 3, [&](int i) { return first_corner_[f] + i; },
-        [&](int j) { return std::int64_t(3 * f) + j; });
-  return SparseMatrix::from_triplets(corners_, 3 * face_count(), std::move(t));
+  return assemble(&PolygonalFace::V, Space::corner, Space::face_vector);
 }
 
 SparseMatrix PolygonalCalculus::sharp() const {
-  std::vector<SparseTriplet> t;
-  for (std::size_t f = 0; f < faces_.size(); ++f)
-    scatter(
-        t, faces_[f].U, 3, faces_[f].n, [&](int i) { return std::int64_t(3 * f) + i; },
-        [&](int j) { return first_corner_[f] + j; });
-  return SparseMatrix::from_triplets(3 * face_count(), corners_, std::move(t));
+  return assemble(&PolygonalFace::U, Space::face_vector, Space::corner);
 }
 
 SparseMatrix PolygonalCalculus::projection() const {
-  std::vector<SparseTriplet> t;
-  for (std::size_t f = 0; f < faces_.size(); ++f) {
-    const auto base = [&](int i) { return first_corner_[f] + i; };
-    scatter(t, faces_[f].P, faces_[f].n, faces_[f].n, base, base);
-  }
-  return SparseMatrix::from_triplets(corners_, corners_, std::move(t));
+  return assemble(&PolygonalFace::P, Space::corner, Space::corner);
 }
 
 SparseMatrix PolygonalCalculus::inner_product(double lambda) const {

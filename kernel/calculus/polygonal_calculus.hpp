@@ -80,6 +80,13 @@ public:
   std::vector<double> face_areas() const;          ///< A_f
 
 private:
+  // The index spaces of the global matrices: vertices, face corners, 3 coordinates per face.
+  enum class Space { vertex, corner, face_vector };
+  std::int64_t size_of(Space s) const;
+  std::int64_t index_in(Space s, std::size_t f, int i) const;
+  // The matrix whose (rows, cols) block of face f is faces_[f].*block.
+  SparseMatrix assemble(std::vector<double> PolygonalFace::*block, Space rows, Space cols) const;
+
   std::int64_t vertices_ = 0, corners_ = 0;
   std::vector<std::vector<std::int64_t>> index_; ///< each face's vertex indices
   std::vector<std::int64_t> first_corner_;

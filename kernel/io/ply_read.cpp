@@ -106,6 +106,14 @@ public:
 private:
   static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
+  // The value of type T in the first sizeof(T) bytes (native order).
+  template <class T>
+  static double as_double(const unsigned char* b) {
+    T v;
+    std::memcpy(&v, b, sizeof(T));
+    return static_cast<double>(v);
+  }
+
   template <class Where>
   double binary_value(Type t, const Where& where) {
     const std::size_t n = size_of(t);
@@ -117,39 +125,21 @@ private:
       std::reverse(b, b + n);
     switch (t) {
     case Type::i8:
-      return double(static_cast<std::int8_t>(b[0]));
+      return as_double<std::int8_t>(b);
     case Type::u8:
-      return double(b[0]);
-    case Type::i16: {
-      std::int16_t v;
-      std::memcpy(&v, b, 2);
-      return double(v);
-    }
-    case Type::u16: {
-      std::uint16_t v;
-      std::memcpy(&v, b, 2);
-      return double(v);
-    }
-    case Type::i32: {
-      std::int32_t v;
-      std::memcpy(&v, b, 4);
-      return double(v);
-    }
-    case Type::u32: {
-      std::uint32_t v;
-      std::memcpy(&v, b, 4);
-      return double(v);
-    }
-    case Type::f32: {
-      float v;
-      std::memcpy(&v, b, 4);
-      return double(v);
-    }
-    case Type::f64: {
-      double v;
-      std::memcpy(&v, b, 8);
-      return v;
-    }
+      return as_double<std::uint8_t>(b);
+    case Type::i16:
+      return as_double<std::int16_t>(b);
+    case Type::u16:
+      return as_double<std::uint16_t>(b);
+    case Type::i32:
+      return as_double<std::int32_t>(b);
+    case Type::u32:
+      return as_double<std::uint32_t>(b);
+    case Type::f32:
+      return as_double<float>(b);
+    case Type::f64:
+      return as_double<double>(b);
     }
     return 0;
   }

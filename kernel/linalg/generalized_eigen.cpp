@@ -39,9 +39,21 @@ public:
   }
   void perform_op(const double* x, double* y) const {
     const auto n = static_cast<std::size_t>(l_.rows);
-    const std::vector<double> r = solver_->solve(std::span<const double>(x, n));
+    std::vector<double> r = solver_->solve(std::span<const double>(x, n));
+    // Deflation: r -= V (V^T M r), V the M-orthonormal eigenvectors already found (they become
+    // eigenvectors of eigenvalue 0 of the shift-inverted operator, never selected again).
+    for (std::size_t j = 0; j < deflated_.size(); ++j) {
+      double c = 0;
+      for (std::size_t i = 0; i < n; ++i) c += mass_deflated_[j][i] * r[i];
+      for (std::size_t i = 0; i < n; ++i) r[i] -= c * deflated_[j][i];
+    }
     std::copy(r.begin(), r.end(), y);
     ++solves_;
+  }
+  /// Projects the M-orthonormal vectors v (and M v) out of every result from now on.
+  void deflate(const std::vector<double>& v) {
+    deflated_.push_back(v);
+    mass_deflated_.push_back(m_.multiply(v));
   }
   std::int64_t solves() const { return solves_; }
   SpdBackend backend() const { return solver_->backend(); }
@@ -51,6 +63,7 @@ private:
   const SparseMatrix& m_;
   SpdBackend backend_;
   std::optional<SparseSpdSolver> solver_;
+  std::vector<std::vector<double>> deflated_, mass_deflated_;
   mutable std::int64_t solves_ = 0;
 };
 
@@ -137,29 +150,84 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
 
   ShiftInvertOp op(l, m, options.backend);
   MassOp mass(m);
-  Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(
-      op, mass, k, ncv, sigma);
-  eigs.init();
-  eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
-               Spectra::SortRule::SmallestAlge);
-  if (eigs.info() != Spectra::CompInfo::Successful) {
-    throw Error(what + "Lanczos did not converge (" + std::to_string(k) + " eigenpairs, " +
-                std::to_string(eigs.num_iterations()) + " restarts, subspace " +
-                std::to_string(ncv) + ", tolerance " + std::to_string(options.tolerance) + ")");
-  }
-  const Eigen::VectorXd values = eigs.eigenvalues();
-  const Eigen::MatrixXd vectors = eigs.eigenvectors();
-  std::vector<std::int64_t> order(static_cast<std::size_t>(values.size()));
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::int64_t a, std::int64_t b) { return values(a) < values(b); });
   GeneralizedEigenpairs out;
-  for (const std::int64_t j : order) {
-    out.values.push_back(values(j));
-    out.vectors.emplace_back(vectors.col(j).data(), vectors.col(j).data() + n);
+  std::int64_t restarts = 0;
+  // One Lanczos run for `want` pairs, deflated by every vector found so far; its pairs are
+  // M-orthogonalized against those (Gram-Schmidt, twice) and merged in increasing order.
+  const auto run = [&](std::int64_t want) {
+    const std::int64_t basis = std::min<std::int64_t>(n, std::max(ncv, 2 * want + 1));
+    Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(
+        op, mass, want, basis, sigma);
+    eigs.init();
+    eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
+                 Spectra::SortRule::SmallestAlge);
+    restarts += eigs.num_iterations();
+    if (eigs.info() != Spectra::CompInfo::Successful) {
+      throw Error(what + "Lanczos did not converge (" + std::to_string(want) + " eigenpairs, " +
+                  std::to_string(eigs.num_iterations()) + " restarts, subspace " +
+                  std::to_string(basis) + ", tolerance " + std::to_string(options.tolerance) + ")");
+    }
+    const Eigen::VectorXd values = eigs.eigenvalues();
+    const Eigen::MatrixXd vectors = eigs.eigenvectors();
+    const std::size_t before = out.vectors.size();
+    std::vector<std::vector<double>> mass_before;
+    for (std::size_t q = 0; q < before; ++q) mass_before.push_back(m.multiply(out.vectors[q]));
+    for (Eigen::Index j = 0; j < values.size(); ++j) {
+      std::vector<double> x(vectors.col(j).data(), vectors.col(j).data() + n);
+      for (int pass = 0; pass < 2; ++pass) {
+        for (std::size_t q = 0; q < before; ++q) {
+          double c = 0;
+          for (std::int64_t i = 0; i < n; ++i)
+            c += mass_before[q][std::size_t(i)] * x[std::size_t(i)];
+          for (std::int64_t i = 0; i < n; ++i)
+            x[std::size_t(i)] -= c * out.vectors[q][std::size_t(i)];
+        }
+      }
+      const std::vector<double> mx = m.multiply(x);
+      double norm = 0;
+      for (std::int64_t i = 0; i < n; ++i) norm += mx[std::size_t(i)] * x[std::size_t(i)];
+      if (!(norm > 0.25)) continue; // a copy of a vector found before: dropped
+      for (double& v : x) v /= std::sqrt(norm);
+      out.values.push_back(values(j));
+      out.vectors.push_back(std::move(x));
+    }
+    for (std::size_t q = before; q < out.vectors.size(); ++q) op.deflate(out.vectors[q]);
+    std::vector<std::size_t> order(out.values.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return out.values[a] < out.values[b]; });
+    GeneralizedEigenpairs sorted;
+    for (const std::size_t j : order) {
+      sorted.values.push_back(out.values[j]);
+      sorted.vectors.push_back(std::move(out.vectors[j]));
+    }
+    out.values = std::move(sorted.values);
+    out.vectors = std::move(sorted.vectors);
+  };
+  // Lanczos may miss copies of a multiple eigenvalue. Certificate (Sylvester's law of inertia):
+  // the number of eigenvalues below mu = lambda_k (1 - 1e-8) is the inertia of L - mu M; while
+  // it exceeds the number found below mu, a deflated run looks for the missing ones.
+  run(k);
+  for (int round = 0;; ++round) {
+    const double lk = out.values[std::size_t(k - 1)];
+    const double mu = lk - 1e-8 * std::max(std::abs(lk), std::abs(sigma));
+    const auto found_below = static_cast<std::int64_t>(
+        std::lower_bound(out.values.begin(), out.values.end(), mu) - out.values.begin());
+    std::int64_t below = found_below;
+    if (mu > 0) below = negative_inertia(add(1.0, l, -mu, m));
+    if (below <= found_below) break;
+    const auto room = n - static_cast<std::int64_t>(out.values.size()) - 1;
+    if (round == 8 || room < 1) {
+      throw Error(what + std::to_string(below) + " eigenvalues lie below " + std::to_string(mu) +
+                  " (inertia of L - mu M) but Lanczos found " + std::to_string(found_below) +
+                  " after " + std::to_string(round) + " deflated runs");
+    }
+    run(std::min(k, room));
   }
+  out.values.resize(std::size_t(k));
+  out.vectors.resize(std::size_t(k));
   out.shift = sigma;
-  out.iterations = eigs.num_iterations();
+  out.iterations = restarts;
   out.operations = op.solves();
   out.backend = op.backend();
   return out;

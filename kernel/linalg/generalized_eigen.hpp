@@ -10,7 +10,12 @@
 // (L - sigma M)^{-1} M with the M inner product, sigma < 0 a small shift below the spectrum so
 // that L - sigma M is positive definite even though L is singular: one sparse Cholesky
 // factorization (kernel/linalg/sparse_spd_solver.hpp, CHOLMOD or Eigen), then one solve and one
-// product by M per Lanczos step. Cost: the factorization, plus about ncv + (restarts x (ncv - k))
+// product by M per Lanczos step. Lanczos can miss copies of a multiple eigenvalue (the
+// sphere's are 2l + 1 fold): the result is certified by Sylvester's law of inertia, the number
+// of eigenvalues below mu = lambda_k (1 - 1e-8) being the count of negative pivots of the
+// LDL^T factorization of L - mu M (one more factorization, kernel/linalg/sparse_spd_solver.hpp
+// negative_inertia); while it exceeds the number found, Lanczos runs again on the operator
+// deflated by the vectors found (at most 8 such runs, else Error). Cost: the factorization, plus about ncv + (restarts x (ncv - k))
 // solves of O(nnz(Cholesky factor)) and O(ncv n) memory for the Krylov basis (ncv = max(2k + 1,
 // 20) by default, at most n). Application: the Laplace-Beltrami spectrum as a shape descriptor
 // (Reuter, Wolter, Peinecke, "Laplace-Beltrami spectra as 'Shape-DNA' of surfaces and solids",

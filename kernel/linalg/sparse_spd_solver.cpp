@@ -9,6 +9,7 @@
 #include <dlfcn.h>
 #endif
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -289,6 +290,23 @@ std::vector<double> SparseSpdSolver::solve(std::span<const double> b) const {
 #endif
   if (impl_->ldlt) x = impl_->ldlt->solve(rhs);
   return std::vector<double>(x.data(), x.data() + x.size());
+}
+
+std::int64_t negative_inertia(const SparseMatrix& a) {
+  if (a.rows != a.cols)
+    throw InvalidArgument("inertia: the matrix is " + std::to_string(a.rows) + " x " +
+                          std::to_string(a.cols) + ", not square");
+  Eigen::SimplicialLDLT<EigenSparse, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt(to_eigen(a));
+  if (ldlt.info() != Eigen::Success) throw Error("inertia: the LDL^T factorization failed");
+  const Eigen::VectorXd d = ldlt.vectorD();
+  std::int64_t negative = 0;
+  for (Eigen::Index i = 0; i < d.size(); ++i) {
+    if (!std::isfinite(d(i)) || d(i) == 0)
+      throw Error("inertia: pivot " + std::to_string(i) + " is " + std::to_string(d(i)) +
+                  " (the matrix or a leading minor is singular)");
+    if (d(i) < 0) ++negative;
+  }
+  return negative;
 }
 
 } // namespace zdg

@@ -57,4 +57,12 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
+/// The number of negative eigenvalues of a symmetric matrix A (Sylvester's law of inertia: the
+/// negative pivots of A's sparse LDL^T factorization, Eigen's SimplicialLDLT with AMD ordering,
+/// no pivoting). Used to count the eigenvalues of L x = lambda M x below mu as the inertia of
+/// L - mu M. Error when a pivot is 0 or not finite (A singular, or its leading minors in the AMD
+/// order are); InvalidArgument when A is not square or past the 32-bit indices. Cost: one
+/// factorization, as SparseSpdSolver's Eigen backend.
+std::int64_t negative_inertia(const SparseMatrix& a);
+
 } // namespace zdg

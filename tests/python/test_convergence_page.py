@@ -22,6 +22,7 @@ import subprocess
 from collections import defaultdict
 from pathlib import Path
 
+import browser
 import pytest
 
 CLI = os.environ.get("ZDG_CLI", "")
@@ -29,20 +30,9 @@ SCRIPT = Path(__file__).resolve().parents[2] / "papers" / "plot_convergence.py"
 if not CLI or not os.path.exists(CLI):
     pytest.skip("the zdg CLI was not built", allow_module_level=True)
 
-MISSING = [name for name, ok in (("chromium", shutil.which("chromium")),
-                                  ("chromium-driver", shutil.which("chromedriver")))
-           if not ok]
-try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
+BROWSER_MISSING = browser.missing_message("the page tests")
+if not BROWSER_MISSING:
     from selenium.webdriver.common.action_chains import ActionChains
-except ImportError:
-    MISSING.append("python3-selenium")
-BROWSER_MISSING = ""
-if MISSING:
-    BROWSER_MISSING = "the page tests need a browser: apt-get install " + " ".join(MISSING)
-    if os.environ.get("ZDG_REQUIRE_BROWSER") == "1":
-        raise RuntimeError(BROWSER_MISSING + " (ZDG_REQUIRE_BROWSER=1)")
 
 CONFIG = """title = "convergence page test"
 shape = ["ball:10", "ellipse:10,6"]
@@ -169,13 +159,7 @@ def test_a_plot_that_cannot_be_drawn_leaves_no_page(runs, tmp_path):
 def driver():
     if BROWSER_MISSING:
         pytest.skip(BROWSER_MISSING)
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = shutil.which("chromium")
-    for a in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage",
-              "--window-size=1200,1400", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-extensions"):
-        opts.add_argument(a)
-    opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    drv = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=opts)
+    drv = browser.chromium(1200, 1400)
     yield drv
     drv.quit()
 

@@ -9,30 +9,20 @@ import base64
 import csv
 import io
 import os
-import shutil
 import subprocess
 import time
 
+import browser
 import numpy as np
 import pytest
 
 CLI = os.environ.get("ZDG_CLI", "")
-MISSING = [name for name, ok in (("chromium", shutil.which("chromium")),
-                                  ("chromium-driver", shutil.which("chromedriver")))
-           if not ok]
-try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    from selenium.webdriver.common.action_chains import ActionChains
-except ImportError:
-    MISSING.append("python3-selenium")
 if not CLI or not os.path.exists(CLI):
     pytest.skip("the zdg CLI was not built", allow_module_level=True)
-if MISSING:
-    message = ("the viewer tests need a browser: apt-get install " + " ".join(MISSING))
-    if os.environ.get("ZDG_REQUIRE_BROWSER") == "1":
-        raise RuntimeError(message + " (ZDG_REQUIRE_BROWSER=1)")
-    pytest.skip(message, allow_module_level=True)
+BROWSER_MISSING = browser.missing_message("the viewer tests")
+if BROWSER_MISSING:
+    pytest.skip(BROWSER_MISSING, allow_module_level=True)
+from selenium.webdriver.common.action_chains import ActionChains  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -53,13 +43,7 @@ def ball(tmp_path_factory):
 
 @pytest.fixture(scope="module")
 def driver():
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = shutil.which("chromium")
-    for a in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=960,640",
-              "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--disable-extensions"):
-        opts.add_argument(a)
-    opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    drv = webdriver.Chrome(service=Service(shutil.which("chromedriver")), options=opts)
+    drv = browser.chromium(960, 640)
     yield drv
     drv.quit()
 

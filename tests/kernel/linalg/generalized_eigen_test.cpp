@@ -100,6 +100,23 @@ TEST(GeneralizedEigen, MatchesDenseGeneralizedSelfAdjointSolver) {
   });
 }
 
+// Regression (shrunk by RapidCheck from MatchesDenseGeneralizedSelfAdjointSolver: n = 23,
+// k = 7, an eigenvalue 1 of high multiplicity): Lanczos from one starting vector sees one copy
+// of a multiple eigenvalue; the inertia certificate and the deflated runs find every copy.
+TEST(GeneralizedEigen, RegressionEveryCopyOfAMultipleEigenvalueIsFound) {
+  const std::int64_t n = 30;
+  std::vector<SparseTriplet> t;
+  for (std::int64_t i = 0; i < n; ++i) t.push_back({i, i, i < 6 ? 1.0 : double(i - 4)});
+  const SparseMatrix l = SparseMatrix::from_triplets(n, n, t);
+  const auto got = zdg::smallest_generalized_eigenpairs(l, identity(n), 8);
+  const std::vector<double> want{1, 1, 1, 1, 1, 1, 2, 3};
+  ASSERT_EQ(got.values.size(), want.size());
+  for (std::size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(got.values[i], want[i], 1e-9) << i;
+  for (std::size_t i = 0; i < want.size(); ++i)
+    for (std::size_t j = 0; j < want.size(); ++j)
+      EXPECT_NEAR(form(identity(n), got.vectors[i], got.vectors[j]), i == j ? 1.0 : 0.0, 1e-9);
+}
+
 // Path graph P_n: eigenvalues 2 - 2 cos(pi j / n); cycle C_n: 2 - 2 cos(2 pi j / n), each
 // j and n - j together (multiplicity 2 for 0 < j < n/2).
 TEST(GeneralizedEigen, PathAndCycleGraphLaplaciansHaveTheirClosedFormSpectra) {

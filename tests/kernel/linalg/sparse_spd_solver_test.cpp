@@ -157,3 +157,40 @@ TEST(SparseSpdSolver, RefactorReusesTheAnalysisOfThePattern) {
     EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
   }
 }
+
+namespace zdg {
+namespace {
+
+// Sylvester's law of inertia: the negative pivots of LDL^T count the negative eigenvalues.
+// Oracle: the closed form of a diagonal matrix congruent-transformed by a random unit lower
+// bidiagonal B (A = B D B^T has the inertia of D), with D's signs drawn at random.
+TEST(SparseSpdSolver, NegativeInertiaIsTheNumberOfNegativeEigenvalues) {
+  test::check_property([] {
+    const auto n = *rc::gen::inRange<std::int64_t>(1, 40);
+    std::vector<double> d;
+    std::int64_t negative = 0;
+    for (std::int64_t i = 0; i < n; ++i) {
+      const double v = double(*rc::gen::inRange(1, 9)) * (*rc::gen::arbitrary<bool>() ? 1 : -1);
+      negative += v < 0;
+      d.push_back(v);
+    }
+    std::vector<double> b(std::size_t(n), 0.0); // B = I + sub-diagonal b
+    for (std::int64_t i = 1; i < n; ++i) b[std::size_t(i)] = double(*rc::gen::inRange(-3, 4)) / 2;
+    // (B D B^T)_ii = d_i + b_i^2 d_{i-1}, (B D B^T)_{i,i-1} = b_i d_{i-1}.
+    std::vector<SparseTriplet> t;
+    for (std::int64_t i = 0; i < n; ++i) {
+      const auto u = std::size_t(i);
+      t.push_back({i, i, d[u] + (i > 0 ? b[u] * b[u] * d[u - 1] : 0.0)});
+      if (i > 0) {
+        t.push_back({i, i - 1, b[u] * d[u - 1]});
+        t.push_back({i - 1, i, b[u] * d[u - 1]});
+      }
+    }
+    RC_ASSERT(negative_inertia(SparseMatrix::from_triplets(n, n, t)) == negative);
+  });
+  EXPECT_THROW(negative_inertia(SparseMatrix::from_triplets(2, 3, {})), InvalidArgument);
+  EXPECT_THROW(negative_inertia(SparseMatrix::from_triplets(2, 2, {{0, 0, 1.0}})), Error);
+}
+
+} // namespace
+} // namespace zdg
