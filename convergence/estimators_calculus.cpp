@@ -13,6 +13,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/laplacian_comparison.hpp>
 #include <zdg/convergence/scalar_field.hpp>
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
@@ -133,24 +134,26 @@ ErrorStats run_lb_cotan(const RunInput& in) {
   return laplacian_errors(f, complex.pointels, L.apply(sampled(f, complex.pointels)));
 }
 
-// Mean-value LB D^{-1} W of the primal quads split into triangles, at the pointels.
+// Mean-value LB D^{-1} W of the primal quads split into triangles, at the pointels (one copy
+// per sheet at a pinched pointel: convergence/laplacian_comparison.hpp, sheet_triangles).
 ErrorStats run_lb_meanvalue(const RunInput& in) {
   const detail::Digitized3 d = whole_surface(in, "lb-meanvalue");
   const TestFunction f = test_function(in, d);
   const SurfelComplex complex = surfel_complex(primal_surface(d.surfels), in.h);
-  const MeanValueLaplacian L =
-      mean_value_laplacian(complex.pointels, triangulate_quads(complex.surfels));
-  return laplacian_errors(f, complex.pointels, L.apply(sampled(f, complex.pointels)));
+  const SheetTriangles m = sheet_triangles(complex);
+  const MeanValueLaplacian L = mean_value_laplacian(m.vertices, m.triangles);
+  return laplacian_errors(f, m.vertices, L.apply(sampled(f, m.vertices)));
 }
 
-// Intrinsic Delaunay LB of the primal quads split into triangles, at the pointels.
+// Intrinsic Delaunay LB of the primal quads split into triangles, at the pointels (one copy per
+// sheet, as lb-meanvalue).
 ErrorStats run_lb_idt(const RunInput& in) {
   const detail::Digitized3 d = whole_surface(in, "lb-idt");
   const TestFunction f = test_function(in, d);
   const SurfelComplex complex = surfel_complex(primal_surface(d.surfels), in.h);
-  const CotanLaplacian L =
-      intrinsic_delaunay_laplacian(complex.pointels, triangulate_quads(complex.surfels));
-  return laplacian_errors(f, complex.pointels, L.apply(sampled(f, complex.pointels)));
+  const SheetTriangles m = sheet_triangles(complex);
+  const CotanLaplacian L = intrinsic_delaunay_laplacian(m.vertices, m.triangles);
+  return laplacian_errors(f, m.vertices, L.apply(sampled(f, m.vertices)));
 }
 
 // Cotangent LB of the marching-cubes mesh of the digitization (kernel/surfaces/marching_cubes.hpp,
