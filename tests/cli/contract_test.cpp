@@ -602,7 +602,7 @@ std::vector<BadInput> bad_inputs() {
        {},
        "half-side must be in [1, 1000]"},
       {"laplacians: heat kernel too large",
-       "laplacians --operator heat --h 0.03 --json",
+       "laplacians --operator heat --h 0.04 --json",
        {},
        {},
        "take a larger h"},
