@@ -12,6 +12,9 @@
 // Flags and TOML files are read into the same settings and validated by one function
 // (validate_experiment_settings): a flag given on the command line overrides the file.
 //   zdg paper cviu2014-ii2d -o DIR [--quick]
+//   zdg laplacians [--shape sphere1] [--h 0.1] [--operator NAME]... [--cube 20] [--json]
+//     (the property table of the Laplacians, convergence/laplacian_comparison.hpp: a markdown
+//     table on stdout, or JSON; papers/laplacian-comparison/run.py reads it)
 //
 // Outputs in DIR: results.csv, summary.json (fits, verdicts, provenance), convergence.png,
 // .svg and .html (the interactive page: curves per series, toggles, tooltips, verdicts), all
@@ -24,6 +27,8 @@
 #include <zdg/convergence/config.hpp>
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/convergence/experiment.hpp>
+#include <zdg/convergence/laplacian_comparison.hpp>
+#include <zdg/convergence/number_text.hpp>
 #include <zdg/convergence/shape.hpp>
 #include <zdg/kernel/io/output_files.hpp>
 
@@ -499,6 +504,67 @@ void run_paper_script(const fs::path& script, const std::string& output, bool qu
 
 } // namespace
 
+namespace {
+
+struct LaplaciansOptions {
+  std::string shape = "sphere1", h = "0.1", cube = "20";
+  std::vector<std::string> operators;
+  bool json = false;
+};
+
+void run_laplacians(const LaplaciansOptions& o) {
+  LaplacianComparisonSettings s;
+  s.shape = o.shape;
+  s.h = parse_real_in(o.h, "--h", 0, 1e6);
+  s.cube_half_side = parse_real_in(o.cube, "--cube", 0, 1000);
+  s.operators = o.operators;
+  const auto rows = measure_laplacian_properties(s);
+  if (o.json) {
+    nlohmann::json ops = nlohmann::json::array();
+    for (const auto& r : rows) {
+      ops.push_back({{"operator", r.op},
+                     {"estimator", r.estimator},
+                     {"elements", r.elements},
+                     {"size", r.size},
+                     {"constants", r.constants},
+                     {"asymmetry", r.asymmetry},
+                     {"mean_row_entries", r.mean_row_entries},
+                     {"max_row_entries", r.max_row_entries},
+                     {"support_radius", r.support_radius},
+                     {"negative_fraction", r.negative_fraction},
+                     {"min_weight", r.min_weight},
+                     {"linear_defect", r.linear_defect},
+                     {"linear_points", r.linear_points}});
+    }
+    print_json({{"shape", s.shape},
+                {"h", s.h},
+                {"cube",
+                 {{"half_side", s.cube_half_side},
+                  {"h", 1},
+                  {"rotation", "0.5 rad about (1, 2, 3)"},
+                  {"gradient", {0.48, -0.6, 0.64}}}},
+                {"operators", ops}});
+    return;
+  }
+  std::cout
+      << "shape " << s.shape << ", h = " << s.h << "; linear u on the faces of a rotated cube"
+      << " of half-side " << s.cube_half_side << " at h = 1\n\n"
+      << "| operator | rows | max abs(L 1) | asymmetry of W L | entries per row (mean, max) | "
+         "support / h | negative weights | min weight | linear u: max abs(L u) |\n"
+      << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& r : rows) {
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "| %s | %lld | %.1e | %.1e | %.2f, %lld | %.3g | %.3g | %.2e | %.3g |\n",
+                  r.op.c_str(), static_cast<long long>(r.size), r.constants, r.asymmetry,
+                  r.mean_row_entries, static_cast<long long>(r.max_row_entries), r.support_radius,
+                  r.negative_fraction, r.min_weight, r.linear_defect);
+    std::cout << line;
+  }
+}
+
+} // namespace
+
 void add_converge_commands(CLI::App& app, Context& ctx) {
   {
     auto o = std::make_shared<ConvergeOptions>();
@@ -540,7 +606,8 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     auto* cmd = app.add_subcommand("paper", "Reproduce one figure of papers/NAME");
     cmd->add_option("name", *name,
                     "a folder of papers/: cviu2014-ii2d, cviu2014-compare, gauss-area, "
-                    "tangent-2d, cviu2014-ii3d, hausdorff, lb-digital, at-normals (a script: "
+                    "tangent-2d, cviu2014-ii3d, hausdorff, lb-digital, at-normals, "
+                    "laplacian-comparison (scripts: "
                     "needs -o DIR)")
         ->required();
     cmd->add_flag("--quick", *quick, "The reduced sweep (papers/NAME/quick.toml)");
@@ -567,6 +634,22 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
       opts.config_file = file.string();
       run_converge(opts, ctx);
     });
+  }
+  {
+    auto o = std::make_shared<LaplaciansOptions>();
+    auto* cmd = app.add_subcommand(
+        "laplacians",
+        "Property table of the Laplacians on a digital surface (Wardetzky et al. 2007)");
+    cmd->add_option("--shape", o->shape, "Closed 3D shape of zdg converge (default sphere1)");
+    cmd->add_option("--h", o->h, "Grid step of the shape (default 0.1)");
+    cmd->add_option("--operator", o->operators,
+                    "cotan, cotan-mc, meanvalue, idt, polygonal, heat, combinatorial "
+                    "(repeatable; default: all)");
+    cmd->add_option("--cube", o->cube,
+                    "Half-side in voxels of the rotated cube whose faces measure linear "
+                    "precision (default 20)");
+    cmd->add_flag("--json", o->json, "Print the table as JSON");
+    cmd->callback([o] { run_laplacians(*o); });
   }
 }
 

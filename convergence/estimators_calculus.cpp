@@ -3,20 +3,25 @@
 // digital_integration.hpp), compared with the shape's area in closed form; and the
 // Laplace-Beltrami operators lb-heat (estimators/heat_laplace_beltrami.hpp), lb-cotan (primal
 // surface), lb-cotan-mc (marching-cubes mesh) and lb-combinatorial
-// (kernel/linalg/cotan_laplacian.hpp), lb-polygonal and grad-polygonal (the corrected polygonal
-// calculus, kernel/calculus/polygonal_calculus.hpp) applied to a test function u (the parameter
-// `u`, convergence/scalar_field.hpp), compared at every element with Delta_S u at the nearest point
-// of the true surface (its normal and principal curvatures from the shape's closed forms: exact for
-// spheres, from the fundamental forms for the ellipsoid, torus and polynomial shapes).
+// (kernel/linalg/cotan_laplacian.hpp), lb-meanvalue and lb-idt (the primal surface split into
+// triangles: kernel/linalg/mean_value_laplacian.hpp, intrinsic_delaunay.hpp), lb-polygonal and
+// grad-polygonal (the corrected polygonal calculus, kernel/calculus/polygonal_calculus.hpp) applied
+// to a test function u (the parameter `u`, convergence/scalar_field.hpp), compared at every element
+// with Delta_S u at the nearest point of the true surface (its normal and principal curvatures from
+// the shape's closed forms: exact for spheres, from the fundamental forms for the ellipsoid, torus
+// and polynomial shapes).
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/estimator.hpp>
+#include <zdg/convergence/laplacian_comparison.hpp>
 #include <zdg/convergence/scalar_field.hpp>
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
 #include <zdg/kernel/calculus/polygonal_calculus.hpp>
 #include <zdg/kernel/linalg/cotan_laplacian.hpp>
+#include <zdg/kernel/linalg/intrinsic_delaunay.hpp>
+#include <zdg/kernel/linalg/mean_value_laplacian.hpp>
 #include <zdg/kernel/surfaces/image_surfaces.hpp>
 #include <zdg/kernel/surfaces/image_surfels.hpp>
 #include <zdg/kernel/surfaces/marching_cubes.hpp>
@@ -134,6 +139,28 @@ ErrorStats run_lb_cotan(const RunInput& in) {
   const auto triangles = triangulate_quads(complex.surfels);
   const CotanLaplacian L = cotan_laplacian(complex.pointels, triangles);
   return laplacian_errors(f, complex.pointels, L.apply(sampled(f, complex.pointels)));
+}
+
+// Mean-value LB D^{-1} W of the primal quads split into triangles, at the pointels (one copy
+// per sheet at a pinched pointel: convergence/laplacian_comparison.hpp, sheet_triangles).
+ErrorStats run_lb_meanvalue(const RunInput& in) {
+  const detail::Digitized3 d = whole_surface(in, "lb-meanvalue");
+  const TestFunction f = test_function(in, d);
+  const SurfelComplex complex = surfel_complex(primal_surface(d.surfels), in.h);
+  const SheetTriangles m = sheet_triangles(complex);
+  const MeanValueLaplacian L = mean_value_laplacian(m.vertices, m.triangles);
+  return laplacian_errors(f, m.vertices, L.apply(sampled(f, m.vertices)));
+}
+
+// Intrinsic Delaunay LB of the primal quads split into triangles, at the pointels (one copy per
+// sheet, as lb-meanvalue).
+ErrorStats run_lb_idt(const RunInput& in) {
+  const detail::Digitized3 d = whole_surface(in, "lb-idt");
+  const TestFunction f = test_function(in, d);
+  const SurfelComplex complex = surfel_complex(primal_surface(d.surfels), in.h);
+  const SheetTriangles m = sheet_triangles(complex);
+  const CotanLaplacian L = intrinsic_delaunay_laplacian(m.vertices, m.triangles);
+  return laplacian_errors(f, m.vertices, L.apply(sampled(f, m.vertices)));
 }
 
 // Cotangent LB of the marching-cubes mesh of the digitization (kernel/surfaces/marching_cubes.hpp,
@@ -298,6 +325,36 @@ void register_calculus_estimators(std::vector<Estimator>& out) {
           return std::nullopt;
         }},
        run_lb_cotan_mc});
+  out.push_back(
+      {"lb-meanvalue",
+       3,
+       "mean-value Laplacian D^{-1} W (Floater 2003 weights (tan(a/2) + tan(b/2)) / |e|, D_i = "
+       "sum_j w_ij |e_ij|^2 / 4) of the primal quad surface split into triangles, applied to u "
+       "at the pointels, against Delta_S u at the nearest surface point",
+       "Laplace-Beltrami",
+       {function_parameter()},
+       {"no convergence proven on surfaces (linear precision on planar meshes only: Floater "
+        "2003; Wardetzky et al., SGP 2007); on a staircase, as the cotangent, it sees the O(h) "
+        "offsets of the pointels divided by h^2",
+        [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          return std::nullopt;
+        }},
+       run_lb_meanvalue});
+  out.push_back(
+      {"lb-idt",
+       3,
+       "cotangent Laplacian of the intrinsic Delaunay triangulation (Bobenko, Springborn 2007) "
+       "of the primal quad surface split into triangles, applied to u at the pointels, against "
+       "Delta_S u at the nearest surface point",
+       "Laplace-Beltrami",
+       {function_parameter()},
+       {"no convergence on digital surfaces: the split quads are already intrinsically Delaunay "
+        "(opposite angles of 45 or 90 degrees), so this is lb-cotan (Caissard et al., JMIV "
+        "2019, Table 1, for the cotangent)",
+        [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+          return std::nullopt;
+        }},
+       run_lb_idt});
   out.push_back(
       {"lb-combinatorial",
        3,

@@ -6,6 +6,9 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
 
 namespace {
 
@@ -57,6 +60,57 @@ TEST(Converge3dCli, PapersExist) {
           << name << "/" << file;
     }
   }
+}
+
+// zdg laplacians (convergence/laplacian_comparison.hpp): the rows asked for, as JSON.
+TEST(Converge3dCli, LaplaciansJson) {
+  auto r = run_zdg("laplacians --json --h 0.2 --cube 14 --operator cotan --operator meanvalue");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["operators"].size(), 2u);
+  EXPECT_EQ(j["operators"][0]["operator"], "cotan");
+  EXPECT_EQ(j["operators"][0]["estimator"], "lb-cotan");
+  EXPECT_EQ(j["operators"][0]["asymmetry"].get<double>(), 0.0);
+  EXPECT_GT(j["operators"][1]["asymmetry"].get<double>(), 1e-3); // mean value: not symmetric
+  EXPECT_EQ(j["shape"], "sphere1");
+  auto text = run_zdg("laplacians --h 0.2 --cube 14 --operator idt");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("| idt | 416 |"), std::string::npos) << text.out;
+}
+
+// zdg paper laplacian-comparison --quick (papers/laplacian-comparison/run.py): the property
+// table and the sweep merged; the intrinsic Delaunay slopes are the cotangent's (the staircase
+// is already Delaunay), only the heat kernel converges; a second run without --force is refused.
+TEST(Converge3dCli, PaperLaplacianComparisonQuick) {
+  auto dir = zdg::test::scratch_dir("paper-laplacians");
+  const std::string out = (dir / "out").string();
+  auto r = run_zdg("paper laplacian-comparison --quick -o '" + out + "'");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  for (const char* f : {"table.md", "table.json", "properties.json", "results.csv", "summary.json"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "out" / f)) << f;
+  std::ifstream in(dir / "out" / "table.json");
+  const auto t = nlohmann::json::parse(in);
+  ASSERT_EQ(t["rows"].size(), 7u);
+  std::map<std::string, nlohmann::json> rows;
+  for (const auto& row : t["rows"]) rows[row["operator"]] = row;
+  for (const char* u : {"x", "x^2-y^2", "exp(z)"}) // the same errors, up to rounding
+    EXPECT_NEAR(rows["idt"]["slope_linf"][u].get<double>(),
+                rows["cotan"]["slope_linf"][u].get<double>(), 1e-9)
+        << u;
+  ASSERT_EQ(rows["heat"]["slope_linf"].size(), 3u);
+  for (const auto& [op, row] : rows) {
+    const double slope = row["slope_mean"]["x"].get<double>();
+    if (op == "heat") {
+      EXPECT_GT(slope, 0.3) << op;
+    } else {
+      EXPECT_LT(slope, -0.5) << op; // diverges like 1/h
+    }
+  }
+  EXPECT_GT(rows["meanvalue"]["asymmetry"].get<double>(), 1e-3);
+  auto again = run_zdg("paper laplacian-comparison --quick -o '" + out + "'");
+  EXPECT_EQ(again.status, 2);
+  EXPECT_NE(again.err.find("exists (use --force)"), std::string::npos) << again.err;
+  std::filesystem::remove_all(dir);
 }
 
 } // namespace

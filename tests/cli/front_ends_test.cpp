@@ -76,6 +76,9 @@ const std::vector<Operation>& operations() {
        "command line: zdg view and the commands' --html write the page; serve: a page is not a "
        "JSON answer"},
       {"paper", "", "", "serve and Python: reproduces a figure from the repository's papers/"},
+      {"laplacians", "", "",
+       "serve and Python: the measurement behind papers/laplacian-comparison (zdg paper runs it); "
+       "the operators themselves are reached through zdg converge's lb-* estimators"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
   };
