@@ -203,7 +203,7 @@ void compute_geodesic(SurfaceEstimates& est, const SurfelComplex& cx,
 // corners with v on the pointels: 0 on a sharp edge).
 void compute_at_normals(SurfaceEstimates& est, const SurfelComplex& cx,
                         const std::vector<Point3<double>>& normals, unsigned threads) {
-  if (est.at_v == ATDiscretization::pointel) {
+  if (est.at_discretization == ATDiscretization::pointel) {
     const ATMesh mesh = at_mesh(cx);
     ATMeshOptions o;
     o.threads = threads;
@@ -440,7 +440,7 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
   auto& est = r.estimates;
   est.names = check_surface_options(o);
   est.at = o.at;
-  est.at_v = o.at_v;
+  est.at_discretization = o.at_v;
   const SurfaceConvention conv = SurfaceConvention::of(o.adjacency);
   OperationProgress progress(o.progress);
   r.adjacency = o.adjacency;
@@ -609,7 +609,7 @@ nlohmann::json to_json(const SurfaceResult& r) {
                                 {"lambda", est.at.lambda},
                                 {"epsilon1", est.at.epsilon1},
                                 {"epsilon2", est.at.epsilon2},
-                                {"v", at_discretization_name(est.at_v)},
+                                {"v", at_discretization_name(est.at_discretization)},
                                 {"iterations", est.at_iterations},
                                 {"solver", est.at_solver}};
       estimates["at-v"] = value_stats(est.at_v);

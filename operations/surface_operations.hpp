@@ -167,7 +167,7 @@ struct SurfaceEstimates {
   std::vector<Point3<double>> at_normal;
   std::vector<double> at_v; ///< the discontinuity field per surfel (minimum over its sides)
   ATParameters at;
-  ATDiscretization at_v = ATDiscretization::linel;
+  ATDiscretization at_discretization = ATDiscretization::linel;
   std::string at_solver;
   int at_iterations = 0;
 };

@@ -76,6 +76,8 @@ const std::vector<Operation>& operations() {
        "command line: zdg view and the commands' --html write the page; serve: a page is not a "
        "JSON answer"},
       {"paper", "", "", "serve and Python: reproduces a figure from the repository's papers/"},
+      {"mesh at", "", "",
+       "serve and Python: works on files (a .ply mesh in, a .ply mesh with the fields out)"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
   };
