@@ -99,8 +99,9 @@ ATMesh at_mesh(const PolygonMesh& mesh) {
   if (nf == 0) bad("the mesh is empty (no faces)");
   ATMesh m;
   m.vertex_count = mesh.vertex_count();
-  m.face_start.resize(idx(nf) + 1);
-  for (std::int64_t f = 0; f <= nf; ++f) m.face_start[idx(f)] = f * mesh.face_size;
+  std::vector<std::int64_t> start(idx(nf) + 1);
+  for (std::int64_t f = 0; f <= nf; ++f) start[idx(f)] = f * mesh.face_size;
+  m.face_start = std::move(start);
   m.face_vertices = mesh.indices;
   // The sides (min, max, face), sorted: one side is a boundary edge, two an interior edge.
   std::vector<std::tuple<std::int64_t, std::int64_t, std::int64_t>> sides;
@@ -140,13 +141,14 @@ ATMesh at_mesh(const SurfelComplex& complex) {
   if (nf == 0) bad("the surface is empty (no surfels)");
   ATMesh m;
   m.vertex_count = complex.pointel_count();
-  m.face_start.resize(idx(nf) + 1);
+  std::vector<std::int64_t> start(idx(nf) + 1);
   m.face_vertices.reserve(idx(nf) * 4);
   for (std::int64_t f = 0; f < nf; ++f) {
-    m.face_start[idx(f)] = 4 * f;
+    start[idx(f)] = 4 * f;
     for (const auto p : complex.surfels[idx(f)]) m.face_vertices.push_back(p);
   }
-  m.face_start[idx(nf)] = 4 * nf;
+  start[idx(nf)] = 4 * nf;
+  m.face_start = std::move(start);
   m.edges.reserve(complex.linels.size());
   for (const auto& l : complex.linels) {
     ATMeshEdge e;
