@@ -13,6 +13,9 @@
 // OUT.ply is the input mesh (its fields kept) with the face normals replaced by AT's and the
 // per-face fields at-nx, at-ny, at-nz, at-v (the minimum of v over the face's vertices) and
 // segment (the label of the face's segment, 0 = the largest).
+// Defaults: alpha 0.05, lambda 0.05, eps 2 -> 0.25 (the per-face regime of raw face normals,
+// measured in papers/at-normals/README.md; zdg surface's AT starts from the smoother II
+// normals and keeps alpha 2, lambda 0.015).
 // Bad input (not a .ply, a mesh that is empty or not a manifold, a missing field, parameters
 // out of range): one line, exit 2, nothing written.
 #include <zdg/arith/error.hpp>
@@ -35,6 +38,16 @@
 namespace zdg::cli {
 
 namespace {
+
+// The defaults of zdg mesh at: raw face normals are noisy at the scale of one face, so a
+// smoothing length of 1 / sqrt(alpha) = 4.5 faces and a dearer discontinuity than on the II
+// normals of a digital surface (papers/at-normals/README.md, "On triangle meshes").
+ATParameters mesh_at_defaults() {
+  ATParameters p;
+  p.alpha = 0.05;
+  p.lambda = 0.05;
+  return p;
+}
 
 struct MeshAtArgs {
   std::string input, output, alpha, lambda, epsilon, inpaint, threshold, solver = "cg";
@@ -74,7 +87,7 @@ void run_mesh_at(const MeshAtArgs& a) {
   if (lower_extension(a.output) != ".ply")
     throw IoError(a.output + ": zdg mesh at writes a .ply mesh (got '" + lower_extension(a.output) +
                   "')");
-  ATParameters p;
+  ATParameters p = mesh_at_defaults();
   if (!a.alpha.empty()) p.alpha = parse_positive_real(a.alpha, "--alpha");
   if (!a.lambda.empty()) p.lambda = parse_positive_real(a.lambda, "--lambda");
   if (!a.epsilon.empty()) {
@@ -207,11 +220,11 @@ void add_mesh_commands(CLI::App& app, Context& /*ctx*/) {
   cmd->add_option("--alpha", a->alpha,
                   fmt::format("data fidelity alpha > 0 per unit area (default {}; larger: "
                               "closer to the input normals)",
-                              ATParameters{}.alpha));
+                              mesh_at_defaults().alpha));
   cmd->add_option("--lambda", a->lambda,
                   fmt::format("discontinuity cost lambda > 0 per unit length (default {}; "
                               "smaller: more edges)",
-                              ATParameters{}.lambda));
+                              mesh_at_defaults().lambda));
   cmd->add_option("--epsilon", a->epsilon,
                   fmt::format("the first and last eps, E1,E2 (default {},{}; halved between "
                               "levels), in units of the mean edge length",

@@ -117,7 +117,7 @@ enum class ATLinearSolver { conjugate_gradient, cholesky };
 
 struct ATMeshOptions {
   ATLinearSolver solver = ATLinearSolver::conjugate_gradient;
-  double cg_tolerance = 1e-8;         ///< relative residual of each CG solve (> 0)
+  double cg_tolerance = 1e-6;         ///< relative residual of each CG solve (> 0)
   std::int64_t cg_max_iterations = 0; ///< 0: 10 n + 1000 for n unknowns
   unsigned threads = 1;               ///< for the products of CG (0: all cores)
   double threshold = 0.5;             ///< the segmentation's threshold on v, in [0, 1]
