@@ -3,7 +3,7 @@
 //
 //   zdg surface INPUT [selection] [--adjacency 6,26] [--component largest|all|K]
 //               [--estimate ii-mean,ii-k1,...,geodesic,at-normal] [--source SURFEL|X,Y,Z]
-//               [--at-alpha A] [--at-lambda L] [--radius R|Rv]
+//               [--at-alpha A] [--at-lambda L] [--at-v linel|pointel] [--radius R|Rv]
 //               [--mesh primal|marching-cubes]
 //               [-o OUT.ply|.obj|.off] [--csv F] [--png F [--color E] [--view AZ,EL]
 //               [--png-size WxH]] [--threads N] [--json] [--quiet] [--force]
@@ -227,7 +227,7 @@ ObjectImage object_image(LoadedObject& obj, const std::string& path) {
 struct SurfaceArgs {
   VolumeInputArgs in;
   std::string adjacency = "6,26", component = "all", estimate, radius, mesh = "primal";
-  std::string output, csv, source, at_alpha, at_lambda, html;
+  std::string output, csv, source, at_alpha, at_lambda, at_v, html;
   std::int64_t max_faces = 2'000'000;
   PictureArgs picture;
   unsigned threads = 0;
@@ -304,12 +304,19 @@ void run_surface(const SurfaceArgs& a) {
   if (!a.source.empty()) o.source = parse_source(a.source);
   if (!a.at_alpha.empty()) o.at.alpha = parse_positive(a.at_alpha, "--at-alpha");
   if (!a.at_lambda.empty()) o.at.lambda = parse_positive(a.at_lambda, "--at-lambda");
+  if (!a.at_v.empty()) {
+    if (a.at_v != "linel" && a.at_v != "pointel")
+      throw InvalidArgument("--at-v '" + a.at_v + "': expected linel or pointel");
+    o.at_v = a.at_v == "pointel" ? ATDiscretization::pointel : ATDiscretization::linel;
+  }
   // The picture's colour: --color (computed when not in --estimate), else the first scalar
   // estimate, else none (a grey surface).
   const auto [png_w, png_h] = picture_size(a.picture, 1200, 900);
   const std::string color = picture_color(a.picture, surface_color_fields(), o.estimates);
-  if ((!a.at_alpha.empty() || !a.at_lambda.empty()) && !contains(o.estimates, "at-normal"))
-    throw InvalidArgument("--at-alpha and --at-lambda are only read by --estimate at-normal");
+  if ((!a.at_alpha.empty() || !a.at_lambda.empty() || !a.at_v.empty()) &&
+      !contains(o.estimates, "at-normal"))
+    throw InvalidArgument(
+        "--at-alpha, --at-lambda and --at-v are only read by --estimate at-normal");
   check_surface_options(o);
   MeshRenderOptions render;
   render.width = png_w;
@@ -626,6 +633,10 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                       fmt::format("Ambrosio-Tortorelli discontinuity cost lambda > 0 (default "
                                   "{}; smaller: more edges)",
                                   ATParameters{}.lambda));
+  surface->add_option("--at-v", s->at_v,
+                      "where Ambrosio-Tortorelli's discontinuity function v lives: linel (a "
+                      "dual 1-form, default) or pointel (a primal 0-form, the CGF 2016 paper's "
+                      "discretization; conjugate gradients)");
   surface->add_option("--source", s->source,
                       "source of --estimate geodesic: a surfel index (the row of --csv) or a "
                       "point X,Y,Z in physical units (the nearest surfel, within two voxels)");

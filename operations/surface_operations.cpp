@@ -1,6 +1,7 @@
 #include <zdg/operations/surface_operations.hpp>
 
 #include <zdg/arith/error.hpp>
+#include <zdg/estimators/ambrosio_tortorelli_mesh.hpp>
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_geodesics.hpp>
 #include <zdg/kernel/calculus/harmonic_dimension.hpp>
@@ -198,9 +199,21 @@ void compute_geodesic(SurfaceEstimates& est, const SurfelComplex& cx,
 }
 
 // The Ambrosio-Tortorelli piecewise-smooth normals from the II normals on the primal surface's
-// surfels, and v brought to the surfels (the minimum over their four sides: 0 on a sharp edge).
+// surfels, and v brought to the surfels (the minimum over their four sides, or their four
+// corners with v on the pointels: 0 on a sharp edge).
 void compute_at_normals(SurfaceEstimates& est, const SurfelComplex& cx,
-                        const std::vector<Point3<double>>& normals) {
+                        const std::vector<Point3<double>>& normals, unsigned threads) {
+  if (est.at_discretization == ATDiscretization::pointel) {
+    const ATMesh mesh = at_mesh(cx);
+    ATMeshOptions o;
+    o.threads = threads;
+    const ATMeshResult r = at_mesh_normals(mesh, normals, est.at, o);
+    est.at_normal = r.normals;
+    est.at_v = at_face_values(mesh, r.v, ATSurfelPolicy::minimum);
+    est.at_solver = r.solver;
+    est.at_iterations = r.iterations;
+    return;
+  }
   const ATResult r = at_normals(cx, normals, est.at);
   est.at_normal = r.normals;
   est.at_v = at_surfel_v(cx, r.v, ATSurfelPolicy::minimum);
@@ -379,6 +392,10 @@ double isotropic_step(const std::vector<double>& spacing, const std::string& nam
   return h;
 }
 
+const char* at_discretization_name(ATDiscretization d) {
+  return d == ATDiscretization::pointel ? "pointel" : "linel";
+}
+
 const char* surface_mesh_name(SurfaceMesh m) {
   switch (m) {
   case SurfaceMesh::primal:
@@ -423,6 +440,7 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
   auto& est = r.estimates;
   est.names = check_surface_options(o);
   est.at = o.at;
+  est.at_discretization = o.at_v;
   const SurfaceConvention conv = SurfaceConvention::of(o.adjacency);
   OperationProgress progress(o.progress);
   r.adjacency = o.adjacency;
@@ -530,7 +548,7 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
     }
     if (est.names.count("at-normal")) {
       progress.start("Ambrosio-Tortorelli normals");
-      compute_at_normals(est, cx, normals);
+      compute_at_normals(est, cx, normals, o.threads);
       progress.done("at-normal");
     }
   }
@@ -591,6 +609,7 @@ nlohmann::json to_json(const SurfaceResult& r) {
                                 {"lambda", est.at.lambda},
                                 {"epsilon1", est.at.epsilon1},
                                 {"epsilon2", est.at.epsilon2},
+                                {"v", at_discretization_name(est.at_discretization)},
                                 {"iterations", est.at_iterations},
                                 {"solver", est.at_solver}};
       estimates["at-v"] = value_stats(est.at_v);

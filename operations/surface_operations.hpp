@@ -121,6 +121,10 @@ struct GeodesicSource {
 enum class SurfaceMesh { none, primal, marching_cubes };
 const char* surface_mesh_name(SurfaceMesh m); // "primal", "marching-cubes" ("" for none)
 
+/// The two discretizations of the Ambrosio-Tortorelli functional on a digital surface.
+enum class ATDiscretization { linel, pointel };
+const char* at_discretization_name(ATDiscretization d); // "linel", "pointel"
+
 struct SurfaceOptions {
   AdjacencyPair adjacency{3, 6, 26};
   std::int64_t component = 0;         ///< 0: all; K >= 1: the K-th largest (1: the largest)
@@ -130,6 +134,10 @@ struct SurfaceOptions {
   std::optional<double> step;
   std::optional<GeodesicSource> source; ///< for geodesic
   ATParameters at;                      ///< for at-normal
+  /// Where at-normal's discontinuity function v lives: on the linels (estimators/
+  /// ambrosio_tortorelli.hpp, the default) or on the pointels (estimators/
+  /// ambrosio_tortorelli_mesh.hpp, the primal 0-form of the CGF 2016 paper).
+  ATDiscretization at_v = ATDiscretization::linel;
   SurfaceMesh mesh = SurfaceMesh::none; ///< the mesh, with the estimates per face
   bool keep_surfels = false; ///< the surfels and their surfaces stay in the result (for CSV)
   /// The dimension of the harmonic 1-forms of each closed surface, from the exact ranks of
@@ -159,6 +167,7 @@ struct SurfaceEstimates {
   std::vector<Point3<double>> at_normal;
   std::vector<double> at_v; ///< the discontinuity field per surfel (minimum over its sides)
   ATParameters at;
+  ATDiscretization at_discretization = ATDiscretization::linel;
   std::string at_solver;
   int at_iterations = 0;
 };

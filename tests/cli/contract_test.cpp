@@ -85,6 +85,16 @@ const char* const kPlyTriangle =
     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
     "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
     "property float k\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 0.5\n";
+// Three triangles on the edge (0, 1): not a manifold.
+const char* const kPlyFin =
+    "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n";
+// A PLY of three vertices and no face.
+const char* const kPlyNoFace =
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+    "property float z\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n"
+    "0 0 0\n1 0 0\n0 1 0\n";
 const char* const kCutVol = "X: 4\nY: 4\nZ: 4\nVersion: 2\n.\nab";
 
 std::vector<BadInput> bad_inputs() {
@@ -357,6 +367,61 @@ std::vector<BadInput> bad_inputs() {
        {},
        {},
        "zdg paper at-normals needs -o DIR"},
+      {"Ambrosio-Tortorelli on a mesh that is not a manifold",
+       "mesh at {dir}/m.ply -o {dir}/out.ply",
+       {{"m.ply", kPlyFin}},
+       {},
+       "has 3 faces: not a manifold mesh"},
+      {"Ambrosio-Tortorelli on a mesh without faces",
+       "mesh at {dir}/m.ply -o {dir}/out.ply",
+       {{"m.ply", kPlyNoFace}},
+       {},
+       "the mesh has no faces"},
+      {"Ambrosio-Tortorelli inpainting a field the mesh does not have",
+       "mesh at {dir}/m.ply -o {dir}/out.ply --inpaint mask",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "has no face field 'mask' (k)"},
+      {"Ambrosio-Tortorelli inpainting every face",
+       "mesh at {dir}/m.ply -o {dir}/out.ply --inpaint k",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "all inpainted"},
+      {"Ambrosio-Tortorelli on a mesh over an existing output",
+       "mesh at {dir}/m.ply -o {dir}/out.ply",
+       {{"m.ply", kPlyTriangle}},
+       {"out.ply"},
+       "out.ply: exists (use --force"},
+      {"Ambrosio-Tortorelli on a mesh with alpha not positive",
+       "mesh at {dir}/m.ply -o {dir}/out.ply --alpha 0",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "--alpha '0': a positive number is needed"},
+      {"Ambrosio-Tortorelli on a mesh with one epsilon",
+       "mesh at {dir}/m.ply -o {dir}/out.ply --epsilon 2",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "--epsilon '2': expected E1,E2"},
+      {"Ambrosio-Tortorelli on a mesh with a threshold outside [0, 1]",
+       "mesh at {dir}/m.ply -o {dir}/out.ply --threshold 1.5",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "--threshold '1.5': a number in [0, 1] is needed"},
+      {"Ambrosio-Tortorelli on a mesh with an unknown solver",
+       "mesh at {dir}/m.ply -o {dir}/out.ply --solver lu",
+       {{"m.ply", kPlyTriangle}},
+       {},
+       "--solver 'lu': expected cg or cholesky"},
+      {"Ambrosio-Tortorelli on a mesh that is not a PLY",
+       "mesh at {dir}/m.obj -o {dir}/out.ply",
+       {{"m.obj", "v 0 0 0\n"}},
+       {},
+       "zdg mesh at reads a .ply mesh (got '.obj')"},
+      {"Ambrosio-Tortorelli with v on an unknown cell",
+       "surface {dir}/cube.npy --estimate at-normal --at-v edge",
+       {{"cube.npy", cube_npy()}},
+       {},
+       "--at-v 'edge': expected linel or pointel"},
       {"view of a mesh that is not a PLY",
        "view {dir}/m.obj -o {dir}/v.html",
        {{"m.obj", "v 0 0 0\n"}},

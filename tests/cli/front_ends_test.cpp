@@ -79,6 +79,8 @@ const std::vector<Operation>& operations() {
       {"laplacians", "", "",
        "serve and Python: the measurement behind papers/laplacian-comparison (zdg paper runs it); "
        "the operators themselves are reached through zdg converge's lb-* estimators"},
+      {"mesh at", "", "",
+       "serve and Python: works on files (a .ply mesh in, a .ply mesh with the fields out)"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
   };

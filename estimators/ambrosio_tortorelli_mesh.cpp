@@ -1,0 +1,636 @@
+#include <zdg/estimators/ambrosio_tortorelli_mesh.hpp>
+
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/linalg/sparse_spd_solver.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+
+namespace zdg {
+
+namespace {
+
+using P = Point3<double>;
+
+std::size_t idx(std::int64_t i) {
+  return static_cast<std::size_t>(i);
+}
+
+std::string str(std::int64_t i) {
+  return std::to_string(i);
+}
+
+[[noreturn]] void bad(const std::string& what) {
+  throw InvalidArgument("Ambrosio-Tortorelli (mesh): " + what);
+}
+
+double norm(P p) {
+  return std::sqrt(dot(p, p));
+}
+
+// The vector area of face f (half the sum of the cross products of its sides, from its first
+// vertex).
+P vector_area(std::span<const P> positions, std::span<const std::int64_t> face) {
+  P s{0, 0, 0};
+  const P o = positions[idx(face[0])];
+  for (std::size_t i = 1; i + 1 < face.size(); ++i)
+    s = s + cross(positions[idx(face[i])] - o, positions[idx(face[i + 1])] - o);
+  return 0.5 * s;
+}
+
+std::span<const std::int64_t> face_of(const ATMesh& m, std::int64_t f) {
+  const auto b = m.face_start[idx(f)], e = m.face_start[idx(f) + 1];
+  return std::span<const std::int64_t>(m.face_vertices).subspan(idx(b), idx(e - b));
+}
+
+// The measures of the calculus from the vertex positions (the header's list).
+void measure(ATMesh& m, std::span<const P> positions) {
+  const std::int64_t nf = m.face_count();
+  if (m.edges.empty()) bad("the mesh has no edges");
+  double total = 0;
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    const double l = norm(positions[idx(m.edges[e].a)] - positions[idx(m.edges[e].b)]);
+    if (!(l > 0) || !std::isfinite(l))
+      bad("edge (" + str(m.edges[e].a) + ", " + str(m.edges[e].b) + ") has length zero");
+    total += l;
+  }
+  m.unit = total / static_cast<double>(m.edges.size());
+  const double h = m.unit;
+  std::vector<P> centre(idx(nf));
+  m.face_area.assign(idx(nf), 0.0);
+  m.vertex_area.assign(idx(m.vertex_count), 0.0);
+  for (std::int64_t f = 0; f < nf; ++f) {
+    const auto face = face_of(m, f);
+    const double a = norm(vector_area(positions, face)) / (h * h);
+    if (!(a > 0) || !std::isfinite(a)) bad("face " + str(f) + " has zero area");
+    m.face_area[idx(f)] = a;
+    P c{0, 0, 0};
+    for (const auto v : face) {
+      c = c + positions[idx(v)];
+      m.vertex_area[idx(v)] += a / static_cast<double>(face.size());
+    }
+    centre[idx(f)] = (1.0 / static_cast<double>(face.size())) * c;
+  }
+  m.jump_weight.assign(m.edges.size(), 0.0);
+  m.edge_weight.assign(m.edges.size(), 0.0);
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    const auto& ed = m.edges[e];
+    const P pa = positions[idx(ed.a)], pb = positions[idx(ed.b)];
+    const P mid = 0.5 * (pa + pb);
+    const double l = norm(pa - pb) / h;
+    double d = norm(centre[idx(ed.face[0])] - mid) / h;
+    if (ed.face[1] >= 0) d += norm(centre[idx(ed.face[1])] - mid) / h;
+    if (!(d > 0)) bad("edge (" + str(ed.a) + ", " + str(ed.b) + ") has a dual edge of length zero");
+    m.edge_weight[e] = d / l;
+    if (ed.face[1] >= 0) m.jump_weight[e] = l / d;
+  }
+}
+
+} // namespace
+
+ATMesh at_mesh(const PolygonMesh& mesh) {
+  mesh.validate();
+  const std::int64_t nf = mesh.face_count();
+  if (nf == 0) bad("the mesh is empty (no faces)");
+  ATMesh m;
+  m.vertex_count = mesh.vertex_count();
+  std::vector<std::int64_t> start(idx(nf) + 1);
+  for (std::int64_t f = 0; f <= nf; ++f) start[idx(f)] = f * mesh.face_size;
+  m.face_start = std::move(start);
+  m.face_vertices = mesh.indices;
+  // The sides (min, max, face), sorted: one side is a boundary edge, two an interior edge.
+  std::vector<std::tuple<std::int64_t, std::int64_t, std::int64_t>> sides;
+  sides.reserve(mesh.indices.size());
+  for (std::int64_t f = 0; f < nf; ++f) {
+    const auto face = mesh.face(f);
+    for (std::size_t i = 0; i < face.size(); ++i) {
+      const auto a = face[i], b = face[(i + 1) % face.size()];
+      for (std::size_t j = i + 1; j < face.size(); ++j)
+        if (face[j] == face[i]) bad("face " + str(f) + " uses vertex " + str(a) + " twice");
+      sides.emplace_back(std::min(a, b), std::max(a, b), f);
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  for (std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i + 1;
+    while (j < sides.size() && std::get<0>(sides[j]) == std::get<0>(sides[i]) &&
+           std::get<1>(sides[j]) == std::get<1>(sides[i]))
+      ++j;
+    if (j - i > 2)
+      bad("the edge (" + str(std::get<0>(sides[i])) + ", " + str(std::get<1>(sides[i])) + ") has " +
+          str(static_cast<std::int64_t>(j - i)) +
+          " faces: not a manifold mesh (at most two faces per edge)");
+    ATMeshEdge e;
+    e.a = std::get<0>(sides[i]);
+    e.b = std::get<1>(sides[i]);
+    e.face = {std::get<2>(sides[i]), j - i == 2 ? std::get<2>(sides[i + 1]) : -1};
+    m.edges.push_back(e);
+    i = j;
+  }
+  measure(m, mesh.vertices);
+  return m;
+}
+
+ATMesh at_mesh(const SurfelComplex& complex) {
+  const std::int64_t nf = complex.surfel_count();
+  if (nf == 0) bad("the surface is empty (no surfels)");
+  ATMesh m;
+  m.vertex_count = complex.pointel_count();
+  std::vector<std::int64_t> start(idx(nf) + 1);
+  m.face_vertices.reserve(idx(nf) * 4);
+  for (std::int64_t f = 0; f < nf; ++f) {
+    start[idx(f)] = 4 * f;
+    for (const auto p : complex.surfels[idx(f)]) m.face_vertices.push_back(p);
+  }
+  start[idx(nf)] = 4 * nf;
+  m.face_start = std::move(start);
+  m.edges.reserve(complex.linels.size());
+  for (const auto& l : complex.linels) {
+    ATMeshEdge e;
+    e.a = std::min(l.a, l.b);
+    e.b = std::max(l.a, l.b);
+    e.face = l.face;
+    m.edges.push_back(e);
+  }
+  measure(m, complex.pointels);
+  return m;
+}
+
+std::vector<Point3<double>> mesh_face_normals(const PolygonMesh& mesh) {
+  mesh.validate();
+  std::vector<P> n(idx(mesh.face_count()));
+  for (std::int64_t f = 0; f < mesh.face_count(); ++f) {
+    const P a = vector_area(mesh.vertices, mesh.face(f));
+    const double l = norm(a);
+    if (!(l > 0) || !std::isfinite(l)) bad("face " + str(f) + " has zero area");
+    n[idx(f)] = (1 / l) * a;
+  }
+  return n;
+}
+
+namespace {
+
+void check_parameters(const ATParameters& p) {
+  if (!(p.alpha > 0) || !std::isfinite(p.alpha))
+    bad("alpha must be positive, got " + std::to_string(p.alpha));
+  if (!(p.lambda > 0) || !std::isfinite(p.lambda))
+    bad("lambda must be positive, got " + std::to_string(p.lambda));
+  if (!(p.epsilon2 > 0) || !std::isfinite(p.epsilon2))
+    bad("epsilon2 must be positive, got " + std::to_string(p.epsilon2));
+  if (!(p.epsilon1 >= p.epsilon2) || !std::isfinite(p.epsilon1))
+    bad("epsilon1 = " + std::to_string(p.epsilon1) +
+        " must be at least epsilon2 = " + std::to_string(p.epsilon2));
+  if (!(p.epsilon_factor > 1) || !std::isfinite(p.epsilon_factor))
+    bad("the epsilon factor must be above 1, got " + std::to_string(p.epsilon_factor));
+  if (p.max_iterations < 1)
+    bad("max_iterations must be at least 1, got " + std::to_string(p.max_iterations));
+  if (!(p.tolerance >= 0) || !std::isfinite(p.tolerance))
+    bad("the tolerance must be non-negative, got " + std::to_string(p.tolerance));
+}
+
+void check_options(const ATMeshOptions& o) {
+  if (!(o.cg_tolerance > 0) || !std::isfinite(o.cg_tolerance))
+    bad("the CG tolerance must be positive, got " + std::to_string(o.cg_tolerance));
+  if (o.cg_max_iterations < 0)
+    bad("cg_max_iterations must be non-negative, got " + str(o.cg_max_iterations));
+  if (!(o.threshold >= 0 && o.threshold <= 1))
+    bad("the threshold must be in [0, 1], got " + std::to_string(o.threshold));
+}
+
+void check_eps(double eps) {
+  if (!(eps > 0) || !std::isfinite(eps)) bad("eps must be positive, got " + std::to_string(eps));
+}
+
+void check_faces(const ATMesh& m, std::span<const P> f, const char* name) {
+  if (static_cast<std::int64_t>(f.size()) != m.face_count())
+    bad(std::string(name) + " has " + str(static_cast<std::int64_t>(f.size())) + " entries for " +
+        str(m.face_count()) + " faces");
+  for (std::size_t i = 0; i < f.size(); ++i)
+    if (!std::isfinite(f[i].x) || !std::isfinite(f[i].y) || !std::isfinite(f[i].z))
+      bad(std::string(name) + " at face " + str(static_cast<std::int64_t>(i)) + " is not finite");
+}
+
+void check_weights(const ATMesh& m, std::span<const double> w) {
+  if (w.empty()) return;
+  if (static_cast<std::int64_t>(w.size()) != m.face_count())
+    bad("the weights have " + str(static_cast<std::int64_t>(w.size())) + " entries for " +
+        str(m.face_count()) + " faces");
+  for (std::size_t i = 0; i < w.size(); ++i)
+    if (!(w[i] >= 0) || !std::isfinite(w[i]))
+      bad("the weight of face " + str(static_cast<std::int64_t>(i)) +
+          " must be finite and non-negative, got " + std::to_string(w[i]));
+}
+
+void check_vertices(const ATMesh& m, std::span<const double> v) {
+  if (static_cast<std::int64_t>(v.size()) != m.vertex_count)
+    bad("v has " + str(static_cast<std::int64_t>(v.size())) + " entries for " +
+        str(m.vertex_count) + " vertices");
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (!std::isfinite(v[i]))
+      bad("v at vertex " + str(static_cast<std::int64_t>(i)) + " is not finite");
+}
+
+double weight(std::span<const double> w, std::size_t f) {
+  return w.empty() ? 1.0 : w[f];
+}
+
+/// Union-find with path halving.
+struct Components {
+  std::vector<std::int64_t> parent;
+  explicit Components(std::int64_t n) : parent(idx(n)) {
+    std::iota(parent.begin(), parent.end(), std::int64_t{0});
+  }
+  std::int64_t find(std::int64_t x) {
+    while (parent[idx(x)] != x) {
+      parent[idx(x)] = parent[idx(parent[idx(x)])];
+      x = parent[idx(x)];
+    }
+    return x;
+  }
+  void join(std::int64_t a, std::int64_t b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[idx(std::max(a, b))] = std::min(a, b);
+  }
+};
+
+// A symmetric matrix whose pattern is the diagonal plus the pairs (i, j) of `pairs`, with the
+// positions of each pair's two entries and of the diagonal, for assembly in place.
+struct Pattern {
+  SparseMatrix m;
+  std::vector<std::int64_t> diag, ij, ji;
+
+  Pattern(std::int64_t n, const std::vector<std::pair<std::int64_t, std::int64_t>>& pairs) {
+    std::vector<std::int64_t> count(idx(n) + 1, 1);
+    count[idx(n)] = 0;
+    for (const auto& [i, j] : pairs) {
+      ++count[idx(i)];
+      ++count[idx(j)];
+    }
+    std::vector<std::int64_t> start(idx(n) + 1, 0);
+    for (std::int64_t i = 0; i < n; ++i) start[idx(i) + 1] = start[idx(i)] + count[idx(i)];
+    std::vector<std::int64_t> cols(idx(start[idx(n)]));
+    std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
+    for (std::int64_t i = 0; i < n; ++i) cols[idx(fill[idx(i)]++)] = i;
+    for (const auto& [i, j] : pairs) {
+      cols[idx(fill[idx(i)]++)] = j;
+      cols[idx(fill[idx(j)]++)] = i;
+    }
+    m.rows = m.cols = n;
+    m.row_start.assign(1, 0);
+    m.row_start.reserve(idx(n) + 1);
+    for (std::int64_t i = 0; i < n; ++i) {
+      auto b = cols.begin() + start[idx(i)], e = cols.begin() + start[idx(i) + 1];
+      std::sort(b, e);
+      e = std::unique(b, e);
+      m.column.insert(m.column.end(), b, e);
+      m.row_start.push_back(static_cast<std::int64_t>(m.column.size()));
+    }
+    m.value.assign(m.column.size(), 0.0);
+    const auto at = [&](std::int64_t i, std::int64_t j) {
+      const auto b = m.column.begin() + m.row_start[idx(i)];
+      const auto e = m.column.begin() + m.row_start[idx(i) + 1];
+      return static_cast<std::int64_t>(std::lower_bound(b, e, j) - m.column.begin());
+    };
+    diag.resize(idx(n));
+    for (std::int64_t i = 0; i < n; ++i) diag[idx(i)] = at(i, i);
+    ij.resize(pairs.size());
+    ji.resize(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      ij[k] = at(pairs[k].first, pairs[k].second);
+      ji[k] = at(pairs[k].second, pairs[k].first);
+    }
+  }
+  void clear() { std::fill(m.value.begin(), m.value.end(), 0.0); }
+  // Adds w (x_i - x_j)^2's matrix, or w (x_i + x_j)^2 / 4's when `sum`.
+  void add_pair(std::size_t k, std::int64_t i, std::int64_t j, double w, bool sum) {
+    const double d = sum ? w / 4 : w, o = sum ? w / 4 : -w;
+    m.value[idx(diag[idx(i)])] += d;
+    m.value[idx(diag[idx(j)])] += d;
+    m.value[idx(ij[k])] += o;
+    m.value[idx(ji[k])] += o;
+  }
+};
+
+std::vector<std::pair<std::int64_t, std::int64_t>> face_pairs(const ATMesh& m) {
+  std::vector<std::pair<std::int64_t, std::int64_t>> p;
+  p.reserve(m.edges.size());
+  for (const auto& e : m.edges)
+    if (e.face[1] >= 0) p.emplace_back(e.face[0], e.face[1]);
+  return p;
+}
+
+std::vector<std::pair<std::int64_t, std::int64_t>> vertex_pairs(const ATMesh& m) {
+  std::vector<std::pair<std::int64_t, std::int64_t>> p;
+  p.reserve(m.edges.size());
+  for (const auto& e : m.edges) p.emplace_back(e.a, e.b);
+  return p;
+}
+
+double squared_jump(std::span<const P> u, const ATMeshEdge& e) {
+  const P d = u[idx(e.face[0])] - u[idx(e.face[1])];
+  return dot(d, d);
+}
+
+// The u-step matrix on its pattern (pairs: the interior edges in order).
+void assemble_u(const ATMesh& m, Pattern& pat, std::span<const double> v, double alpha,
+                std::span<const double> w) {
+  pat.clear();
+  for (std::int64_t f = 0; f < m.face_count(); ++f)
+    pat.m.value[idx(pat.diag[idx(f)])] = alpha * m.face_area[idx(f)] * weight(w, idx(f));
+  std::size_t k = 0;
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    const auto& ed = m.edges[e];
+    if (ed.face[1] < 0) continue;
+    const double mv = 0.5 * (v[idx(ed.a)] + v[idx(ed.b)]);
+    pat.add_pair(k++, ed.face[0], ed.face[1], m.jump_weight[e] * mv * mv, false);
+  }
+}
+
+// The v-step matrix on its pattern (pairs: every edge in order).
+void assemble_v(const ATMesh& m, Pattern& pat, std::span<const P> u, double lambda, double eps) {
+  pat.clear();
+  const double well = lambda / (4 * eps);
+  for (std::int64_t p = 0; p < m.vertex_count; ++p)
+    pat.m.value[idx(pat.diag[idx(p)])] = well * m.vertex_area[idx(p)];
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    const auto& ed = m.edges[e];
+    pat.add_pair(e, ed.a, ed.b, lambda * eps * m.edge_weight[e], false);
+    if (ed.face[1] >= 0) pat.add_pair(e, ed.a, ed.b, m.jump_weight[e] * squared_jump(u, ed), true);
+  }
+}
+
+double energy(const ATMesh& m, std::span<const P> g, std::span<const P> u,
+              std::span<const double> v, const ATParameters& p, double eps,
+              std::span<const double> w) {
+  double data = 0, coupling = 0, dirichlet = 0, well = 0;
+  for (std::size_t f = 0; f < g.size(); ++f) {
+    const P d = u[f] - g[f];
+    data += weight(w, f) * m.face_area[f] * dot(d, d);
+  }
+  for (std::size_t e = 0; e < m.edges.size(); ++e) {
+    const auto& ed = m.edges[e];
+    const double dv = v[idx(ed.b)] - v[idx(ed.a)];
+    dirichlet += m.edge_weight[e] * dv * dv;
+    if (ed.face[1] < 0) continue;
+    const double mv = 0.5 * (v[idx(ed.a)] + v[idx(ed.b)]);
+    coupling += m.jump_weight[e] * mv * mv * squared_jump(u, ed);
+  }
+  for (std::size_t q = 0; q < v.size(); ++q) well += m.vertex_area[q] * (1 - v[q]) * (1 - v[q]);
+  return p.alpha * data + coupling + p.lambda * eps * dirichlet + p.lambda / (4 * eps) * well;
+}
+
+// Jacobi-preconditioned conjugate gradients on a, from x (the previous iterate), until
+// ||r|| <= tol ||b||. Returns the iterations; Error past max_iterations or on a matrix that is
+// not positive definite along the search.
+std::int64_t cg(const SparseMatrix& a, std::span<const double> b, std::vector<double>& x,
+                const ATMeshOptions& o, const char* which) {
+  const std::size_t n = b.size();
+  const std::int64_t max_it =
+      o.cg_max_iterations > 0 ? o.cg_max_iterations : 10 * static_cast<std::int64_t>(n) + 1000;
+  std::vector<double> inv(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = a.at(static_cast<std::int64_t>(i), static_cast<std::int64_t>(i));
+    if (!(d > 0))
+      throw Error(std::string("Ambrosio-Tortorelli (mesh): the ") + which +
+                  "-step matrix has a zero diagonal entry at row " +
+                  str(static_cast<std::int64_t>(i)) + " (an inpainted face cut off by v = 0)");
+    inv[i] = 1 / d;
+  }
+  double bb = 0;
+  for (const double t : b) bb += t * t;
+  if (bb == 0) {
+    std::fill(x.begin(), x.end(), 0.0);
+    return 0;
+  }
+  const double stop = o.cg_tolerance * o.cg_tolerance * bb;
+  std::vector<double> r = a.multiply(x, o.threads);
+  double rr = 0, rz = 0;
+  std::vector<double> z(n), p(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    r[i] = b[i] - r[i];
+    z[i] = inv[i] * r[i];
+    p[i] = z[i];
+    rr += r[i] * r[i];
+    rz += r[i] * z[i];
+  }
+  std::int64_t it = 0;
+  while (rr > stop) {
+    if (it == max_it)
+      throw Error(std::string("Ambrosio-Tortorelli (mesh): conjugate gradients on the ") + which +
+                  "-step did not reach the relative residual " + std::to_string(o.cg_tolerance) +
+                  " in " + str(max_it) + " iterations");
+    const auto ap = a.multiply(p, o.threads);
+    double pap = 0;
+    for (std::size_t i = 0; i < n; ++i) pap += p[i] * ap[i];
+    if (!(pap > 0))
+      throw Error(std::string("Ambrosio-Tortorelli (mesh): the ") + which +
+                  "-step matrix is not positive definite (p^T A p = " + std::to_string(pap) + ")");
+    const double step = rz / pap;
+    double rz_new = 0;
+    rr = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] += step * p[i];
+      r[i] -= step * ap[i];
+      z[i] = inv[i] * r[i];
+      rz_new += r[i] * z[i];
+      rr += r[i] * r[i];
+    }
+    const double beta = rz_new / rz;
+    rz = rz_new;
+    for (std::size_t i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
+    ++it;
+  }
+  return it;
+}
+
+// One linear solver per step: CG, or a Cholesky factorization analysed once.
+struct StepSolver {
+  const ATMeshOptions& options;
+  const char* which;
+  std::optional<SparseSpdSolver> cholesky;
+  std::int64_t iterations = 0;
+
+  void solve(const SparseMatrix& a, std::span<const double> b, std::vector<double>& x) {
+    if (options.solver == ATLinearSolver::cholesky) {
+      if (cholesky)
+        cholesky->refactor(a);
+      else
+        cholesky.emplace(a);
+      x = cholesky->solve(b);
+    } else {
+      iterations += cg(a, b, x, options, which);
+    }
+  }
+};
+
+void solve_u(const ATMesh& m, Pattern& pat, std::span<const P> g, std::span<const double> v,
+             double alpha, std::span<const double> w, std::vector<P>& u, StepSolver& s) {
+  assemble_u(m, pat, v, alpha, w);
+  const std::size_t n = g.size();
+  std::vector<double> b(n), x(n);
+  for (int k = 0; k < 3; ++k) {
+    const auto c = [k](P& p) -> double& { return k == 0 ? p.x : k == 1 ? p.y : p.z; };
+    for (std::size_t f = 0; f < n; ++f) {
+      P gf = g[f];
+      b[f] = alpha * m.face_area[f] * weight(w, f) * c(gf);
+      x[f] = c(u[f]);
+    }
+    s.solve(pat.m, b, x);
+    for (std::size_t f = 0; f < n; ++f) c(u[f]) = x[f];
+  }
+}
+
+void solve_v(const ATMesh& m, Pattern& pat, std::span<const P> u, double lambda, double eps,
+             std::vector<double>& v, StepSolver& s) {
+  assemble_v(m, pat, u, lambda, eps);
+  std::vector<double> b(v.size());
+  for (std::size_t q = 0; q < b.size(); ++q) b[q] = lambda / (4 * eps) * m.vertex_area[q];
+  s.solve(pat.m, b, v);
+}
+
+// With weights: every component of the face adjacency has a face of positive weight.
+void check_anchored(const ATMesh& m, std::span<const double> w) {
+  if (w.empty()) return;
+  Components c(m.face_count());
+  for (const auto& e : m.edges)
+    if (e.face[1] >= 0) c.join(e.face[0], e.face[1]);
+  std::vector<char> anchored(idx(m.face_count()), 0);
+  for (std::int64_t f = 0; f < m.face_count(); ++f)
+    if (w[idx(f)] > 0) anchored[idx(c.find(f))] = 1;
+  for (std::int64_t f = 0; f < m.face_count(); ++f)
+    if (!anchored[idx(c.find(f))])
+      bad("every face of the connected part of face " + str(f) +
+          " has weight 0 (all inpainted): nothing to fill it from");
+}
+
+} // namespace
+
+double at_mesh_energy(const ATMesh& mesh, std::span<const Point3<double>> g,
+                      std::span<const Point3<double>> u, std::span<const double> v,
+                      const ATParameters& parameters, double eps, std::span<const double> weights) {
+  check_parameters(parameters);
+  check_eps(eps);
+  check_faces(mesh, g, "g");
+  check_faces(mesh, u, "u");
+  check_vertices(mesh, v);
+  check_weights(mesh, weights);
+  return energy(mesh, g, u, v, parameters, eps, weights);
+}
+
+SparseMatrix at_mesh_u_matrix(const ATMesh& mesh, std::span<const double> v, double alpha,
+                              std::span<const double> weights) {
+  check_vertices(mesh, v);
+  check_weights(mesh, weights);
+  if (!(alpha > 0) || !std::isfinite(alpha))
+    bad("alpha must be positive, got " + std::to_string(alpha));
+  Pattern pat(mesh.face_count(), face_pairs(mesh));
+  assemble_u(mesh, pat, v, alpha, weights);
+  return std::move(pat.m);
+}
+
+SparseMatrix at_mesh_v_matrix(const ATMesh& mesh, std::span<const Point3<double>> u, double lambda,
+                              double eps) {
+  check_faces(mesh, u, "u");
+  check_eps(eps);
+  if (!(lambda > 0) || !std::isfinite(lambda))
+    bad("lambda must be positive, got " + std::to_string(lambda));
+  Pattern pat(mesh.vertex_count, vertex_pairs(mesh));
+  assemble_v(mesh, pat, u, lambda, eps);
+  return std::move(pat.m);
+}
+
+std::pair<std::vector<std::int64_t>, std::int64_t>
+at_mesh_segments(const ATMesh& mesh, std::span<const double> v, double threshold) {
+  check_vertices(mesh, v);
+  if (!(threshold >= 0 && threshold <= 1))
+    bad("the threshold must be in [0, 1], got " + std::to_string(threshold));
+  const std::int64_t nf = mesh.face_count();
+  Components c(nf);
+  for (const auto& e : mesh.edges)
+    if (e.face[1] >= 0 && std::max(v[idx(e.a)], v[idx(e.b)]) >= threshold)
+      c.join(e.face[0], e.face[1]);
+  // Roots are the smallest face of their component; sizes, then labels by decreasing size.
+  std::vector<std::int64_t> size(idx(nf), 0), root(idx(nf));
+  for (std::int64_t f = 0; f < nf; ++f) ++size[idx(root[idx(f)] = c.find(f))];
+  std::vector<std::int64_t> roots;
+  for (std::int64_t f = 0; f < nf; ++f)
+    if (root[idx(f)] == f) roots.push_back(f);
+  std::stable_sort(roots.begin(), roots.end(),
+                   [&](std::int64_t a, std::int64_t b) { return size[idx(a)] > size[idx(b)]; });
+  std::vector<std::int64_t> label(idx(nf), -1);
+  for (std::size_t k = 0; k < roots.size(); ++k)
+    label[idx(roots[k])] = static_cast<std::int64_t>(k);
+  std::vector<std::int64_t> out(idx(nf));
+  for (std::int64_t f = 0; f < nf; ++f) out[idx(f)] = label[idx(root[idx(f)])];
+  return {std::move(out), static_cast<std::int64_t>(roots.size())};
+}
+
+std::vector<double> at_face_values(const ATMesh& mesh, std::span<const double> v,
+                                   ATSurfelPolicy policy) {
+  check_vertices(mesh, v);
+  std::vector<double> out(idx(mesh.face_count()));
+  for (std::int64_t f = 0; f < mesh.face_count(); ++f) {
+    const auto face = face_of(mesh, f);
+    double r = policy == ATSurfelPolicy::minimum ? v[idx(face[0])] : 0.0;
+    for (const auto q : face)
+      r = policy == ATSurfelPolicy::minimum ? std::min(r, v[idx(q)]) : r + v[idx(q)];
+    out[idx(f)] = policy == ATSurfelPolicy::minimum ? r : r / static_cast<double>(face.size());
+  }
+  return out;
+}
+
+ATMeshResult at_mesh_normals(const ATMesh& mesh, std::span<const Point3<double>> g,
+                             const ATParameters& parameters, const ATMeshOptions& options,
+                             std::span<const double> weights) {
+  check_parameters(parameters);
+  check_options(options);
+  check_faces(mesh, g, "g");
+  check_weights(mesh, weights);
+  check_anchored(mesh, weights);
+  ATMeshResult r;
+  r.u.assign(g.begin(), g.end());
+  r.v.assign(idx(mesh.vertex_count), 1.0);
+  Pattern upat(mesh.face_count(), face_pairs(mesh));
+  Pattern vpat(mesh.vertex_count, vertex_pairs(mesh));
+  StepSolver us{options, "u", std::nullopt, 0}, vs{options, "v", std::nullopt, 0};
+  const auto energy_now = [&](double eps) {
+    return energy(mesh, g, r.u, r.v, parameters, eps, weights);
+  };
+  for (int k = 0;; ++k) {
+    const double eps = parameters.epsilon1 / std::pow(parameters.epsilon_factor, k);
+    if (eps < parameters.epsilon2 * (1 - 1e-12)) break;
+    r.steps.push_back({ATStep::Kind::start, eps, energy_now(eps), 0});
+    for (int i = 0; i < parameters.max_iterations; ++i) {
+      solve_u(mesh, upat, g, r.v, parameters.alpha, weights, r.u, us);
+      r.steps.push_back({ATStep::Kind::u, eps, energy_now(eps), 0});
+      std::vector<double> v = r.v;
+      solve_v(mesh, vpat, r.u, parameters.lambda, eps, v, vs);
+      double change = 0;
+      for (std::size_t q = 0; q < v.size(); ++q) change = std::max(change, std::abs(v[q] - r.v[q]));
+      r.v = std::move(v);
+      r.steps.push_back({ATStep::Kind::v, eps, energy_now(eps), change});
+      ++r.iterations;
+      if (change < parameters.tolerance) break;
+    }
+  }
+  r.normals.resize(r.u.size());
+  for (std::size_t f = 0; f < r.u.size(); ++f) {
+    const double n = norm(r.u[f]);
+    r.normals[f] = n > 0 ? (1 / n) * r.u[f] : g[f];
+  }
+  std::tie(r.segment, r.segments) = at_mesh_segments(mesh, r.v, options.threshold);
+  r.cg_iterations = us.iterations + vs.iterations;
+  if (options.solver == ATLinearSolver::cholesky)
+    r.solver = us.cholesky ? spd_backend_name(us.cholesky->backend()) : "cholesky";
+  else
+    r.solver = "conjugate-gradient";
+  return r;
+}
+
+} // namespace zdg
