@@ -37,7 +37,7 @@ struct Incidence {
   }
 };
 
-Incidence incidence(const PolygonMesh& mesh) {
+Incidence incidence(const PolygonMesh& mesh, unsigned threads) {
   const std::int64_t nv = mesh.vertex_count(), nf = mesh.face_count();
   Incidence in;
   in.face_start.assign(std::size_t(nv + 1), 0);
@@ -63,7 +63,7 @@ Incidence incidence(const PolygonMesh& mesh) {
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
   };
-  parallel_chunks(nv, 0, [&](std::int64_t b, std::int64_t e) {
+  parallel_chunks(nv, threads, [&](std::int64_t b, std::int64_t e) {
     std::vector<std::int64_t> row;
     for (auto i = b; i < e; ++i) {
       row_of(i, row);
@@ -74,7 +74,7 @@ Incidence incidence(const PolygonMesh& mesh) {
     in.neighbour_start[std::size_t(i + 1)] =
         in.neighbour_start[std::size_t(i)] + counts[std::size_t(i)];
   in.neighbours.resize(std::size_t(in.neighbour_start.back()));
-  parallel_chunks(nv, 0, [&](std::int64_t b, std::int64_t e) {
+  parallel_chunks(nv, threads, [&](std::int64_t b, std::int64_t e) {
     std::vector<std::int64_t> row;
     for (auto i = b; i < e; ++i) {
       row_of(i, row);
@@ -347,7 +347,7 @@ RegularizationEnergy regularization_energy(const PolygonMesh& mesh, std::span<co
   if (std::int64_t(x.size()) != mesh.vertex_count())
     throw InvalidArgument(fmt::format("surface regularization: {} positions for {} vertices",
                                       x.size(), mesh.vertex_count()));
-  const Incidence in = incidence(mesh);
+  const Incidence in = incidence(mesh, p.threads);
   RegularizationEnergy e;
   for (std::size_t i = 0; i < x.size(); ++i) {
     const Vec d = x[i] - mesh.vertices[i];
@@ -375,7 +375,7 @@ RegularizationEnergy regularization_energy(const PolygonMesh& mesh, std::span<co
 RegularizationSystem regularization_system(const PolygonMesh& mesh, std::span<const Vec> normals,
                                            const RegularizationParameters& p) {
   check_regularization_input(mesh, normals, 1.0, p);
-  const Incidence in = incidence(mesh);
+  const Incidence in = incidence(mesh, p.threads);
   for (std::int64_t i = 0; i < mesh.vertex_count(); ++i)
     if (in.degree(i) == 0)
       throw InvalidArgument(fmt::format("surface regularization: vertex {} is in no face", i));
@@ -383,8 +383,11 @@ RegularizationSystem regularization_system(const PolygonMesh& mesh, std::span<co
 }
 
 RegularizationResult regularize_surface(const PolygonMesh& mesh, std::span<const Vec> normals,
-                                        double h, const RegularizationParameters& p) {
-  check_regularization_input(mesh, normals, h, p);
+                                        double h, const RegularizationParameters& parameters) {
+  check_regularization_input(mesh, normals, h, parameters);
+  // Threads pay only on large meshes (each product starts its workers).
+  RegularizationParameters p = parameters;
+  p.threads = worker_count(p.threads, mesh.vertex_count(), 20000);
   RegularizationResult r;
   if (mesh.vertex_count() == 0) {
     r.solver = "none";
@@ -405,12 +408,29 @@ RegularizationResult regularize_surface(const PolygonMesh& mesh, std::span<const
     r.solver = solver.name();
     r.cg_iterations = solver.cg_iterations;
   } else {
+    const double half = h / 2;
+    const auto size = static_cast<std::size_t>(n);
+    std::vector<double> z(size, 0.0), u(size, 0.0), rhs(size);
+    if (direct) {
+      // The unconstrained minimizer, when it lies in the box, is the box-constrained one; else
+      // ADMM starts from its clamp.
+      ShiftedSolver free(sys.q, 0.0, true, p.max_iterations, p.threads);
+      free.solve(minus_g, d, 0);
+      if (max_abs(d) <= half) {
+        r.solver = free.name();
+        r.positions.resize(mesh.vertices.size());
+        for (std::size_t i = 0; i < r.positions.size(); ++i)
+          r.positions[i] = mesh.vertices[i] + Vec{d[3 * i], d[3 * i + 1], d[3 * i + 2]};
+        r.max_displacement = max_abs(d) / h;
+        r.before = regularization_energy(mesh, normals, mesh.vertices, p);
+        r.after = regularization_energy(mesh, normals, r.positions, p);
+        return r;
+      }
+      for (std::size_t i = 0; i < size; ++i) z[i] = std::clamp(d[i], -half, half);
+    }
     const double rho =
         p.rho > 0 ? p.rho : std::sqrt(p.alpha * (p.alpha + 4 * p.beta + 4 * p.gamma));
     ShiftedSolver solver(sys.q, rho, direct, p.max_iterations, p.threads);
-    const auto size = static_cast<std::size_t>(n);
-    std::vector<double> z(size, 0.0), u(size, 0.0), rhs(size);
-    const double half = h / 2;
     for (int it = 1;; ++it) {
       for (std::size_t i = 0; i < rhs.size(); ++i) rhs[i] = minus_g[i] + rho * (z[i] - u[i]);
       solver.solve(rhs, d, 0.1 * tol * (rho + p.alpha));
