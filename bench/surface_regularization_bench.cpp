@@ -3,8 +3,8 @@
 // vertices moved with the default energy (alpha 0.001, beta 1, gamma 0.05) and the box
 // constraint, the exact sphere normal at each surfel centre standing for the estimate (the
 // benchmark times the regularization, not the II). Argument: h in 1/100000; the last size is
-// about 10^6 surfels (radius 235 voxels: h = 0.00426). Counters: surfels, ADMM and CG
-// iterations, max displacement in h. Run with 2 threads:
+// about 10^6 surfels (radius 235 voxels: h = 0.00426). Counters: surfels, MPRGP
+// iterations, the relative KKT residual reached, max displacement in h. Run with 2 threads:
 //   build/bin/surface_regularization_bench --benchmark_counters_tabular=true
 #include <zdg/estimators/surface_regularization.hpp>
 #include <zdg/kernel/surfaces/digital_surface.hpp>
@@ -51,8 +51,8 @@ void BM_RegularizeSphere(benchmark::State& state) {
     benchmark::DoNotOptimize(r.positions.data());
   }
   state.counters["surfels"] = double(s.mesh.face_count());
-  state.counters["admm"] = r.iterations;
-  state.counters["cg"] = r.cg_iterations;
+  state.counters["iterations"] = r.iterations;
+  state.counters["kkt"] = r.kkt_residual;
   state.counters["max_disp_h"] = r.max_displacement;
   state.SetLabel(r.solver);
 }

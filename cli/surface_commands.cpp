@@ -436,7 +436,7 @@ void run_surface(const SurfaceArgs& a) {
     fmt::print("  {} mesh: {} vertices, {} faces{}{}\n", a.mesh, r.mesh->vertex_count(),
                r.mesh->face_count(), a.output.empty() ? "" : " -> ", a.output);
   if (r.regularization)
-    fmt::print("  regularized: energy {:.6g} -> {:.6g}, max displacement {:.4g} h ({} ADMM "
+    fmt::print("  regularized: energy {:.6g} -> {:.6g}, max displacement {:.4g} h ({} "
                "iterations, {})\n",
                r.regularization->before.total(), r.regularization->after.total(),
                r.regularization->max_displacement, r.regularization->iterations,

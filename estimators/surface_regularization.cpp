@@ -10,8 +10,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <limits>
 #include <numeric>
-#include <optional>
 
 namespace zdg {
 
@@ -230,79 +231,318 @@ double max_abs(std::span<const double> v) {
   return m;
 }
 
-// Jacobi-preconditioned conjugate gradient on (Q + shift I) y = b from the start y, until
-// |r|_2 <= tol. Returns the iterations; Error past max_iterations.
-int conjugate_gradient(const SparseMatrix& q, double shift, std::span<const double> b,
-                       std::vector<double>& y, double tol, int max_iterations, unsigned threads) {
-  const std::size_t n = b.size();
-  std::vector<double> inv(n);
-  for (std::size_t i = 0; i < n; ++i)
-    inv[i] = 1.0 / (q.at(std::int64_t(i), std::int64_t(i)) + shift);
-  auto apply = [&](const std::vector<double>& v) {
-    auto out = q.multiply(v, threads);
-    for (std::size_t i = 0; i < n; ++i) out[i] += shift * v[i];
-    return out;
-  };
-  auto r = apply(y);
-  for (std::size_t i = 0; i < n; ++i) r[i] = b[i] - r[i];
-  auto norm2 = [](const std::vector<double>& v) {
-    return std::inner_product(v.begin(), v.end(), v.begin(), 0.0);
-  };
-  if (std::sqrt(norm2(r)) <= tol) return 0;
-  std::vector<double> z(n), dir(n);
-  for (std::size_t i = 0; i < n; ++i) dir[i] = z[i] = inv[i] * r[i];
-  double rz = std::inner_product(r.begin(), r.end(), z.begin(), 0.0);
-  for (int it = 1; it <= max_iterations; ++it) {
-    const auto ad = apply(dir);
-    const double a = rz / std::inner_product(dir.begin(), dir.end(), ad.begin(), 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-      y[i] += a * dir[i];
-      r[i] -= a * ad[i];
-    }
-    if (std::sqrt(norm2(r)) <= tol) return it;
-    for (std::size_t i = 0; i < n; ++i) z[i] = inv[i] * r[i];
-    const double rz_new = std::inner_product(r.begin(), r.end(), z.begin(), 0.0);
-    const double beta = rz_new / rz;
-    rz = rz_new;
-    for (std::size_t i = 0; i < n; ++i) dir[i] = z[i] + beta * dir[i];
-  }
-  throw Error(fmt::format("surface regularization: conjugate gradient did not reach {:.3g} in {} "
-                          "iterations",
-                          tol, max_iterations));
+// The factorization of Q + shift I, one solve per call.
+SparseSpdSolver factor_shifted(const SparseMatrix& q, double shift) {
+  if (shift == 0) return SparseSpdSolver(q);
+  const std::vector<double> d(static_cast<std::size_t>(q.rows), shift);
+  return SparseSpdSolver(add(1.0, q, 1.0, SparseMatrix::diagonal(d)));
 }
 
-// Solves (Q + shift I) y = b: one factorization, or CG warm-started from y.
-class ShiftedSolver {
-public:
-  ShiftedSolver(const SparseMatrix& q, double shift, bool direct, int max_iterations,
-                unsigned threads)
-      : q_(q), shift_(shift), max_iterations_(max_iterations), threads_(threads) {
-    if (direct) {
-      if (shift > 0) {
-        const std::vector<double> d(static_cast<std::size_t>(q.rows), shift);
-        direct_.emplace(add(1.0, q, 1.0, SparseMatrix::diagonal(d)));
-      } else {
-        direct_.emplace(q);
+// max_k s_k sum_j |Q_kj| s_j: Gershgorin's bound on the largest eigenvalue of S Q S.
+double scaled_gershgorin(const PolygonMesh& mesh, std::span<const Vec> normals, const Incidence& in,
+                         const RegularizationParameters& p, std::span<const double> s) {
+  const std::int64_t nv = mesh.vertex_count();
+  std::vector<double> rows(static_cast<std::size_t>(nv), 0.0);
+  parallel_chunks(nv, p.threads, [&](std::int64_t b, std::int64_t e) {
+    std::vector<std::pair<std::int64_t, Block>> row;
+    for (auto i = b; i < e; ++i) {
+      block_row(mesh, normals, in, p, i, row);
+      double worst = 0;
+      for (int a = 0; a < 3; ++a) {
+        double sum = 0;
+        for (const auto& [col, blk] : row)
+          for (int c = 0; c < 3; ++c)
+            sum += std::abs(blk[std::size_t(3 * a + c)]) * s[std::size_t(3 * col + c)];
+        worst = std::max(worst, sum * s[std::size_t(3 * i + a)]);
       }
+      rows[std::size_t(i)] = worst;
     }
+  });
+  return *std::max_element(rows.begin(), rows.end());
+}
+
+// Q applied without assembling it (the minimizer's inner loop): per vertex i, its corners
+// (face f, next and previous vertex: the two sides of f at i) and its umbrella N(i):
+//   (Q x)_i = alpha x_i + beta sum_corners n_f (n_f . (2 x_i - x_next - x_prev))
+//           + gamma (L_i - sum_{m in N(i)} L_m / |N(m)|),  L = F x = x_i - mean_{N(i)} x.
+// Two gathers over the vertices (no scatter: deterministic for any thread count).
+class EnergyOperator {
+public:
+  EnergyOperator(const PolygonMesh& mesh, std::span<const Vec> normals, const Incidence& in,
+                 const RegularizationParameters& p)
+      : in_(in), normals_(normals), p_(p), nv_(mesh.vertex_count()) {
+    corner_start_.assign(std::size_t(nv_ + 1), 0);
+    for (std::int64_t i = 0; i < nv_; ++i)
+      corner_start_[std::size_t(i + 1)] =
+          corner_start_[std::size_t(i)] + std::int64_t(in.faces_of(i).size());
+    corners_.resize(std::size_t(corner_start_.back()));
+    inv_degree_.resize(std::size_t(nv_));
+    parallel_chunks(nv_, p.threads, [&](std::int64_t b, std::int64_t e) {
+      for (auto i = b; i < e; ++i) {
+        auto k = std::size_t(corner_start_[std::size_t(i)]);
+        for (auto f : in.faces_of(i)) {
+          int found = 0;
+          const auto js = sides_at(mesh, f, i, found);
+          corners_[k++] = {f, js[0], js[1]};
+        }
+        inv_degree_[std::size_t(i)] = 1.0 / double(in.degree(i));
+      }
+    });
+    lap_.resize(std::size_t(3 * nv_));
   }
-  void solve(std::span<const double> b, std::vector<double>& y, double tol) {
-    if (direct_) {
-      y = direct_->solve(b);
-      return;
-    }
-    cg_iterations += conjugate_gradient(q_, shift_, b, y, tol, max_iterations_, threads_);
+
+  std::int64_t size() const { return 3 * nv_; }
+
+  void apply(std::span<const double> x, std::span<double> y) const {
+    auto at = [](std::span<const double> v, std::int64_t i) {
+      return Vec{v[std::size_t(3 * i)], v[std::size_t(3 * i + 1)], v[std::size_t(3 * i + 2)]};
+    };
+    parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
+      for (auto i = b; i < e; ++i) {
+        Vec s{0, 0, 0};
+        for (auto j : in_.around(i)) s += at(x, j);
+        const Vec l = at(x, i) - inv_degree_[std::size_t(i)] * s;
+        lap_[std::size_t(3 * i)] = l.x;
+        lap_[std::size_t(3 * i + 1)] = l.y;
+        lap_[std::size_t(3 * i + 2)] = l.z;
+      }
+    });
+    const std::span<const double> lap(lap_);
+    parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
+      for (auto i = b; i < e; ++i) {
+        const Vec xi = at(x, i);
+        Vec align{0, 0, 0};
+        for (auto c = corner_start_[std::size_t(i)]; c < corner_start_[std::size_t(i + 1)]; ++c) {
+          const auto& k = corners_[std::size_t(c)];
+          const Vec n = normals_[std::size_t(k.face)];
+          align += dot(n, 2.0 * xi - at(x, k.next) - at(x, k.prev)) * n;
+        }
+        Vec fair = at(lap, i);
+        for (auto m : in_.around(i)) fair -= inv_degree_[std::size_t(m)] * at(lap, m);
+        const Vec out = p_.alpha * xi + p_.beta * align + p_.gamma * fair;
+        y[std::size_t(3 * i)] = out.x;
+        y[std::size_t(3 * i + 1)] = out.y;
+        y[std::size_t(3 * i + 2)] = out.z;
+      }
+    });
   }
-  std::string name() const { return direct_ ? spd_backend_name(direct_->backend()) : "cg"; }
-  int cg_iterations = 0;
+
+  /// The diagonal of Q: alpha + 2 beta sum_corners n_a^2 + gamma (1 + sum_{m in N(i)}
+  /// 1/|N(m)|^2).
+  std::vector<double> diagonal() const {
+    std::vector<double> d(std::size_t(3 * nv_));
+    parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
+      for (auto i = b; i < e; ++i) {
+        double fair = 1;
+        for (auto m : in_.around(i))
+          fair += inv_degree_[std::size_t(m)] * inv_degree_[std::size_t(m)];
+        Vec nn{0, 0, 0};
+        for (auto c = corner_start_[std::size_t(i)]; c < corner_start_[std::size_t(i + 1)]; ++c) {
+          const Vec n = normals_[std::size_t(corners_[std::size_t(c)].face)];
+          nn += Vec{n.x * n.x, n.y * n.y, n.z * n.z};
+        }
+        d[std::size_t(3 * i)] = p_.alpha + 2 * p_.beta * nn.x + p_.gamma * fair;
+        d[std::size_t(3 * i + 1)] = p_.alpha + 2 * p_.beta * nn.y + p_.gamma * fair;
+        d[std::size_t(3 * i + 2)] = p_.alpha + 2 * p_.beta * nn.z + p_.gamma * fair;
+      }
+    });
+    return d;
+  }
 
 private:
-  const SparseMatrix& q_;
-  double shift_;
-  int max_iterations_;
-  unsigned threads_;
-  std::optional<SparseSpdSolver> direct_;
+  struct Corner {
+    std::int64_t face, next, prev;
+  };
+  const Incidence& in_;
+  std::span<const Vec> normals_;
+  const RegularizationParameters& p_;
+  std::int64_t nv_;
+  std::vector<std::int64_t> corner_start_;
+  std::vector<Corner> corners_;
+  std::vector<double> inv_degree_;
+  mutable std::vector<double> lap_;
 };
+
+// Sums over [0, n) in fixed blocks, the blocks' partial sums added in order: the same rounding
+// for any thread count. fn(b, e) returns the partial sums of [b, e) as an array of K doubles.
+template <std::size_t K, class Fn>
+std::array<double, K> block_sums(std::int64_t n, unsigned threads, Fn&& fn) {
+  constexpr std::int64_t block = 8192;
+  const std::int64_t blocks = (n + block - 1) / block;
+  std::vector<std::array<double, K>> part(static_cast<std::size_t>(blocks));
+  parallel_chunks(blocks, threads, [&](std::int64_t b, std::int64_t e) {
+    for (auto k = b; k < e; ++k) part[std::size_t(k)] = fn(k * block, std::min(n, (k + 1) * block));
+  });
+  std::array<double, K> out{};
+  for (const auto& s : part)
+    for (std::size_t k = 0; k < K; ++k) out[k] += s[k];
+  return out;
+}
+
+// MPRGP (Dostal, Schoberl, Comput. Optim. Appl. 30, 2005; Dostal, "Optimal quadratic
+// programming algorithms", Springer 2009, ch. 8): min f(y) = y^T A y / 2 - b^T y over the box
+// |y_k| <= u_k (u_k may be infinite). Conjugate gradient steps on the free set while they stay
+// feasible and the chopped gradient is small against the free one (Gamma = 1), expansion steps
+// (the feasible CG step, then a projected gradient step of fixed length abar <= 2 / |A|) when CG
+// would leave the box, proportioning steps (along the chopped gradient) to release constraints.
+// Stops when the projected gradient g^P (the free gradient plus the chopped one, zero exactly
+// at the KKT point) has |g^P|_2 <= eps, checked again on the gradient recomputed from y (the
+// recurrence's rounding does not decide). Without bounds it is the conjugate gradient method.
+struct MprgpOutcome {
+  int iterations = 0;
+  bool converged = false;
+  double residual = 0; // |g^P(y)|_2 at the end (recomputed)
+};
+
+MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<double>)>& apply,
+                   std::span<const double> b, std::span<const double> u, double abar, double eps,
+                   int max_iterations, unsigned threads, std::vector<double>& y) {
+  const auto n = std::int64_t(b.size());
+  const auto N = std::size_t(n);
+  std::vector<double> g(N), p(N), ap(N);
+  auto gradient = [&] {
+    apply(y, g);
+    parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+      for (auto k = lo; k < hi; ++k) g[std::size_t(k)] -= b[std::size_t(k)];
+    });
+  };
+  auto is_free = [&](std::size_t k) { return std::abs(y[k]) < u[k]; };
+  // chopped gradient: at the lower bound min(g, 0), at the upper max(g, 0)
+  auto chopped = [&](std::size_t k) {
+    if (is_free(k)) return 0.0;
+    return y[k] < 0 ? std::min(g[k], 0.0) : std::max(g[k], 0.0);
+  };
+  auto free_part = [&](std::size_t k) { return is_free(k) ? g[k] : 0.0; };
+  // p = phi(y)
+  auto restart = [&] {
+    parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+      for (auto k = lo; k < hi; ++k) p[std::size_t(k)] = free_part(std::size_t(k));
+    });
+  };
+  // the largest step along -v that stays in the box
+  auto feasible_step = [&](const std::vector<double>& v) {
+    double a = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < N; ++k) {
+      if (v[k] > 0)
+        a = std::min(a, (y[k] + u[k]) / v[k]);
+      else if (v[k] < 0)
+        a = std::min(a, (y[k] - u[k]) / v[k]);
+    }
+    return std::max(a, 0.0);
+  };
+  auto clamp_y = [&](std::size_t k) { y[k] = std::clamp(y[k], -u[k], u[k]); };
+  gradient();
+  restart();
+  MprgpOutcome out;
+  bool recomputed = true;
+  for (;;) {
+    // |beta|^2, phi~^T phi, |phi|^2
+    const auto sums = block_sums<3>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+      std::array<double, 3> s{};
+      for (auto k = lo; k < hi; ++k) {
+        const auto i = std::size_t(k);
+        const double be = chopped(i), ph = free_part(i);
+        double reduced = 0;
+        if (ph > 0)
+          reduced = std::min((y[i] + u[i]) / abar, ph);
+        else if (ph < 0)
+          reduced = std::max((y[i] - u[i]) / abar, ph);
+        s[0] += be * be;
+        s[1] += reduced * ph;
+        s[2] += ph * ph;
+      }
+      return s;
+    });
+    out.residual = std::sqrt(sums[0] + sums[2]);
+    if (out.residual <= eps) {
+      if (recomputed) {
+        out.converged = true;
+        return out;
+      }
+      gradient(); // the recurrence said so: check on the true gradient
+      restart();
+      recomputed = true;
+      continue;
+    }
+    if (out.iterations >= max_iterations) return out;
+    ++out.iterations;
+    recomputed = false;
+    if (sums[0] <= sums[1]) {
+      apply(p, ap);
+      const auto pa = block_sums<2>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+        std::array<double, 2> s{};
+        for (auto k = lo; k < hi; ++k) {
+          s[0] += p[std::size_t(k)] * ap[std::size_t(k)];
+          s[1] += g[std::size_t(k)] * p[std::size_t(k)];
+        }
+        return s;
+      });
+      if (!(pa[0] > 0)) { // p = 0 up to rounding: restart from the true gradient
+        gradient();
+        restart();
+        recomputed = true;
+        continue;
+      }
+      const double acg = pa[1] / pa[0], af = feasible_step(p);
+      if (acg <= af) { // conjugate gradient step
+        const auto s = block_sums<1>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+          std::array<double, 1> t{};
+          for (auto k = lo; k < hi; ++k) {
+            const auto i = std::size_t(k);
+            y[i] -= acg * p[i];
+            clamp_y(i);
+            g[i] -= acg * ap[i];
+            t[0] += free_part(i) * ap[i];
+          }
+          return t;
+        });
+        const double gamma = s[0] / pa[0];
+        parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+          for (auto k = lo; k < hi; ++k)
+            p[std::size_t(k)] = free_part(std::size_t(k)) - gamma * p[std::size_t(k)];
+        });
+      } else { // expansion step
+        parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+          for (auto k = lo; k < hi; ++k) {
+            const auto i = std::size_t(k);
+            y[i] -= af * p[i];
+            clamp_y(i);
+            g[i] -= af * ap[i];
+            y[i] -= abar * free_part(i);
+            clamp_y(i);
+          }
+        });
+        gradient();
+        restart();
+        recomputed = true;
+      }
+    } else { // proportioning step along the chopped gradient (into the box)
+      std::vector<double>& d = p;
+      parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+        for (auto k = lo; k < hi; ++k) d[std::size_t(k)] = chopped(std::size_t(k));
+      });
+      apply(d, ap);
+      const auto da = block_sums<2>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+        std::array<double, 2> s{};
+        for (auto k = lo; k < hi; ++k) {
+          s[0] += d[std::size_t(k)] * ap[std::size_t(k)];
+          s[1] += g[std::size_t(k)] * d[std::size_t(k)];
+        }
+        return s;
+      });
+      const double a = std::min(da[1] / da[0], feasible_step(d));
+      parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+        for (auto k = lo; k < hi; ++k) {
+          const auto i = std::size_t(k);
+          y[i] -= a * d[i];
+          clamp_y(i);
+          g[i] -= a * ap[i];
+        }
+      });
+      restart();
+    }
+  }
+}
 
 void check_parameter(double v, const char* name) {
   if (!(v > 0) || !std::isfinite(v))
@@ -382,10 +622,100 @@ RegularizationSystem regularization_system(const PolygonMesh& mesh, std::span<co
   return {assemble_q(mesh, normals, in, p), assemble_g(mesh, normals, in, p)};
 }
 
+namespace {
+
+// The direct path: Q factored; the unconstrained minimizer, kept when it lies in the box, else
+// ADMM from its clamp with Q + rho I factored once.
+std::vector<double> regularize_direct(const PolygonMesh& mesh, std::span<const Vec> normals,
+                                      double h, const RegularizationParameters& p,
+                                      RegularizationResult& r) {
+  const RegularizationSystem sys = regularization_system(mesh, normals, p);
+  std::vector<double> minus_g(sys.g.size());
+  for (std::size_t i = 0; i < sys.g.size(); ++i) minus_g[i] = -sys.g[i];
+  const SparseSpdSolver free = factor_shifted(sys.q, 0.0);
+  r.solver = spd_backend_name(free.backend());
+  std::vector<double> d = free.solve(minus_g);
+  const double half = h / 2;
+  if (!p.clamp || max_abs(d) <= half) return d;
+  const auto size = d.size();
+  std::vector<double> z(size), u(size, 0.0), rhs(size);
+  for (std::size_t i = 0; i < size; ++i) z[i] = std::clamp(d[i], -half, half);
+  const double rho = p.rho > 0 ? p.rho : std::sqrt(p.alpha * (p.alpha + 4 * p.beta + 4 * p.gamma));
+  const SparseSpdSolver shifted = factor_shifted(sys.q, rho);
+  const double tol = p.tolerance * h;
+  for (int it = 1;; ++it) {
+    for (std::size_t i = 0; i < size; ++i) rhs[i] = minus_g[i] + rho * (z[i] - u[i]);
+    d = shifted.solve(rhs);
+    double primal = 0, change = 0;
+    for (std::size_t i = 0; i < size; ++i) {
+      const double zi = std::clamp(d[i] + u[i], -half, half);
+      change = std::max(change, std::abs(zi - z[i]));
+      z[i] = zi;
+      u[i] += d[i] - zi;
+      primal = std::max(primal, std::abs(d[i] - zi));
+    }
+    r.iterations = it;
+    r.converged = primal <= tol && change <= tol;
+    if (r.converged || it >= p.max_iterations) break;
+  }
+  return z;
+}
+
+// The iterative path: MPRGP on the Jacobi-scaled problem y = D^{1/2} d (D = diag Q), min
+// y^T A y / 2 + (S g)^T y with A = S Q S, S = D^{-1/2}, over |y_k| <= (h/2) / S_k.
+std::vector<double> regularize_iterative(const PolygonMesh& mesh, std::span<const Vec> normals,
+                                         double h, const RegularizationParameters& p,
+                                         RegularizationResult& r) {
+  const Incidence in = incidence(mesh, p.threads);
+  for (std::int64_t i = 0; i < mesh.vertex_count(); ++i)
+    if (in.degree(i) == 0)
+      throw InvalidArgument(fmt::format("surface regularization: vertex {} is in no face", i));
+  const std::vector<double> g = assemble_g(mesh, normals, in, p);
+  const EnergyOperator op(mesh, normals, in, p);
+  std::vector<double> s = op.diagonal();
+  for (double& v : s) v = 1 / std::sqrt(v);
+  const auto n = std::int64_t(s.size());
+  const auto N = s.size();
+  const double half = h / 2;
+  std::vector<double> b(N), u(N), tmp(N);
+  for (std::size_t k = 0; k < N; ++k) {
+    b[k] = -s[k] * g[k];
+    u[k] = p.clamp ? half / s[k] : std::numeric_limits<double>::infinity();
+  }
+  auto apply = [&](std::span<const double> y, std::span<double> out) {
+    parallel_chunks(n, p.threads, [&](std::int64_t lo, std::int64_t hi) {
+      for (auto k = lo; k < hi; ++k) tmp[std::size_t(k)] = s[std::size_t(k)] * y[std::size_t(k)];
+    });
+    op.apply(tmp, out);
+    parallel_chunks(n, p.threads, [&](std::int64_t lo, std::int64_t hi) {
+      for (auto k = lo; k < hi; ++k) out[std::size_t(k)] *= s[std::size_t(k)];
+    });
+  };
+  const double abar = 1.9 / scaled_gershgorin(mesh, normals, in, p, s);
+  const double b_norm = std::sqrt(std::inner_product(b.begin(), b.end(), b.begin(), 0.0));
+  std::vector<double> y(N, 0.0);
+  const MprgpOutcome out =
+      mprgp(apply, b, u, abar, p.tolerance * b_norm, p.max_iterations, p.threads, y);
+  r.solver = "mprgp";
+  r.iterations = out.iterations;
+  r.converged = out.converged;
+  r.kkt_residual = b_norm > 0 ? out.residual / b_norm : 0.0;
+  if (!p.clamp && !out.converged)
+    throw Error(fmt::format("surface regularization: the conjugate gradient did not reach the "
+                            "relative residual {:.3g} in {} iterations",
+                            p.tolerance, p.max_iterations));
+  std::vector<double> d(N);
+  for (std::size_t k = 0; k < N; ++k)
+    d[k] = p.clamp ? std::clamp(s[k] * y[k], -half, half) : s[k] * y[k];
+  return d;
+}
+
+} // namespace
+
 RegularizationResult regularize_surface(const PolygonMesh& mesh, std::span<const Vec> normals,
                                         double h, const RegularizationParameters& parameters) {
   check_regularization_input(mesh, normals, h, parameters);
-  // Threads pay only on large meshes (each product starts its workers).
+  // Threads pay only on large meshes (each parallel loop starts its workers).
   RegularizationParameters p = parameters;
   p.threads = worker_count(p.threads, mesh.vertex_count(), 20000);
   RegularizationResult r;
@@ -393,63 +723,11 @@ RegularizationResult regularize_surface(const PolygonMesh& mesh, std::span<const
     r.solver = "none";
     return r;
   }
-  const RegularizationSystem sys = regularization_system(mesh, normals, p);
-  const std::int64_t n = sys.q.rows;
-  const bool direct = p.solver == RegularizationSolver::direct ||
-                      (p.solver == RegularizationSolver::automatic && mesh.vertex_count() <= 30000);
-  std::vector<double> minus_g(sys.g.size());
-  for (std::size_t i = 0; i < sys.g.size(); ++i) minus_g[i] = -sys.g[i];
-  std::vector<double> d(static_cast<std::size_t>(n), 0.0);
-  const double tol = p.tolerance * h;
-  if (!p.clamp) {
-    ShiftedSolver solver(sys.q, 0.0, direct, p.max_iterations, p.threads);
-    // |d - d*|_2 <= |r|_2 / alpha.
-    solver.solve(minus_g, d, tol * p.alpha);
-    r.solver = solver.name();
-    r.cg_iterations = solver.cg_iterations;
-  } else {
-    const double half = h / 2;
-    const auto size = static_cast<std::size_t>(n);
-    std::vector<double> z(size, 0.0), u(size, 0.0), rhs(size);
-    if (direct) {
-      // The unconstrained minimizer, when it lies in the box, is the box-constrained one; else
-      // ADMM starts from its clamp.
-      ShiftedSolver free(sys.q, 0.0, true, p.max_iterations, p.threads);
-      free.solve(minus_g, d, 0);
-      if (max_abs(d) <= half) {
-        r.solver = free.name();
-        r.positions.resize(mesh.vertices.size());
-        for (std::size_t i = 0; i < r.positions.size(); ++i)
-          r.positions[i] = mesh.vertices[i] + Vec{d[3 * i], d[3 * i + 1], d[3 * i + 2]};
-        r.max_displacement = max_abs(d) / h;
-        r.before = regularization_energy(mesh, normals, mesh.vertices, p);
-        r.after = regularization_energy(mesh, normals, r.positions, p);
-        return r;
-      }
-      for (std::size_t i = 0; i < size; ++i) z[i] = std::clamp(d[i], -half, half);
-    }
-    const double rho =
-        p.rho > 0 ? p.rho : std::sqrt(p.alpha * (p.alpha + 4 * p.beta + 4 * p.gamma));
-    ShiftedSolver solver(sys.q, rho, direct, p.max_iterations, p.threads);
-    for (int it = 1;; ++it) {
-      for (std::size_t i = 0; i < rhs.size(); ++i) rhs[i] = minus_g[i] + rho * (z[i] - u[i]);
-      solver.solve(rhs, d, 0.1 * tol * (rho + p.alpha));
-      double primal = 0, change = 0;
-      for (std::size_t i = 0; i < z.size(); ++i) {
-        const double zi = std::clamp(d[i] + u[i], -half, half);
-        change = std::max(change, std::abs(zi - z[i]));
-        z[i] = zi;
-        u[i] += d[i] - zi;
-        primal = std::max(primal, std::abs(d[i] - zi));
-      }
-      r.iterations = it;
-      r.converged = primal <= tol && change <= tol;
-      if (r.converged || it >= p.max_iterations) break;
-    }
-    d = std::move(z);
-    r.solver = solver.name();
-    r.cg_iterations = solver.cg_iterations;
-  }
+  const bool direct =
+      p.solver == RegularizationSolver::direct ||
+      (p.solver == RegularizationSolver::automatic && !p.clamp && mesh.vertex_count() <= 30000);
+  const std::vector<double> d = direct ? regularize_direct(mesh, normals, h, p, r)
+                                       : regularize_iterative(mesh, normals, h, p, r);
   r.positions.resize(mesh.vertices.size());
   for (std::size_t i = 0; i < r.positions.size(); ++i)
     r.positions[i] = mesh.vertices[i] + Vec{d[3 * i], d[3 * i + 1], d[3 * i + 2]};

@@ -16,23 +16,39 @@
 //
 // Guarantee (the paper's clamped variant): with `clamp` (default) the result minimizes E over
 // the box |x_i - p_i|_inf <= h/2 (the cube of side h centred at each pointel), so the
-// regularized surface stays within the Hausdorff bound of the digitization; every vertex lies
-// in its cube (up to one rounding of p_i + d_i). The box-constrained minimum is found by ADMM
-// (Boyd et al., Found. Trends ML 3(1), 2011) on the split d = z, z in the box: (Q + rho I) d =
-// -g + rho (z - u), z = clamp(d + u), u += d - z, until max |d - z| and rho max |z - z_prev|
-// are below tolerance h (or max_iterations); the result is z (in the box by construction). Without
-// `clamp`, the unconstrained minimizer Q d = -g.
+// regularized surface stays within the Hausdorff bound of the digitization; every displacement
+// d_i is clamped to [-h/2, h/2]^3 at the end, so every vertex lies in its cube exactly (up to one
+// rounding of p_i + d_i), whatever the solver's accuracy. Without `clamp`, the unconstrained
+// minimizer Q d = -g.
 //
-// Linear solves: `direct` factors once with kernel/linalg/sparse_spd_solver.hpp (exact, about
-// n^{3/2} flops for n = 3V); `conjugate_gradient` runs Jacobi-preconditioned CG on the CSR
-// matrix (O(nnz) per iteration, warm-started across ADMM iterations); `automatic` takes the
-// direct solver up to 30,000 vertices. Assembly O(F) (nnz(Q) about 39 per row: the 2-ring).
-// Widths: int64 indices (the direct solver needs 3V < 2^31), doubles.
+// Solvers. `conjugate_gradient` (and `automatic` with clamp, or past 30,000 vertices): MPRGP
+// (Dostal, Schoberl, Comput. Optim. Appl. 30(1), 2005: conjugate gradient steps on the free
+// coordinates, expansion steps by a projected gradient step of length 1.9 / (Gershgorin bound),
+// proportioning steps releasing constraints) on the Jacobi-scaled problem y = D^{1/2} d, D =
+// diag Q (a box stays a box), with Q applied without assembly (two gathers over the vertices,
+// O(F) per product: about 40 flops per corner); without clamp it is Jacobi-preconditioned CG.
+// Stopping criterion (stated, and checked on the gradient recomputed from the result): the
+// scaled projected gradient -- the KKT residual, D^{-1/2} times the gradient on the free
+// coordinates plus its component pointing out of the box on the clamped ones, zero exactly at
+// the constrained minimizer -- has 2-norm <= tolerance times its value at d = 0 (|D^{-1/2} g|_2);
+// `kkt_residual` reports the ratio reached. The iterations grow like the square root of the
+// condition number of D^{-1/2} Q D^{-1/2} times log(1 / tolerance), plus the active set's
+// changes; that condition number does not grow with the mesh: Q's smallest eigenvalue is alpha
+// (the translations), its largest is bounded by the vertex degrees and the weights.
+// `direct` (and `automatic` without clamp up to 30,000 vertices): Q factored once with
+// kernel/linalg/sparse_spd_solver.hpp (about n^{3/2} flops for n = 3V); the unconstrained
+// minimizer, which is the answer when it lies in the box; else ADMM (Boyd et al., Found. Trends
+// ML 3(1), 2011) from its clamp, with Q + rho I factored once: (Q + rho I) d = -g + rho (z - u),
+// z = clamp(d + u), u += d - z, until max |d - z| and max |z - z_prev| are below tolerance h
+// (or max_iterations); the result is z. Assembly of Q (direct, and the Gershgorin bound) O(F),
+// nnz(Q) about 39 per row (the 2-ring). Widths: int64 indices (the direct solver needs 3V <
+// 2^31), doubles; sums in fixed blocks, so results do not depend on the thread count.
 //
 // Input requirements (InvalidArgument, one line, naming the value): a quad mesh (face_size 4;
 // marching cubes' triangles are refused), one finite unit normal per face (|n| within 1e-6 of
 // 1), h > 0, alpha, beta, gamma > 0 and finite, tolerance > 0. Error when CG does not converge
-// within max_iterations.
+// within max_iterations without clamp (with clamp:
+// converged = false, the result still in the box).
 #pragma once
 
 #include <zdg/arith/point.hpp>
@@ -50,8 +66,8 @@ enum class RegularizationSolver { automatic, direct, conjugate_gradient };
 struct RegularizationParameters {
   double alpha = 0.001, beta = 1, gamma = 0.05;
   bool clamp = true;       ///< the guarantee: each vertex within the cube of side h
-  double tolerance = 1e-6; ///< ADMM and CG stopping threshold, relative to h
-  double rho = 0;          ///< ADMM penalty; 0: sqrt(alpha (alpha + 4 beta + 4 gamma))
+  double tolerance = 1e-6; ///< MPRGP: relative KKT residual; ADMM: relative to h
+  double rho = 0;          ///< direct ADMM penalty; 0: sqrt(alpha (alpha + 4 beta + 4 gamma))
   int max_iterations = 20000;
   RegularizationSolver solver = RegularizationSolver::automatic;
   unsigned threads = 0; ///< for the products (0: all cores)
@@ -67,10 +83,10 @@ struct RegularizationResult {
   std::vector<Point3<double>> positions; ///< one per vertex of the input mesh
   RegularizationEnergy before, after;    ///< at the pointels, at the result
   double max_displacement = 0;           ///< max_i |x_i - p_i|_inf / h
-  int iterations = 0;                    ///< ADMM iterations (0 without clamp)
-  bool converged = true; ///< false: ADMM stopped at max_iterations (the result is in the box)
-  int cg_iterations = 0; ///< total CG iterations (0 with the direct solver)
-  std::string solver;    ///< "cholmod", "eigen-simplicial-ldlt" or "cg"
+  int iterations = 0;                    ///< MPRGP or ADMM iterations (0: direct, unclamped)
+  bool converged = true;   ///< false: stopped at max_iterations (the result is in the box)
+  double kkt_residual = 0; ///< MPRGP: the relative scaled KKT residual reached (direct: 0)
+  std::string solver;      ///< "cholmod", "eigen-simplicial-ldlt" or "mprgp"
 };
 
 /// Checks the mesh, normals, h and parameters (the requirements above).

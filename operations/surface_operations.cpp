@@ -673,6 +673,7 @@ nlohmann::json to_json(const SurfaceResult& r) {
                            {"max_displacement_h", g.max_displacement},
                            {"iterations", g.iterations},
                            {"converged", g.converged},
+                           {"kkt_residual", g.kkt_residual},
                            {"solver", g.solver}};
   }
   return j;

@@ -116,6 +116,36 @@ std::vector<double> gradient(const zdg::RegularizationSystem& s, const PolygonMe
   return q;
 }
 
+// The KKT residual of min E over the cubes at x, the gradient scaled by D^{-1/2} (D = diag Q):
+// per coordinate, the gradient on the free ones, its part pointing out of the box on the
+// clamped ones (zero exactly at the constrained minimizer). Returns |.|_2 relative to the same at
+// the pointels (where every coordinate is free), and counts the clamped coordinates.
+double relative_kkt_residual(const zdg::RegularizationSystem& s, const PolygonMesh& m,
+                             const std::vector<Vec>& x, double h, int* clamped = nullptr) {
+  const auto grad = gradient(s, m, x);
+  double num = 0, den = 0;
+  int count = 0;
+  for (std::size_t k = 0; k < grad.size(); ++k) {
+    const Vec e = x[k / 3] - m.vertices[k / 3];
+    const double dk = k % 3 == 0 ? e.x : (k % 3 == 1 ? e.y : e.z);
+    const double scale = 1 / std::sqrt(s.q.at(std::int64_t(k), std::int64_t(k)));
+    const double slack = 1e-12 * (1 + std::abs(m.vertices[k / 3].x) +
+                                  std::abs(m.vertices[k / 3].y) + std::abs(m.vertices[k / 3].z));
+    double r = grad[k];
+    if (dk >= h / 2 - slack) {
+      ++count;
+      r = std::min(r, 0.0); // E must decrease outward: the gradient <= 0 there
+    } else if (dk <= -h / 2 + slack) {
+      ++count;
+      r = std::max(r, 0.0);
+    }
+    num += scale * scale * r * r;
+    den += scale * scale * 4 * s.g[k] * s.g[k];
+  }
+  if (clamped) *clamped = count;
+  return den > 0 ? std::sqrt(num / den) : std::sqrt(num);
+}
+
 // The guarantee: on random digital objects with normals tilted from the elementary ones, random
 // parameters and grid step, every regularized vertex lies in the cube of side h centred at its
 // pointel, and the energy does not exceed that of the pointels.
@@ -143,6 +173,34 @@ TEST(SurfaceRegularization, EveryVertexStaysInItsCube) {
     }
     RC_ASSERT(r.max_displacement <= 0.5);
     RC_ASSERT(r.after.total() <= r.before.total() * (1 + 1e-9));
+  });
+}
+
+// MPRGP's stopping criterion, checked against the assembled system (an oracle independent of
+// the matrix-free product the solver uses): at the result, the scaled KKT residual of the
+// box-constrained problem is at most `tolerance` times its value at the pointels, and the result
+// reports the ratio it reached.
+TEST(SurfaceRegularization, MprgpStopsAtTheStatedKktResidual) {
+  zdg::test::check_property([] {
+    const auto v = *zdg::test::small_volume(4);
+    const double h = *rc::gen::element(1.0, 0.5, 0.1);
+    const auto s = primal(zdg::test::to_image(v), h);
+    RC_PRE(s.mesh.face_count() > 0);
+    RegularizationParameters p;
+    p.alpha = *rc::gen::element(1e-4, 1e-3, 0.1);
+    p.gamma = *rc::gen::element(0.01, 0.05, 1.0);
+    p.tolerance = *rc::gen::element(1e-4, 1e-6, 1e-9);
+    p.clamp = *rc::gen::arbitrary<bool>();
+    p.solver = zdg::RegularizationSolver::conjugate_gradient;
+    const auto normals = tilted(s.elementary, 1.0, *rc::gen::inRange(0u, 1000u));
+    const auto r = zdg::regularize_surface(s.mesh, normals, h, p);
+    RC_ASSERT(r.converged);
+    RC_ASSERT(r.solver == "mprgp");
+    RC_ASSERT(r.kkt_residual <= p.tolerance);
+    const auto sys = zdg::regularization_system(s.mesh, normals, p);
+    const double kkt = relative_kkt_residual(sys, s.mesh, r.positions, p.clamp ? h : 1e300);
+    // The positions are p + d rounded: a few units of 1e-16 |p| |Q| on top of the criterion.
+    RC_ASSERT(kkt <= p.tolerance * 1.01 + 1e-11);
   });
 }
 
@@ -198,19 +256,21 @@ TEST(SurfaceRegularization, UnclampedResultIsTheMinimizer) {
   }
   EXPECT_LT(r.after.total(), r.before.total());
   p.solver = zdg::RegularizationSolver::conjugate_gradient;
+  p.tolerance = 1e-12;
   const auto c = zdg::regularize_surface(s.mesh, normals, h, p);
   double diff = 0;
   for (std::size_t i = 0; i < c.positions.size(); ++i) {
     const Vec e = c.positions[i] - r.positions[i];
     diff = std::max({diff, std::abs(e.x), std::abs(e.y), std::abs(e.z)});
   }
-  EXPECT_LT(diff, 1e-5 * h);
-  EXPECT_EQ(c.solver, "cg");
+  EXPECT_LT(diff, 1e-8 * h);
+  EXPECT_EQ(c.solver, "mprgp");
 }
 
 // With the box: the KKT conditions of min E over the cubes (the gradient is zero on the free
-// coordinates and points out of the box on the clamped ones), up to the stopping tolerance;
-// CG and the direct solver agree. The normals are tilted hard so that some vertices clamp.
+// coordinates and points out of the box on the clamped ones), up to the stopping tolerance, for
+// ADMM with the factorization and for MPRGP; the two agree. The normals are tilted hard so that
+// some vertices clamp.
 TEST(SurfaceRegularization, ClampedResultIsTheBoxConstrainedMinimizer) {
   const double h = 1;
   const auto s = primal(ball(4.5), h);
@@ -221,26 +281,17 @@ TEST(SurfaceRegularization, ClampedResultIsTheBoxConstrainedMinimizer) {
   const auto r = zdg::regularize_surface(s.mesh, normals, h, p);
   ASSERT_TRUE(r.converged);
   const auto sys = zdg::regularization_system(s.mesh, normals, p);
-  const auto grad = gradient(sys, s.mesh, r.positions);
   int clamped = 0;
-  double worst = 0;
-  for (std::size_t k = 0; k < grad.size(); ++k) {
-    const Vec e = r.positions[k / 3] - s.mesh.vertices[k / 3];
-    const double dk = k % 3 == 0 ? e.x : (k % 3 == 1 ? e.y : e.z);
-    if (dk >= h / 2 - 1e-9) {
-      ++clamped;
-      worst = std::max(worst, grad[k]); // must be <= 0: E decreases outward
-    } else if (dk <= -h / 2 + 1e-9) {
-      ++clamped;
-      worst = std::max(worst, -grad[k]);
-    } else {
-      worst = std::max(worst, std::abs(grad[k]));
-    }
-  }
+  EXPECT_LT(relative_kkt_residual(sys, s.mesh, r.positions, h, &clamped), 1e-5);
   EXPECT_GT(clamped, 0);
-  EXPECT_LT(worst, 1e-5);
   p.solver = zdg::RegularizationSolver::conjugate_gradient;
+  p.tolerance = 1e-12;
   const auto c = zdg::regularize_surface(s.mesh, normals, h, p);
+  ASSERT_TRUE(c.converged);
+  EXPECT_EQ(c.solver, "mprgp");
+  int clamped_c = 0;
+  EXPECT_LT(relative_kkt_residual(sys, s.mesh, c.positions, h, &clamped_c), 1e-11);
+  EXPECT_GT(clamped_c, 0);
   double diff = 0;
   for (std::size_t i = 0; i < c.positions.size(); ++i) {
     const Vec e = c.positions[i] - r.positions[i];
