@@ -557,6 +557,8 @@ TEST(SurfaceCommand, RegularizeMovesVerticesWithinTheirCubes) {
   EXPECT_NEAR(g["max_displacement_h"].get<double>(), moved / 0.5, 1e-4);
   EXPECT_LE(g["max_displacement_h"].get<double>(), 0.5);
   EXPECT_TRUE(g["converged"].get<bool>());
+  EXPECT_LE(g["kkt_residual"].get<double>(), 1e-6); // the default tolerance
+  EXPECT_EQ(g["solver"].get<std::string>(), "mprgp");
 }
 
 } // namespace
