@@ -31,10 +31,11 @@
 // scaled projected gradient -- the KKT residual, D^{-1/2} times the gradient on the free
 // coordinates plus its component pointing out of the box on the clamped ones, zero exactly at
 // the constrained minimizer -- has 2-norm <= tolerance times its value at d = 0 (|D^{-1/2} g|_2);
-// `kkt_residual` reports the ratio reached. The iterations grow like the square root of the
-// condition number of D^{-1/2} Q D^{-1/2} times log(1 / tolerance), plus the active set's
-// changes; that condition number does not grow with the mesh: Q's smallest eigenvalue is alpha
-// (the translations), its largest is bounded by the vertex degrees and the weights.
+// `kkt_residual` reports the ratio reached. The iterations are bounded by the square root of
+// the condition number of D^{-1/2} Q D^{-1/2} times log(1 / tolerance), plus the active set's
+// changes; that condition number does not grow with the mesh (Q's smallest eigenvalue is alpha,
+// the translations; its largest is bounded by the vertex degrees and the weights), but the count
+// below the bound does, as finer meshes have more low-frequency modes near alpha.
 // `direct` (and `automatic` without clamp up to 30,000 vertices): Q factored once with
 // kernel/linalg/sparse_spd_solver.hpp (about n^{3/2} flops for n = 3V); the unconstrained
 // minimizer, which is the answer when it lies in the box; else ADMM (Boyd et al., Found. Trends
