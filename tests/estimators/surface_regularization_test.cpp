@@ -134,10 +134,10 @@ double relative_kkt_residual(const zdg::RegularizationSystem& s, const PolygonMe
     double r = grad[k];
     if (dk >= h / 2 - slack) {
       ++count;
-      r = std::min(r, 0.0); // E must decrease outward: the gradient <= 0 there
+      r = std::max(r, 0.0); // E must decrease outward: a positive gradient violates KKT
     } else if (dk <= -h / 2 + slack) {
       ++count;
-      r = std::max(r, 0.0);
+      r = std::min(r, 0.0);
     }
     num += scale * scale * r * r;
     den += scale * scale * 4 * s.g[k] * s.g[k];
