@@ -532,9 +532,8 @@ TEST(SurfaceCommand, BadInputIsOneLineExitTwoNothingWritten) {
 // amount; the JSON reports a lower energy and the displacement in units of h.
 TEST(SurfaceCommand, RegularizeMovesVerticesWithinTheirCubes) {
   Files f;
-  save_volume(f.path("ball.npy"), 16, [](double x, double y, double z) {
-    return x * x + y * y + z * z <= 36;
-  });
+  save_volume(f.path("ball.npy"), 16,
+              [](double x, double y, double z) { return x * x + y * y + z * z <= 36; });
   const std::string common = "surface " + f("ball.npy") + " --spacing 0.5,0.5,0.5 --radius 3v";
   run_json(common + " -o " + f("plain.ply"));
   const auto j = run_json(common + " --regularize --gamma 0.1 -o " + f("reg.ply"));
