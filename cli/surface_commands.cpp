@@ -4,7 +4,7 @@
 //   zdg surface INPUT [selection] [--adjacency 6,26] [--component largest|all|K]
 //               [--estimate ii-mean,ii-k1,...,geodesic,at-normal] [--source SURFEL|X,Y,Z]
 //               [--at-alpha A] [--at-lambda L] [--at-v linel|pointel] [--radius R|Rv]
-//               [--mesh primal|marching-cubes]
+//               [--mesh primal|marching-cubes] [--regularize [--alpha A] [--beta B] [--gamma G]]
 //               [-o OUT.ply|.obj|.off] [--csv F] [--png F [--color E] [--view AZ,EL]
 //               [--png-size WxH]] [--threads N] [--json] [--quiet] [--force]
 //   zdg contour INPUT [selection] [--adjacency 4,8] [--component ...]
@@ -228,6 +228,8 @@ struct SurfaceArgs {
   VolumeInputArgs in;
   std::string adjacency = "6,26", component = "all", estimate, radius, mesh = "primal";
   std::string output, csv, source, at_alpha, at_lambda, at_v, html;
+  std::string reg_alpha, reg_beta, reg_gamma; // --alpha, --beta, --gamma of --regularize
+  bool regularize = false;
   std::int64_t max_faces = 2'000'000;
   PictureArgs picture;
   unsigned threads = 0;
@@ -317,6 +319,15 @@ void run_surface(const SurfaceArgs& a) {
       !contains(o.estimates, "at-normal"))
     throw InvalidArgument(
         "--at-alpha, --at-lambda and --at-v are only read by --estimate at-normal");
+  if (a.regularize) {
+    RegularizationParameters reg;
+    if (!a.reg_alpha.empty()) reg.alpha = parse_positive(a.reg_alpha, "--alpha");
+    if (!a.reg_beta.empty()) reg.beta = parse_positive(a.reg_beta, "--beta");
+    if (!a.reg_gamma.empty()) reg.gamma = parse_positive(a.reg_gamma, "--gamma");
+    o.regularize = reg;
+  } else if (!a.reg_alpha.empty() || !a.reg_beta.empty() || !a.reg_gamma.empty()) {
+    throw InvalidArgument("--alpha, --beta and --gamma are only read by --regularize");
+  }
   check_surface_options(o);
   MeshRenderOptions render;
   render.width = png_w;
@@ -331,8 +342,9 @@ void run_surface(const SurfaceArgs& a) {
   o.radius = parse_estimator_radius(a.radius);
   if (a.mesh != "primal" && a.mesh != "marching-cubes")
     throw InvalidArgument("--mesh '" + a.mesh + "': expected primal or marching-cubes");
-  if (!a.output.empty() || !a.picture.png.empty() || !a.html.empty())
+  if (!a.output.empty() || !a.picture.png.empty() || !a.html.empty() || a.regularize)
     o.mesh = a.mesh == "primal" ? SurfaceMesh::primal : SurfaceMesh::marching_cubes;
+  check_surface_options(o);
   check_viewer_options(a.html, a.max_faces);
   o.keep_surfels = !a.csv.empty();
   o.harmonic = a.harmonic;
@@ -430,6 +442,12 @@ void run_surface(const SurfaceArgs& a) {
   if (r.mesh)
     fmt::print("  {} mesh: {} vertices, {} faces{}{}\n", a.mesh, r.mesh->vertex_count(),
                r.mesh->face_count(), a.output.empty() ? "" : " -> ", a.output);
+  if (r.regularization)
+    fmt::print("  regularized: energy {:.6g} -> {:.6g}, max displacement {:.4g} h ({} "
+               "iterations, {})\n",
+               r.regularization->before.total(), r.regularization->after.total(),
+               r.regularization->max_displacement, r.regularization->iterations,
+               r.regularization->solver);
   const auto& est = r.estimates;
   if (est.names.count("ii-mean")) {
     const auto s = value_stats(est.mean);
@@ -652,6 +670,20 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                     "per component, the dimension of the harmonic 1-forms of its closed surfaces "
                     "(\"harmonic_dim\" in --json), from the exact ranks of the exterior "
                     "derivatives d0 and d1 (2 genus on each closed surface)");
+  surface->add_flag("--regularize", s->regularize,
+                    "move the primal mesh's vertices so that each quad is orthogonal to the II "
+                    "normal of its surfel, each vertex within the cube of side h at its pointel "
+                    "(Coeurjolly, Gueth, Lachaud, TVCG 2021); the JSON reports the energies");
+  const RegularizationParameters reg_defaults;
+  surface->add_option(
+      "--alpha", s->reg_alpha,
+      fmt::format("--regularize: data weight alpha > 0 (default {})", reg_defaults.alpha));
+  surface->add_option(
+      "--beta", s->reg_beta,
+      fmt::format("--regularize: alignment weight beta > 0 (default {})", reg_defaults.beta));
+  surface->add_option(
+      "--gamma", s->reg_gamma,
+      fmt::format("--regularize: fairness weight gamma > 0 (default {})", reg_defaults.gamma));
   add_viewer_options(surface, *s,
                      "write a self-contained viewer page (WebGL, no network): the mesh coloured "
                      "by any estimate, picking, the normals as glyphs");

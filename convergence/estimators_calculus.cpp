@@ -9,7 +9,10 @@
 // to a test function u (the parameter `u`, convergence/scalar_field.hpp), compared at every element
 // with Delta_S u at the nearest point of the true surface (its normal and principal curvatures from
 // the shape's closed forms: exact for spheres, from the fundamental forms for the ellipsoid, torus
-// and polynomial shapes).
+// and polynomial shapes). The
+// regularized primal surface (estimators/surface_regularization.hpp, II normals, default
+// energy): regularized-normal (each quad's normal against the true normal at the projection of
+// its centroid) and regularized-area (the sum of the quads' areas against the shape's area).
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/digitized_3d.hpp>
 #include <zdg/convergence/estimator.hpp>
@@ -18,6 +21,7 @@
 #include <zdg/estimators/digital_integration.hpp>
 #include <zdg/estimators/heat_laplace_beltrami.hpp>
 #include <zdg/estimators/ii_3d.hpp>
+#include <zdg/estimators/surface_regularization.hpp>
 #include <zdg/kernel/calculus/polygonal_calculus.hpp>
 #include <zdg/kernel/linalg/cotan_laplacian.hpp>
 #include <zdg/kernel/linalg/intrinsic_delaunay.hpp>
@@ -27,6 +31,7 @@
 #include <zdg/kernel/surfaces/marching_cubes.hpp>
 #include <zdg/kernel/surfaces/surfel_complex.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -83,6 +88,64 @@ ErrorStats run_di_area(const RunInput& in) {
   const std::vector<double> one(w.size(), 1.0);
   ErrorAccumulator acc;
   acc.add(digital_integral(w, one) - *area);
+  return acc.stats();
+}
+
+// The primal surface of the digitization regularized with the II normals (R = k h^alpha): the
+// mesh (pointels, quads in the surfels' order) and the moved vertices.
+struct Regularized {
+  PolygonMesh mesh;
+  std::vector<Point3<double>> positions;
+};
+
+Regularized regularized_surface(const RunInput& in, const std::string& estimator,
+                                detail::Digitized3& d) {
+  d = whole_surface(in, estimator);
+  const double R = in.k * std::pow(in.h, in.alpha);
+  const auto ii = ii_principal_curvatures(d.inside, d.box, d.surfels, in.h, R, 1);
+  SurfelComplex cx = surfel_complex(primal_surface(d.surfels), in.h);
+  Regularized out;
+  out.mesh.face_size = 4;
+  out.mesh.vertices = std::move(cx.pointels);
+  out.mesh.indices.reserve(4 * cx.surfels.size());
+  for (const auto& q : cx.surfels)
+    out.mesh.indices.insert(out.mesh.indices.end(), q.begin(), q.end());
+  std::vector<Point3<double>> normals;
+  normals.reserve(ii.size());
+  for (const auto& c : ii) normals.push_back(c.normal);
+  RegularizationParameters p;
+  p.threads = 1;
+  out.positions = regularize_surface(out.mesh, normals, in.h, p).positions;
+  return out;
+}
+
+ErrorStats run_regularized_normal(const RunInput& in) {
+  detail::Digitized3 d;
+  const Regularized r = regularized_surface(in, "regularized-normal", d);
+  ErrorAccumulator acc;
+  for (std::int64_t f = 0; f < r.mesh.face_count(); ++f) {
+    const Point3<double> a = quad_vector_area(r.mesh, r.positions, f);
+    Point3<double> c{0, 0, 0};
+    for (auto v : r.mesh.face(f)) c += 0.25 * r.positions[std::size_t(v)];
+    const SurfacePoint3 q = d.shape->project(c - d.t);
+    const double cosine = dot(a, q.normal) / std::sqrt(dot(a, a) * dot(q.normal, q.normal));
+    acc.add(std::acos(std::clamp(cosine, -1.0, 1.0)));
+  }
+  return acc.stats();
+}
+
+ErrorStats run_regularized_area(const RunInput& in) {
+  const auto area = detail::as_3d(in.shape).area();
+  if (!area) throw InvalidArgument("the area of '" + in.shape.spec() + "' is not known");
+  detail::Digitized3 d;
+  const Regularized r = regularized_surface(in, "regularized-area", d);
+  double sum = 0;
+  for (std::int64_t f = 0; f < r.mesh.face_count(); ++f) {
+    const Point3<double> a = quad_vector_area(r.mesh, r.positions, f);
+    sum += std::sqrt(dot(a, a));
+  }
+  ErrorAccumulator acc;
+  acc.add(sum - *area);
   return acc.stats();
 }
 
@@ -275,6 +338,33 @@ void register_calculus_estimators(std::vector<Estimator>& out) {
           return std::nullopt;
         }},
        run_di_area});
+
+  // The regularized surface: the paper reports convergence of its normals and area
+  // experimentally; no rate is proven for them, so the fit is reported without a verdict.
+  auto no_rate = [](const ShapeClass&, const EstimatorParameters&) -> std::optional<ProvenRate> {
+    return std::nullopt;
+  };
+  out.push_back({"regularized-normal",
+                 3,
+                 "normal of each quad of the primal surface regularized with the II normals (R "
+                 "= k h^alpha; alpha 0.001, beta 1, gamma 0.05, each vertex in its pointel's "
+                 "cube), against the true normal at the projection of the quad's centroid",
+                 "angle (rad)",
+                 radius_law_parameters(),
+                 {"no rate proven (Coeurjolly, Gueth, Lachaud, TVCG 2021: convergence observed, "
+                  "following the input II normals, O(h^{2/3}) at best)",
+                  no_rate},
+                 run_regularized_normal});
+  out.push_back({"regularized-area",
+                 3,
+                 "total area of the regularized primal surface (quads' vector areas), against "
+                 "the area in closed form",
+                 "area",
+                 radius_law_parameters(),
+                 {"no rate proven (Coeurjolly, Gueth, Lachaud, TVCG 2021: convergence observed; "
+                  "the staircase's own area does not converge)",
+                  no_rate},
+                 run_regularized_area});
 
   // lb-heat: k of the II normal's radius R = k h^{1/3}, alpha of t = h^alpha, u.
   EstimatorParameter heat_alpha{"alpha", "2/5", 0.0, 1.0,

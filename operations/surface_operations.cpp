@@ -430,6 +430,14 @@ std::set<std::string> check_surface_options(const SurfaceOptions& o) {
     throw InvalidArgument("--estimate geodesic needs --source SURFEL or --source X,Y,Z");
   if (o.source && names.count("geodesic") == 0)
     throw InvalidArgument("--source is only read by --estimate geodesic");
+  if (o.regularize && o.mesh == SurfaceMesh::marching_cubes)
+    throw InvalidArgument("--regularize moves the primal mesh's vertices (one per pointel); it "
+                          "does not apply to --mesh marching-cubes");
+  if (o.regularize) {
+    // The parameters' checks (alpha, beta, gamma > 0) before any input is read.
+    const PolygonMesh empty;
+    check_regularization_input(empty, {}, 1.0, *o.regularize);
+  }
   return names;
 }
 
@@ -439,13 +447,14 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
   SurfaceResult r;
   auto& est = r.estimates;
   est.names = check_surface_options(o);
+  if (o.regularize) est.names.insert("ii-normal"); // the normals the quads align with
   est.at = o.at;
   est.at_discretization = o.at_v;
   const SurfaceConvention conv = SurfaceConvention::of(o.adjacency);
   OperationProgress progress(o.progress);
   r.adjacency = o.adjacency;
   r.component = o.component;
-  r.mesh_kind = o.mesh;
+  r.mesh_kind = o.regularize ? SurfaceMesh::primal : o.mesh;
   r.threads = worker_count(o.threads, std::int64_t{1} << 30);
   Image<std::uint8_t> mask = std::move(image.mask);
   const auto& sp = image.spacing;
@@ -555,13 +564,31 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
   if (o.keep_surfels) r.surface_of = std::move(ss.surface_of);
   std::vector<std::uint64_t>().swap(ss.surface_of);
 
-  if (o.mesh != SurfaceMesh::none) {
-    const std::string kind = surface_mesh_name(o.mesh);
+  if (r.mesh_kind != SurfaceMesh::none) {
+    const std::string kind = surface_mesh_name(r.mesh_kind);
     progress.start(kind + " mesh");
     PolygonMesh mesh;
-    if (o.mesh == SurfaceMesh::primal) {
+    if (r.mesh_kind == SurfaceMesh::primal) {
       mesh = primal_surface_mesh(mask, sf, conv, r.place, o.threads);
       r.mesh_edges = 2 * mesh.face_count() - ss.pinched_linels;
+      if (o.regularize) {
+        progress.done("mesh", str(mesh.face_count()) + " faces");
+        progress.start("regularization");
+        std::vector<Point3<double>> normals;
+        normals.reserve(est.principal.size());
+        for (const auto& q : est.principal) normals.push_back(q.normal);
+        RegularizationParameters rp = *o.regularize;
+        rp.threads = o.threads;
+        // The bound is the voxel's: the cube of side h (the isotropic spacing) at each pointel.
+        RegularizationResult reg =
+            regularize_surface(mesh, normals, isotropic_step(sp, image.name), rp);
+        mesh.vertices = std::move(reg.positions);
+        reg.positions = {};
+        r.regularization_parameters = rp;
+        r.regularization = std::move(reg);
+        progress.done("regularization");
+        progress.start("mesh fields");
+      }
     } else {
       std::optional<IsoLevel> level;
       if (image.grey) {
@@ -575,7 +602,7 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& o) {
       image.grey.reset(); // the grey values
     }
     { const Image<std::uint8_t> freed = std::move(mask); } // no later step reads the mask
-    attach_estimates(mesh, o.mesh, sf, est, o.threads);
+    attach_estimates(mesh, r.mesh_kind, sf, est, o.threads);
     progress.done("mesh", str(mesh.face_count()) + " faces");
     r.mesh = std::move(mesh);
   }
@@ -647,6 +674,26 @@ nlohmann::json to_json(const SurfaceResult& r) {
                  {"faces", str(m.face_count())},
                  {"edges", str(r.mesh_edges)},
                  {"euler", str(m.vertex_count() - r.mesh_edges + m.face_count())}};
+  }
+  if (r.regularization) {
+    const auto& g = *r.regularization;
+    const auto& p = *r.regularization_parameters;
+    auto energy = [](const RegularizationEnergy& e) {
+      return nlohmann::json{{"data", e.data},
+                            {"alignment", e.alignment},
+                            {"fairness", e.fairness},
+                            {"total", e.total()}};
+    };
+    j["regularization"] = {{"alpha", p.alpha},
+                           {"beta", p.beta},
+                           {"gamma", p.gamma},
+                           {"energy_before", energy(g.before)},
+                           {"energy_after", energy(g.after)},
+                           {"max_displacement_h", g.max_displacement},
+                           {"iterations", g.iterations},
+                           {"converged", g.converged},
+                           {"kkt_residual", g.kkt_residual},
+                           {"solver", g.solver}};
   }
   return j;
 }

@@ -13,7 +13,9 @@
 //                       marching-cubes mesh carrying them per face. O(N) for the image of N
 //                       voxels plus the estimators' costs (integral invariants O(S R^3) for S
 //                       surfels and a radius of R voxels; the calculus estimates one sparse
-//                       solve on the S surfels).
+//                       solve on the S surfels). With `regularize`, the primal mesh's
+//                       vertices are moved by estimators/surface_regularization.hpp with the
+//                       II normals (each within the cube of side h of its pointel).
 //   contour_operation   2D: components, Betti numbers, the contours (kernel/curves/
 //                       image_contours.hpp) and the estimates asked for (contour_estimators()),
 //                       O(N) plus the estimators'.
@@ -27,11 +29,12 @@
 // estimator name not in the registry, an estimate on anisotropic voxels, a radius larger than
 // the image or than 256 voxels, a geodesic source that is not a surfel (index out of range,
 // or a point more than two voxels from every surfel centre), and a geodesic estimate without
-// a source (or a source without it).
+// a source (or a source without it), and regularize with a marching-cubes mesh.
 #pragma once
 
 #include <zdg/estimators/ambrosio_tortorelli.hpp>
 #include <zdg/estimators/contour_estimators.hpp>
+#include <zdg/estimators/surface_regularization.hpp>
 #include <zdg/estimators/volume_ii.hpp>
 #include <zdg/kernel/curves/image_contours.hpp>
 #include <zdg/kernel/images/image.hpp>
@@ -139,6 +142,9 @@ struct SurfaceOptions {
   /// ambrosio_tortorelli_mesh.hpp, the primal 0-form of the CGF 2016 paper).
   ATDiscretization at_v = ATDiscretization::linel;
   SurfaceMesh mesh = SurfaceMesh::none; ///< the mesh, with the estimates per face
+  /// Regularize the primal mesh (it is then made even without an output) with the II normals
+  /// (ii-normal is then estimated); a marching-cubes mesh is refused.
+  std::optional<RegularizationParameters> regularize;
   bool keep_surfels = false; ///< the surfels and their surfaces stay in the result (for CSV)
   /// The dimension of the harmonic 1-forms of each closed surface, from the exact ranks of
   /// its exterior derivatives (kernel/calculus/harmonic_dimension.hpp; 2 genus, except on a
@@ -183,6 +189,9 @@ struct SurfaceResult {
   SurfaceMesh mesh_kind = SurfaceMesh::none;
   std::optional<PolygonMesh> mesh; ///< with the estimates as face scalars and the normals
   std::int64_t mesh_edges = 0;
+  /// With regularize: the parameters, energies and displacement (positions moved into mesh).
+  std::optional<RegularizationParameters> regularization_parameters;
+  std::optional<RegularizationResult> regularization;
   VoxelPlacement place;
   std::optional<ImageSurfels> surfels_kept; ///< keep_surfels
   std::vector<std::uint64_t> surface_of;    ///< keep_surfels: each surfel's surface
@@ -201,6 +210,8 @@ SurfaceResult surface_operation(ObjectImage image, const SurfaceOptions& options
 /// "surfaces","euler","genus","harmonic_dim" (with
 /// harmonic)}],"surfaces","surfels","euler","betti","pinched_pointels",
 /// "pinched_linels","estimates":{...},"mesh":{"kind","vertices","faces","edges","euler"},
+/// "regularization"?:{"alpha","beta","gamma","energy_before":{"data","alignment","fairness",
+/// "total"},"energy_after":{...},"max_displacement_h","iterations","converged","solver"},
 /// "seconds","cpu_seconds","threads"} (counts as decimal strings).
 nlohmann::json to_json(const SurfaceResult& r);
 

@@ -6,6 +6,7 @@
 #include "tests/support/png.hpp"
 #include "tests/support/python.hpp"
 #include <zdg/kernel/io/npy_io.hpp>
+#include <zdg/kernel/io/ply_read.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -524,6 +525,39 @@ TEST(SurfaceCommand, BadInputIsOneLineExitTwoNothingWritten) {
   }
   EXPECT_EQ(test::run_zdg("surface --help").status, 0);
   EXPECT_EQ(test::run_zdg("contour --help").status, 0);
+}
+
+// --regularize -o OUT.ply: the primal mesh with the same faces as `zdg surface -o`, every vertex
+// moved by at most h/2 per coordinate (here h = 0.5 by --spacing), some of them by a visible
+// amount; the JSON reports a lower energy and the displacement in units of h.
+TEST(SurfaceCommand, RegularizeMovesVerticesWithinTheirCubes) {
+  Files f;
+  save_volume(f.path("ball.npy"), 16,
+              [](double x, double y, double z) { return x * x + y * y + z * z <= 36; });
+  const std::string common = "surface " + f("ball.npy") + " --spacing 0.5,0.5,0.5 --radius 3v";
+  run_json(common + " -o " + f("plain.ply"));
+  const auto j = run_json(common + " --regularize --gamma 0.1 -o " + f("reg.ply"));
+  const auto plain = read_ply(f.path("plain.ply")).mesh;
+  const auto reg = read_ply(f.path("reg.ply")).mesh;
+  ASSERT_EQ(plain.indices, reg.indices);
+  ASSERT_EQ(plain.vertices.size(), reg.vertices.size());
+  double moved = 0;
+  for (std::size_t i = 0; i < reg.vertices.size(); ++i) {
+    const auto d = reg.vertices[i] - plain.vertices[i];
+    const double m = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    EXPECT_LE(m, 0.25 + 1e-5) << i;
+    moved = std::max(moved, m);
+  }
+  EXPECT_GT(moved, 0.02);
+  const auto& g = j["regularization"];
+  EXPECT_EQ(g["gamma"].get<double>(), 0.1);
+  EXPECT_EQ(g["alpha"].get<double>(), 0.001);
+  EXPECT_LT(g["energy_after"]["total"].get<double>(), g["energy_before"]["total"].get<double>());
+  EXPECT_NEAR(g["max_displacement_h"].get<double>(), moved / 0.5, 1e-4);
+  EXPECT_LE(g["max_displacement_h"].get<double>(), 0.5);
+  EXPECT_TRUE(g["converged"].get<bool>());
+  EXPECT_LE(g["kkt_residual"].get<double>(), 1e-6); // the default tolerance
+  EXPECT_EQ(g["solver"].get<std::string>(), "mprgp");
 }
 
 } // namespace
