@@ -614,8 +614,8 @@ Image<std::int64_t> npy_to_int64(const NpyArray& a, const std::vector<std::int64
       img[i] = a.get(i);
     } catch (const Error& e) {
       // A uint64 value past 2^63 - 1: say which file and which element.
-      throw IoError((source.empty() ? "" : source + ": ") + "element " + std::to_string(i) +
-                    ": " + e.what());
+      throw IoError((source.empty() ? "" : source + ": ") + "element " + std::to_string(i) + ": " +
+                    e.what());
     }
   }
   return img;
