@@ -155,20 +155,29 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
   // One Lanczos run for `want` pairs, deflated by every vector found so far; its pairs are
   // M-orthogonalized against those (Gram-Schmidt, twice) and merged in increasing order.
   const auto run = [&](std::int64_t want) {
-    const std::int64_t basis = std::min<std::int64_t>(n, std::max(ncv, 2 * want + 1));
-    Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(
-        op, mass, want, basis, sigma);
-    eigs.init();
-    eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
-                 Spectra::SortRule::SmallestAlge);
-    restarts += eigs.num_iterations();
-    if (eigs.info() != Spectra::CompInfo::Successful) {
-      throw Error(what + "Lanczos did not converge (" + std::to_string(want) + " eigenpairs, " +
-                  std::to_string(eigs.num_iterations()) + " restarts, subspace " +
-                  std::to_string(basis) + ", tolerance " + std::to_string(options.tolerance) + ")");
+    // A subspace too small for a cluster may not converge: it is doubled (up to n) and retried.
+    Eigen::VectorXd values;
+    Eigen::MatrixXd vectors;
+    for (std::int64_t basis = std::min<std::int64_t>(n, std::max(ncv, 2 * want + 1));;
+         basis = std::min<std::int64_t>(n, 2 * basis)) {
+      Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassOp, Spectra::GEigsMode::ShiftInvert> eigs(
+          op, mass, want, basis, sigma);
+      eigs.init();
+      eigs.compute(Spectra::SortRule::LargestMagn, options.max_iterations, options.tolerance,
+                   Spectra::SortRule::SmallestAlge);
+      restarts += eigs.num_iterations();
+      if (eigs.info() == Spectra::CompInfo::Successful) {
+        values = eigs.eigenvalues();
+        vectors = eigs.eigenvectors();
+        break;
+      }
+      if (basis == n || basis >= 8 * std::max(ncv, 2 * want + 1)) {
+        throw Error(what + "Lanczos did not converge (" + std::to_string(want) + " eigenpairs, " +
+                    std::to_string(eigs.num_iterations()) + " restarts, subspace " +
+                    std::to_string(basis) + ", tolerance " + std::to_string(options.tolerance) +
+                    ")");
+      }
     }
-    const Eigen::VectorXd values = eigs.eigenvalues();
-    const Eigen::MatrixXd vectors = eigs.eigenvectors();
     const std::size_t before = out.vectors.size();
     std::vector<std::vector<double>> mass_before;
     for (std::size_t q = 0; q < before; ++q) mass_before.push_back(m.multiply(out.vectors[q]));
@@ -205,24 +214,37 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
     out.vectors = std::move(sorted.vectors);
   };
   // Lanczos may miss copies of a multiple eigenvalue. Certificate (Sylvester's law of inertia):
-  // the number of eigenvalues below mu = lambda_k (1 - 1e-8) is the inertia of L - mu M; while
+  // the number of eigenvalues below mu = lambda_k (1 - 1e-6) is the inertia of L - mu M; while
   // it exceeds the number found below mu, a deflated run looks for the missing ones.
   run(k);
   for (int round = 0;; ++round) {
     const double lk = out.values[std::size_t(k - 1)];
-    const double mu = lk - 1e-8 * std::max(std::abs(lk), std::abs(sigma));
-    const auto found_below = static_cast<std::int64_t>(
-        std::lower_bound(out.values.begin(), out.values.end(), mu) - out.values.begin());
-    std::int64_t below = found_below;
-    if (mu > 0) below = negative_inertia(add(1.0, l, -mu, m));
+    // A pivot of exactly 0 in the elimination order fails the LDL^T: another mu a little lower
+    // (the count below it is the same unless an eigenvalue lies in between) is tried.
+    double mu = lk;
+    std::int64_t below = -1, found_below = 0;
+    for (int attempt = 0; attempt < 4 && below < 0; ++attempt) {
+      mu = lk - 1e-6 * double(1 << attempt) * std::max(std::abs(lk), std::abs(sigma));
+      found_below = static_cast<std::int64_t>(
+          std::lower_bound(out.values.begin(), out.values.end(), mu) - out.values.begin());
+      try {
+        below = mu > 0 ? negative_inertia(add(1.0, l, -mu, m)) : found_below;
+      } catch (const InvalidArgument&) {
+        throw;
+      } catch (const Error&) {
+        if (attempt == 3) throw;
+      }
+    }
     if (below <= found_below) break;
     const auto room = n - static_cast<std::int64_t>(out.values.size()) - 1;
-    if (round == 8 || room < 1) {
+    if (round == k || room < 1) {
       throw Error(what + std::to_string(below) + " eigenvalues lie below " + std::to_string(mu) +
                   " (inertia of L - mu M) but Lanczos found " + std::to_string(found_below) +
                   " after " + std::to_string(round) + " deflated runs");
     }
-    run(std::min(k, room));
+    // One copy of each multiple eigenvalue per run (a Krylov space sees one per eigenspace):
+    // ask for the missing ones only, so that every pair asked for exists in the deflated space.
+    run(std::min(below - found_below, room));
   }
   out.values.resize(std::size_t(k));
   out.vectors.resize(std::size_t(k));

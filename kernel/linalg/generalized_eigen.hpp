@@ -12,16 +12,17 @@
 // factorization (kernel/linalg/sparse_spd_solver.hpp, CHOLMOD or Eigen), then one solve and one
 // product by M per Lanczos step. Lanczos can miss copies of a multiple eigenvalue (the
 // sphere's are 2l + 1 fold): the result is certified by Sylvester's law of inertia, the number
-// of eigenvalues below mu = lambda_k (1 - 1e-8) being the count of negative pivots of the
+// of eigenvalues below mu = lambda_k (1 - 1e-6) being the count of negative pivots of the
 // LDL^T factorization of L - mu M (one more factorization, kernel/linalg/sparse_spd_solver.hpp
 // negative_inertia); while it exceeds the number found, Lanczos runs again on the operator
-// deflated by the vectors found (at most 8 such runs, else Error). Cost: the factorizations,
-// plus about ncv + (restarts x (ncv - k)) solves of O(nnz(Cholesky factor)) per run and
-// O(ncv n) memory for the Krylov basis (ncv = max(2k + 1, 20) by default, at most n).
-// Application: the Laplace-Beltrami spectrum as a shape descriptor
-// (Reuter, Wolter, Peinecke, "Laplace-Beltrami spectra as 'Shape-DNA' of surfaces and solids",
-// CAD 38(4), 2006); on the sphere of radius r the eigenvalues are l(l+1)/r^2 with multiplicity
-// 2l+1 (papers/lb-spectrum/README.md).
+// deflated by the vectors found (at most k such runs, else Error); an eigenvalue within 1e-6
+// lambda_k of lambda_k can escape the certificate (the LDL^T pivots' rounding needs that margin).
+// Cost: the factorizations, plus about ncv + (restarts x (ncv - k)) solves of O(nnz(Cholesky
+// factor)) per run and O(ncv n) memory for the Krylov basis (ncv = max(2k + 1, 20) by default, at
+// most n). Application: the Laplace-Beltrami spectrum as a shape descriptor (Reuter, Wolter,
+// Peinecke, "Laplace-Beltrami spectra as 'Shape-DNA' of surfaces and solids", CAD 38(4), 2006); on
+// the sphere of radius r the eigenvalues are l(l+1)/r^2 with multiplicity 2l+1
+// (papers/lb-spectrum/README.md).
 //
 // Requirements (InvalidArgument, one line, otherwise): L and M square of the same size n;
 // 1 <= k < n; L and M symmetric (max |a_ij - a_ji| <= 1e-10 max |a_ij|); the diagonal of M
