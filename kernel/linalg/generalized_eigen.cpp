@@ -181,8 +181,19 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
     const std::size_t before = out.vectors.size();
     std::vector<std::vector<double>> mass_before;
     for (std::size_t q = 0; q < before; ++q) mass_before.push_back(m.multiply(out.vectors[q]));
+    const auto m_norm2 = [&](const std::vector<double>& x) {
+      const std::vector<double> mx = m.multiply(x);
+      double s = 0;
+      for (std::int64_t i = 0; i < n; ++i) s += mx[std::size_t(i)] * x[std::size_t(i)];
+      return s;
+    };
     for (Eigen::Index j = 0; j < values.size(); ++j) {
       std::vector<double> x(vectors.col(j).data(), vectors.col(j).data() + n);
+      // Spectra's vectors are not always M-normalized (seen when the subspace is all of R^n):
+      // the length is measured before and after the projection.
+      const double norm0 = m_norm2(x);
+      if (!(norm0 > 0) || !std::isfinite(norm0) || !std::isfinite(values(j)))
+        throw Error(what + "Lanczos returned a zero or non-finite eigenvector");
       for (int pass = 0; pass < 2; ++pass) {
         for (std::size_t q = 0; q < before; ++q) {
           double c = 0;
@@ -192,10 +203,8 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
             x[std::size_t(i)] -= c * out.vectors[q][std::size_t(i)];
         }
       }
-      const std::vector<double> mx = m.multiply(x);
-      double norm = 0;
-      for (std::int64_t i = 0; i < n; ++i) norm += mx[std::size_t(i)] * x[std::size_t(i)];
-      if (!(norm > 0.25)) continue; // a copy of a vector found before: dropped
+      const double norm = m_norm2(x);
+      if (!(norm > 0.25 * norm0)) continue; // a copy of a vector found before: dropped
       for (double& v : x) v /= std::sqrt(norm);
       out.values.push_back(values(j));
       out.vectors.push_back(std::move(x));
