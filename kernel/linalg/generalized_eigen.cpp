@@ -153,7 +153,8 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
   GeneralizedEigenpairs out;
   std::int64_t restarts = 0;
   // One Lanczos run for `want` pairs, deflated by every vector found so far; its pairs are
-  // M-orthogonalized against those (Gram-Schmidt, twice) and merged in increasing order.
+  // M-orthogonalized against those and each other (Gram-Schmidt, twice) and merged in increasing
+  // order.
   const auto run = [&](std::int64_t want) {
     // A subspace too small for a cluster may not converge: it is doubled (up to n) and retried.
     Eigen::VectorXd values;
@@ -195,7 +196,7 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
       if (!(norm0 > 0) || !std::isfinite(norm0) || !std::isfinite(values(j)))
         throw Error(what + "Lanczos returned a zero or non-finite eigenvector");
       for (int pass = 0; pass < 2; ++pass) {
-        for (std::size_t q = 0; q < before; ++q) {
+        for (std::size_t q = 0; q < out.vectors.size(); ++q) {
           double c = 0;
           for (std::int64_t i = 0; i < n; ++i)
             c += mass_before[q][std::size_t(i)] * x[std::size_t(i)];
@@ -206,7 +207,13 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
       const double norm = m_norm2(x);
       if (!(norm > 0.25 * norm0)) continue; // a copy of a vector found before: dropped
       for (double& v : x) v /= std::sqrt(norm);
-      out.values.push_back(values(j));
+      mass_before.push_back(m.multiply(x));
+      // The value is x's Rayleigh quotient x^T L x (x^T M x = 1): Spectra's Ritz value was seen
+      // wrong (2 for L = M = I) when the Krylov space breaks down on a single eigenspace.
+      const std::vector<double> lx = l.multiply(x);
+      double rayleigh = 0;
+      for (std::int64_t i = 0; i < n; ++i) rayleigh += lx[std::size_t(i)] * x[std::size_t(i)];
+      out.values.push_back(rayleigh);
       out.vectors.push_back(std::move(x));
     }
     for (std::size_t q = before; q < out.vectors.size(); ++q) op.deflate(out.vectors[q]);
@@ -227,6 +234,15 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
   // it exceeds the number found below mu, a deflated run looks for the missing ones.
   run(k);
   for (int round = 0;; ++round) {
+    if (static_cast<std::int64_t>(out.values.size()) < k) {
+      // A run returned copies of one vector (dropped above): the rest is asked for again.
+      const auto room = n - static_cast<std::int64_t>(out.values.size()) - 1;
+      if (round == k || room < 1)
+        throw Error(what + "Lanczos found " + std::to_string(out.values.size()) + " of " +
+                    std::to_string(k) + " independent eigenvectors");
+      run(std::min(k - static_cast<std::int64_t>(out.values.size()), room));
+      continue;
+    }
     const double lk = out.values[std::size_t(k - 1)];
     // A pivot of exactly 0 in the elimination order fails the LDL^T: another mu a little lower
     // (the count below it is the same unless an eigenvalue lies in between) is tried.
