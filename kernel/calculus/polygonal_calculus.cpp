@@ -239,6 +239,9 @@ SparseMatrix PolygonalCalculus::divergence(double lambda) const {
 SparseMatrix PolygonalCalculus::laplacian(double lambda) const {
   check_lambda(lambda);
   std::vector<SparseTriplet> t;
+  std::size_t entries = 0;
+  for (const auto& F : faces_) entries += std::size_t(F.n) * std::size_t(F.n);
+  t.reserve(entries);
   for (std::size_t f = 0; f < faces_.size(); ++f) {
     const auto at = [&](int i) { return index_[f][std::size_t(i)]; };
     scatter(t, faces_[f].L(lambda), faces_[f].n, faces_[f].n, at, at);
