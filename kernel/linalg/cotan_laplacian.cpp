@@ -14,6 +14,16 @@ std::vector<double> CotanLaplacian::apply(std::span<const double> u, unsigned th
   return y;
 }
 
+void check_triangle_indices(const std::array<std::int64_t, 3>& tri, std::int64_t n,
+                            const std::string& who, std::size_t f) {
+  for (auto v : tri)
+    if (v < 0 || v >= n)
+      throw InvalidArgument(who + ": triangle " + std::to_string(f) + " uses vertex " +
+                            std::to_string(v) + " of " + std::to_string(n));
+  if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
+    throw InvalidArgument(who + ": triangle " + std::to_string(f) + " repeats a vertex");
+}
+
 CotanLaplacian cotan_laplacian(std::span<const Point3<double>> vertices,
                                std::span<const std::array<std::int64_t, 3>> triangles) {
   const auto n = static_cast<std::int64_t>(vertices.size());

@@ -20,6 +20,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace zdg {
@@ -31,6 +32,11 @@ struct CotanLaplacian {
   /// L u = M^{-1} S u (0 where M_i = 0: a vertex of no triangle).
   std::vector<double> apply(std::span<const double> u, unsigned threads = 1) const;
 };
+
+/// Checks a triangle's vertex indices for the triangle-mesh Laplacians: each in [0, n) and the
+/// three distinct. InvalidArgument "WHO: triangle F uses vertex V of N" / "... repeats a vertex".
+void check_triangle_indices(const std::array<std::int64_t, 3>& tri, std::int64_t n,
+                            const std::string& who, std::size_t f);
 
 /// The cotangent Laplacian of the triangles (vertex indices, any orientation). InvalidArgument
 /// for an index out of range or a degenerate triangle (zero area).

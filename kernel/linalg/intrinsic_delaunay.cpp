@@ -1,6 +1,7 @@
 #include <zdg/kernel/linalg/intrinsic_delaunay.hpp>
 
 #include <zdg/arith/error.hpp>
+#include <zdg/kernel/linalg/cotan_laplacian.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -57,12 +58,7 @@ intrinsic_triangulation(std::span<const Point3<double>> vertices,
   std::map<std::pair<std::int64_t, std::int64_t>, int> undirected;
   for (std::size_t f = 0; f < triangles.size(); ++f) {
     const auto& tri = triangles[f];
-    for (auto v : tri)
-      if (v < 0 || v >= n)
-        throw InvalidArgument(where(f) + " uses vertex " + std::to_string(v) + " of " +
-                              std::to_string(n));
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
-      throw InvalidArgument(where(f) + " repeats a vertex");
+    check_triangle_indices(tri, n, "intrinsic Delaunay", f);
     for (int k = 0; k < 3; ++k) {
       const auto d = vertices[std::size_t(tri[std::size_t((k + 2) % 3)])] -
                      vertices[std::size_t(tri[std::size_t((k + 1) % 3)])];

@@ -1,6 +1,7 @@
 #include <zdg/kernel/linalg/mean_value_laplacian.hpp>
 
 #include <zdg/arith/error.hpp>
+#include <zdg/kernel/linalg/cotan_laplacian.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -40,12 +41,7 @@ MeanValueLaplacian mean_value_laplacian(std::span<const Point3<double>> vertices
   t.reserve(12 * triangles.size());
   for (std::size_t f = 0; f < triangles.size(); ++f) {
     const auto& tri = triangles[f];
-    for (auto v : tri)
-      if (v < 0 || v >= n)
-        throw InvalidArgument(where(f) + " uses vertex " + std::to_string(v) + " of " +
-                              std::to_string(n));
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
-      throw InvalidArgument(where(f) + " repeats a vertex");
+    check_triangle_indices(tri, n, "mean-value Laplacian", f);
     const auto& p0 = vertices[std::size_t(tri[0])];
     const auto& p1 = vertices[std::size_t(tri[1])];
     const auto& p2 = vertices[std::size_t(tri[2])];
