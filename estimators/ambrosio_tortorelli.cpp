@@ -16,27 +16,6 @@ std::size_t idx(std::int64_t i) {
   return static_cast<std::size_t>(i);
 }
 
-void check_parameters(const ATParameters& p) {
-  const auto bad = [](const std::string& what) {
-    throw InvalidArgument("Ambrosio-Tortorelli: " + what);
-  };
-  if (!(p.alpha > 0) || !std::isfinite(p.alpha))
-    bad("alpha must be positive, got " + std::to_string(p.alpha));
-  if (!(p.lambda > 0) || !std::isfinite(p.lambda))
-    bad("lambda must be positive, got " + std::to_string(p.lambda));
-  if (!(p.epsilon2 > 0) || !std::isfinite(p.epsilon2))
-    bad("epsilon2 must be positive, got " + std::to_string(p.epsilon2));
-  if (!(p.epsilon1 >= p.epsilon2) || !std::isfinite(p.epsilon1))
-    bad("epsilon1 = " + std::to_string(p.epsilon1) +
-        " must be at least epsilon2 = " + std::to_string(p.epsilon2));
-  if (!(p.epsilon_factor > 1) || !std::isfinite(p.epsilon_factor))
-    bad("the epsilon factor must be above 1, got " + std::to_string(p.epsilon_factor));
-  if (p.max_iterations < 1)
-    bad("max_iterations must be at least 1, got " + std::to_string(p.max_iterations));
-  if (!(p.tolerance >= 0) || !std::isfinite(p.tolerance))
-    bad("the tolerance must be non-negative, got " + std::to_string(p.tolerance));
-}
-
 void check_eps(double eps) {
   if (!(eps > 0) || !std::isfinite(eps))
     throw InvalidArgument("Ambrosio-Tortorelli: eps must be positive, got " + std::to_string(eps));
@@ -142,7 +121,7 @@ double energy(const SurfelComplex& complex, std::span<const Point3<double>> g,
 double at_energy(const SurfelComplex& complex, std::span<const Point3<double>> g,
                  std::span<const Point3<double>> u, std::span<const double> v,
                  const ATParameters& parameters, double eps) {
-  check_parameters(parameters);
+  check_at_parameters(parameters, "Ambrosio-Tortorelli");
   check_eps(eps);
   check_surfel_field(complex, g, "g");
   check_surfel_field(complex, u, "u");
@@ -218,7 +197,7 @@ std::vector<double> solve_v(const SurfelComplex& c, std::span<const Point3<doubl
 std::vector<Point3<double>> at_solve_u(const SurfelComplex& complex,
                                        std::span<const Point3<double>> g, std::span<const double> v,
                                        const ATParameters& parameters) {
-  check_parameters(parameters);
+  check_at_parameters(parameters, "Ambrosio-Tortorelli");
   check_surfel_field(complex, g, "g");
   check_linel_field(complex, v);
   std::optional<SparseSpdSolver> solver;
@@ -227,7 +206,7 @@ std::vector<Point3<double>> at_solve_u(const SurfelComplex& complex,
 
 std::vector<double> at_solve_v(const SurfelComplex& complex, std::span<const Point3<double>> u,
                                const ATParameters& parameters, double eps) {
-  check_parameters(parameters);
+  check_at_parameters(parameters, "Ambrosio-Tortorelli");
   check_eps(eps);
   check_surfel_field(complex, u, "u");
   std::optional<SparseSpdSolver> solver;
@@ -236,7 +215,7 @@ std::vector<double> at_solve_v(const SurfelComplex& complex, std::span<const Poi
 
 ATResult at_normals(const SurfelComplex& complex, std::span<const Point3<double>> g,
                     const ATParameters& parameters) {
-  check_parameters(parameters);
+  check_at_parameters(parameters, "Ambrosio-Tortorelli");
   check_surfel_field(complex, g, "g");
   ATResult r;
   r.u.assign(g.begin(), g.end());
@@ -291,6 +270,25 @@ std::vector<double> at_surfel_v(const SurfelComplex& complex, std::span<const do
     out[s] = m;
   }
   return out;
+}
+
+void check_at_parameters(const ATParameters& p, const std::string& who) {
+  const auto bad = [&who](const std::string& what) { throw InvalidArgument(who + ": " + what); };
+  if (!(p.alpha > 0) || !std::isfinite(p.alpha))
+    bad("alpha must be positive, got " + std::to_string(p.alpha));
+  if (!(p.lambda > 0) || !std::isfinite(p.lambda))
+    bad("lambda must be positive, got " + std::to_string(p.lambda));
+  if (!(p.epsilon2 > 0) || !std::isfinite(p.epsilon2))
+    bad("epsilon2 must be positive, got " + std::to_string(p.epsilon2));
+  if (!(p.epsilon1 >= p.epsilon2) || !std::isfinite(p.epsilon1))
+    bad("epsilon1 = " + std::to_string(p.epsilon1) +
+        " must be at least epsilon2 = " + std::to_string(p.epsilon2));
+  if (!(p.epsilon_factor > 1) || !std::isfinite(p.epsilon_factor))
+    bad("the epsilon factor must be above 1, got " + std::to_string(p.epsilon_factor));
+  if (p.max_iterations < 1)
+    bad("max_iterations must be at least 1, got " + std::to_string(p.max_iterations));
+  if (!(p.tolerance >= 0) || !std::isfinite(p.tolerance))
+    bad("the tolerance must be non-negative, got " + std::to_string(p.tolerance));
 }
 
 } // namespace zdg

@@ -61,6 +61,10 @@ struct ATStep {
   double v_change = 0; ///< max |v_new - v_old| (v steps; 0 otherwise)
 };
 
+/// Checks the parameters' domains (alpha, lambda, epsilon2 > 0, epsilon1 >= epsilon2, factor
+/// > 1, max_iterations >= 1, tolerance >= 0, all finite): InvalidArgument "WHO: ..." otherwise.
+void check_at_parameters(const ATParameters& p, const std::string& who);
+
 struct ATResult {
   std::vector<Point3<double>> u;       ///< the raw minimiser, per surfel
   std::vector<Point3<double>> normals; ///< u / |u| (g where u = 0), per surfel

@@ -175,24 +175,6 @@ std::vector<Point3<double>> mesh_face_normals(const PolygonMesh& mesh) {
 
 namespace {
 
-void check_parameters(const ATParameters& p) {
-  if (!(p.alpha > 0) || !std::isfinite(p.alpha))
-    bad("alpha must be positive, got " + std::to_string(p.alpha));
-  if (!(p.lambda > 0) || !std::isfinite(p.lambda))
-    bad("lambda must be positive, got " + std::to_string(p.lambda));
-  if (!(p.epsilon2 > 0) || !std::isfinite(p.epsilon2))
-    bad("epsilon2 must be positive, got " + std::to_string(p.epsilon2));
-  if (!(p.epsilon1 >= p.epsilon2) || !std::isfinite(p.epsilon1))
-    bad("epsilon1 = " + std::to_string(p.epsilon1) +
-        " must be at least epsilon2 = " + std::to_string(p.epsilon2));
-  if (!(p.epsilon_factor > 1) || !std::isfinite(p.epsilon_factor))
-    bad("the epsilon factor must be above 1, got " + std::to_string(p.epsilon_factor));
-  if (p.max_iterations < 1)
-    bad("max_iterations must be at least 1, got " + std::to_string(p.max_iterations));
-  if (!(p.tolerance >= 0) || !std::isfinite(p.tolerance))
-    bad("the tolerance must be non-negative, got " + std::to_string(p.tolerance));
-}
-
 void check_options(const ATMeshOptions& o) {
   if (!(o.cg_tolerance > 0) || !std::isfinite(o.cg_tolerance))
     bad("the CG tolerance must be positive, got " + std::to_string(o.cg_tolerance));
@@ -514,7 +496,7 @@ void check_anchored(const ATMesh& m, std::span<const double> w) {
 double at_mesh_energy(const ATMesh& mesh, std::span<const Point3<double>> g,
                       std::span<const Point3<double>> u, std::span<const double> v,
                       const ATParameters& parameters, double eps, std::span<const double> weights) {
-  check_parameters(parameters);
+  check_at_parameters(parameters, "Ambrosio-Tortorelli (mesh)");
   check_eps(eps);
   check_faces(mesh, g, "g");
   check_faces(mesh, u, "u");
@@ -588,7 +570,7 @@ std::vector<double> at_face_values(const ATMesh& mesh, std::span<const double> v
 ATMeshResult at_mesh_normals(const ATMesh& mesh, std::span<const Point3<double>> g,
                              const ATParameters& parameters, const ATMeshOptions& options,
                              std::span<const double> weights) {
-  check_parameters(parameters);
+  check_at_parameters(parameters, "Ambrosio-Tortorelli (mesh)");
   check_options(options);
   check_faces(mesh, g, "g");
   check_weights(mesh, weights);
