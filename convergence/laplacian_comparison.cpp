@@ -89,7 +89,7 @@ Operator build(const std::string& op, const Surface& sf, double normal_radius, u
     mesh.vertices = c.pointels;
     for (const auto& q : c.surfels) mesh.indices.insert(mesh.indices.end(), q.begin(), q.end());
     const PolygonalCalculus calculus(mesh, ii_normals(sf, R, threads));
-    SparseMatrix L = calculus.laplacian(kPolygonalLambda); // D^T M D: minus the weights
+    SparseMatrix L = calculus.laplacian(kPolygonalLambda, threads); // D^T M D: minus the weights
     for (double& v : L.value) v = -v;
     return {std::move(L), calculus.vertex_masses(), c.pointels, R};
   }

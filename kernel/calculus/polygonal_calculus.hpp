@@ -29,8 +29,12 @@
 //
 // Errors: InvalidArgument for an invalid mesh (PolygonMesh::validate), face normals that are
 // neither absent nor one unit-able vector per face, a degenerate face (A = 0 after the
-// re-embedding: no normal), lambda <= 0 or not finite. Cost: O(sum n_f^2) time and entries;
-// doubles throughout, indices int64.
+// re-embedding: no normal), lambda <= 0 or not finite. Cost: the constructor O(corners) (it
+// keeps the re-embedded vertices, areas, normals and centroids; each face's operators are
+// recomputed where an operator needs them, O(n_f^3)); every global operator O(sum n_f^3) time
+// and O(sum n_f^2) entries. laplacian() builds its rows directly (the vertex-face incidence,
+// each row's columns sorted, no triplets), on `threads` workers, with the same values whatever
+// the count; doubles throughout, indices int64.
 #pragma once
 
 #include <zdg/arith/point.hpp>
@@ -62,10 +66,11 @@ public:
                              std::span<const Point3<double>> face_normals = {});
 
   std::int64_t vertex_count() const { return vertices_; }
-  std::int64_t face_count() const { return static_cast<std::int64_t>(faces_.size()); }
+  std::int64_t face_count() const { return static_cast<std::int64_t>(area_.size()); }
   std::int64_t corner_count() const { return corners_; } ///< sum of the faces' sizes
 
-  const PolygonalFace& face(std::int64_t f) const { return faces_[static_cast<std::size_t>(f)]; }
+  /// The operators of face f (computed on each call: O(n_f^3)).
+  PolygonalFace face(std::int64_t f) const;
 
   SparseMatrix derivative() const;                 ///< D: corners x V
   SparseMatrix gradient() const;                   ///< G: 3F x V
@@ -75,22 +80,24 @@ public:
   SparseMatrix projection() const;                 ///< P: corners x corners
   SparseMatrix inner_product(double lambda) const; ///< M: corners x corners
   SparseMatrix divergence(double lambda) const;    ///< -D^T M V: V x 3F
-  SparseMatrix laplacian(double lambda) const;     ///< D^T M D: V x V
-  std::vector<double> vertex_masses() const;       ///< m_v
-  std::vector<double> face_areas() const;          ///< A_f
+  /// D^T M D: V x V, rows computed by `threads` workers (0 = all cores).
+  SparseMatrix laplacian(double lambda, unsigned threads = 1) const;
+  std::vector<double> vertex_masses() const; ///< m_v
+  std::vector<double> face_areas() const;    ///< A_f
 
 private:
   // The index spaces of the global matrices: vertices, face corners, 3 coordinates per face.
   enum class Space { vertex, corner, face_vector };
   std::int64_t size_of(Space s) const;
   std::int64_t index_in(Space s, std::size_t f, int i) const;
-  // The matrix whose (rows, cols) block of face f is faces_[f].*block.
+  // The matrix whose (rows, cols) block of face f is face(f).*block.
   SparseMatrix assemble(std::vector<double> PolygonalFace::*block, Space rows, Space cols) const;
 
   std::int64_t vertices_ = 0, corners_ = 0;
-  std::vector<std::vector<std::int64_t>> index_; ///< each face's vertex indices
-  std::vector<std::int64_t> first_corner_;
-  std::vector<PolygonalFace> faces_;
+  int face_size_ = 0;               ///< every face's vertex count (PolygonMesh::face_size)
+  std::vector<std::int64_t> index_; ///< face f's vertices at face_size_ f ..
+  std::vector<Point3<double>> x_;   ///< the re-embedded vertices, per corner
+  std::vector<double> area_;        ///< A_f
 };
 
 } // namespace zdg

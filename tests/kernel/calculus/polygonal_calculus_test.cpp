@@ -169,6 +169,53 @@ TEST(PolygonalCalculus, LinearPrecisionOnAPerturbedPlanarGrid) {
   EXPECT_NEAR(area, N * N, 1e-6); // the perturbed grid tiles the same square
 }
 
+// laplacian() builds its rows from the vertex-face incidence; oracle: the faces' blocks
+// face(f).L(lambda) summed by triplets (the definition L = sum_f P_f^T L_f P_f). Random voxel
+// sets (non-planar neighbourhoods, pinched vertices), random per-face normals for the
+// re-embedding, random lambda; the result does not depend on the worker count.
+RC_GTEST_PROP(PolygonalCalculus, LaplacianRowsAreTheSumOfTheFaceBlocks, ()) {
+  const int side = *rc::gen::inRange(2, 6);
+  const auto bits = *rc::gen::container<std::vector<bool>>(std::size_t(side * side * side),
+                                                           rc::gen::arbitrary<bool>());
+  const PolygonMesh m = test::voxel_primal_mesh(
+      [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+        return bits[std::size_t((z * side + y) * side + x)];
+      },
+      0, side - 1);
+  RC_PRE(m.face_count() > 0);
+  std::vector<P3> normals;
+  for (std::int64_t f = 0; f < m.face_count(); ++f) {
+    // the face's own normal, tilted at random (less than 45 degrees: the face stays non-degenerate)
+    const auto idx = m.face(f);
+    const P3 own = unit(cross(m.vertices[std::size_t(idx[1])] - m.vertices[std::size_t(idx[0])],
+                              m.vertices[std::size_t(idx[2])] - m.vertices[std::size_t(idx[1])]));
+    const auto g = rc::gen::map(rc::gen::inRange(-50, 50), [](int v) { return v / 100.0; });
+    normals.push_back(own + P3{*g, *g, *g});
+  }
+  const double lambda = *rc::gen::element(0.01, 0.5, 1.0, 7.0);
+  const PolygonalCalculus calc(m, normals);
+  std::vector<SparseTriplet> t;
+  for (std::int64_t f = 0; f < m.face_count(); ++f) {
+    const auto l = calc.face(f).L(lambda);
+    const auto idx = m.face(f);
+    for (std::size_t i = 0; i < 4; ++i)
+      for (std::size_t j = 0; j < 4; ++j) t.push_back({idx[i], idx[j], l[i * 4 + j]});
+  }
+  const SparseMatrix ref = SparseMatrix::from_triplets(m.vertex_count(), m.vertex_count(), t);
+  const SparseMatrix one = calc.laplacian(lambda);
+  RC_ASSERT(one.row_start == ref.row_start);
+  RC_ASSERT(one.column == ref.column);
+  double scale = 0;
+  for (const double x : ref.value) scale = std::max(scale, std::abs(x));
+  for (std::size_t i = 0; i < ref.value.size(); ++i)
+    RC_ASSERT(std::abs(one.value[i] - ref.value[i]) <= 1e-12 * scale);
+  for (const unsigned threads : {2u, 3u}) {
+    const SparseMatrix many = calc.laplacian(lambda, threads);
+    RC_ASSERT(many.column == one.column);
+    RC_ASSERT(many.value == one.value);
+  }
+}
+
 // The re-embedding: a non-planar quad projected orthogonally to nu gets nu as its normal.
 TEST(PolygonalCalculus, ReEmbeddingTakesTheGivenNormal) {
   const std::vector<P3> x = {{0, 0, 0}, {1, 0, 0.2}, {1, 1, -0.1}, {0, 1, 0.3}};
