@@ -2,8 +2,10 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/kernel/linalg/sparse_spd_solver.hpp>
+#include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -367,68 +369,182 @@ double energy(const ATMesh& m, std::span<const P> g, std::span<const P> u,
   return p.alpha * data + coupling + p.lambda * eps * dirichlet + p.lambda / (4 * eps) * well;
 }
 
-// Jacobi-preconditioned conjugate gradients on a, from x (the previous iterate), until
-// ||r|| <= tol ||b||. Returns the iterations; Error past max_iterations or on a matrix that is
-// not positive definite along the search.
-std::int64_t cg(const SparseMatrix& a, std::span<const double> b, std::vector<double>& x,
-                const ATMeshOptions& o, const char* which) {
-  const std::size_t n = b.size();
-  const std::int64_t max_it =
-      o.cg_max_iterations > 0 ? o.cg_max_iterations : 10 * static_cast<std::int64_t>(n) + 1000;
-  std::vector<double> inv(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double d = a.at(static_cast<std::int64_t>(i), static_cast<std::int64_t>(i));
+// Jacobi-preconditioned conjugate gradients on a for K right-hand sides at once (column k of b
+// and x at K i + k), from x (the previous iterate): K independent CG runs in lockstep, each
+// with its own scalars, each stopping when ||r_k|| <= tol ||b_k|| (its later iterations leave
+// it unchanged), sharing each pass over the matrix. One team of workers for the whole solve;
+// the rows are cut into fixed blocks whose partial dot products every worker sums in block
+// order, so that the iterates do not depend on the thread count and every worker takes the
+// same decisions. Returns the iterations of the K runs together; Error past max_iterations
+// (per run) or on a matrix that is not positive definite along a search direction.
+// The vectors of block_cg, kept from one solve to the next (their pages mapped once; every
+// entry is written before it is read).
+struct CGWork {
+  std::vector<double> inv, r, p, ap;
+};
+
+template <int K>
+std::int64_t block_cg(const SparseMatrix& a, std::span<const double> b, std::span<double> x,
+                      const ATMeshOptions& o, const char* which, CGWork& work) {
+  constexpr std::int64_t kBlock = 4096;
+  const std::int64_t n = a.rows;
+  const std::int64_t blocks = (n + kBlock - 1) / kBlock;
+  const std::int64_t max_it = o.cg_max_iterations > 0 ? o.cg_max_iterations : 10 * n + 1000;
+  work.inv.resize(idx(n));
+  work.r.resize(idx(K * n));
+  work.p.resize(idx(K * n));
+  work.ap.resize(idx(K * n));
+  std::vector<double>&inv = work.inv, &r = work.r, &p = work.p, &ap = work.ap;
+  for (std::int64_t i = 0; i < n; ++i) {
+    const double d = a.at(i, i);
     if (!(d > 0))
       throw Error(std::string("Ambrosio-Tortorelli (mesh): the ") + which +
-                  "-step matrix has a zero diagonal entry at row " +
-                  str(static_cast<std::int64_t>(i)) + " (an inpainted face cut off by v = 0)");
-    inv[i] = 1 / d;
+                  "-step matrix has a zero diagonal entry at row " + str(i) +
+                  " (an inpainted face cut off by v = 0)");
+    inv[idx(i)] = 1 / d;
   }
-  double bb = 0;
-  for (const double t : b) bb += t * t;
-  if (bb == 0) {
-    std::fill(x.begin(), x.end(), 0.0);
-    return 0;
-  }
-  const double stop = o.cg_tolerance * o.cg_tolerance * bb;
-  std::vector<double> r = a.multiply(x, o.threads);
-  double rr = 0, rz = 0;
-  std::vector<double> z(n), p(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    r[i] = b[i] - r[i];
-    z[i] = inv[i] * r[i];
-    p[i] = z[i];
-    rr += r[i] * r[i];
-    rz += r[i] * z[i];
-  }
-  std::int64_t it = 0;
-  while (rr > stop) {
-    if (it == max_it)
-      throw Error(std::string("Ambrosio-Tortorelli (mesh): conjugate gradients on the ") + which +
-                  "-step did not reach the relative residual " + std::to_string(o.cg_tolerance) +
-                  " in " + str(max_it) + " iterations");
-    const auto ap = a.multiply(p, o.threads);
-    double pap = 0;
-    for (std::size_t i = 0; i < n; ++i) pap += p[i] * ap[i];
-    if (!(pap > 0))
-      throw Error(std::string("Ambrosio-Tortorelli (mesh): the ") + which +
-                  "-step matrix is not positive definite (p^T A p = " + std::to_string(pap) + ")");
-    const double step = rz / pap;
-    double rz_new = 0;
-    rr = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      x[i] += step * p[i];
-      r[i] -= step * ap[i];
-      z[i] = inv[i] * r[i];
-      rz_new += r[i] * z[i];
-      rr += r[i] * r[i];
+  using Sums = std::array<double, 3 * K>;
+  std::array<std::vector<Sums>, 2> part{std::vector<Sums>(idx(blocks)),
+                                        std::vector<Sums>(idx(blocks))};
+  const std::int64_t* const row_start = a.row_start.data();
+  const std::int64_t* const column = a.column.data();
+  const double* const value = a.value.data();
+  const auto row_product = [=](std::int64_t i, const double* v, double* out) {
+    double acc[K] = {};
+    for (auto q = row_start[i]; q < row_start[i + 1]; ++q) {
+      const double w = value[q];
+      const double* vj = v + K * column[q];
+      for (int k = 0; k < K; ++k) acc[k] += w * vj[k];
     }
-    const double beta = rz_new / rz;
-    rz = rz_new;
-    for (std::size_t i = 0; i < n; ++i) p[i] = z[i] + beta * p[i];
-    ++it;
-  }
-  return it;
+    for (int k = 0; k < K; ++k) out[k] = acc[k];
+  };
+  std::array<std::int64_t, K> it{};
+  // What stopped the runs (set by rank 0; every rank stops at the same point).
+  enum class Failure { none, not_definite, too_many } failure = Failure::none;
+  double failed_pap = 0;
+  parallel_team(o.threads, blocks, [&](unsigned rank, unsigned size, const auto& sync) {
+    std::array<std::int64_t, K> done{}; // iterations per run (the same on every rank)
+    const auto publish = [&] {
+      if (rank == 0) it = done;
+    };
+    int phase = 0;
+    // fn(i0, i1, sums) over this rank's blocks, then the barrier, then every block's sums
+    // added in block order (two buffers alternate, so that the next phase may write while a
+    // slower rank still reads).
+    const auto sweep = [&](auto&& fn) {
+      auto& buf = part[idx(phase++ % 2)];
+      for (auto blk = std::int64_t(rank); blk < blocks; blk += size) {
+        Sums s{};
+        fn(blk * kBlock, std::min(n, (blk + 1) * kBlock), s);
+        buf[idx(blk)] = s;
+      }
+      sync();
+      Sums total{};
+      for (const auto& s : buf)
+        for (int k = 0; k < 3 * K; ++k) total[idx(k)] += s[idx(k)];
+      return total;
+    };
+    // r = b - A x, p = D^-1 r; sums ||b_k||^2, r_k . D^-1 r_k, ||r_k||^2.
+    const Sums start = sweep([&](std::int64_t i0, std::int64_t i1, Sums& s) {
+      for (std::int64_t i = i0; i < i1; ++i) {
+        double y[K];
+        row_product(i, x.data(), y);
+        for (int k = 0; k < K; ++k) {
+          const auto e = idx(K * i + k);
+          r[e] = b[e] - y[k];
+          p[e] = inv[idx(i)] * r[e];
+          s[idx(k)] += b[e] * b[e];
+          s[idx(K + k)] += r[e] * p[e];
+          s[idx(2 * K + k)] += r[e] * r[e];
+        }
+      }
+    });
+    std::array<double, K> rz{}, stop{};
+    std::array<bool, K> active{}, zero{};
+    bool any = false;
+    for (int k = 0; k < K; ++k) {
+      stop[idx(k)] = o.cg_tolerance * o.cg_tolerance * start[idx(k)];
+      rz[idx(k)] = start[idx(K + k)];
+      zero[idx(k)] = start[idx(k)] == 0; // the solution is 0
+      active[idx(k)] = !zero[idx(k)] && start[idx(2 * K + k)] > stop[idx(k)];
+      any = any || active[idx(k)];
+    }
+    for (auto blk = std::int64_t(rank); blk < blocks; blk += size)
+      for (std::int64_t i = blk * kBlock; i < std::min(n, (blk + 1) * kBlock); ++i)
+        for (int k = 0; k < K; ++k)
+          if (zero[idx(k)]) x[idx(K * i + k)] = 0;
+    while (any) {
+      bool over = false;
+      for (int k = 0; k < K; ++k) over = over || (active[idx(k)] && done[idx(k)] == max_it);
+      if (over) {
+        if (rank == 0) failure = Failure::too_many;
+        return;
+      }
+      // ap = A p, p . ap (p is complete: the last sweep ended on the barrier)
+      const Sums pap = sweep([&](std::int64_t i0, std::int64_t i1, Sums& s) {
+        for (std::int64_t i = i0; i < i1; ++i) {
+          double* y = ap.data() + K * i;
+          row_product(i, p.data(), y);
+          for (int k = 0; k < K; ++k) s[idx(k)] += p[idx(K * i + k)] * y[k];
+        }
+      });
+      std::array<double, K> step{}; // 0 for a finished run: its x and r stay as they are
+      for (int k = 0; k < K; ++k) {
+        if (!active[idx(k)]) continue;
+        if (!(pap[idx(k)] > 0)) {
+          if (rank == 0) {
+            failure = Failure::not_definite;
+            failed_pap = pap[idx(k)];
+          }
+          return;
+        }
+        step[idx(k)] = rz[idx(k)] / pap[idx(k)];
+      }
+      // x += step p, r -= step ap; sums r . D^-1 r and r . r
+      const Sums sums = sweep([&](std::int64_t i0, std::int64_t i1, Sums& s) {
+        for (std::int64_t i = i0; i < i1; ++i)
+          for (int k = 0; k < K; ++k) {
+            const auto e = idx(K * i + k);
+            x[e] += step[idx(k)] * p[e];
+            r[e] -= step[idx(k)] * ap[e];
+            s[idx(k)] += r[e] * inv[idx(i)] * r[e];
+            s[idx(K + k)] += r[e] * r[e];
+          }
+      });
+      std::array<double, K> beta{}; // 0 for a finished run: its p is not used again
+      for (int k = 0; k < K; ++k) {
+        if (!active[idx(k)]) continue;
+        beta[idx(k)] = sums[idx(k)] / rz[idx(k)];
+        rz[idx(k)] = sums[idx(k)];
+        ++done[idx(k)];
+      }
+      // p = D^-1 r + beta p
+      sweep([&](std::int64_t i0, std::int64_t i1, Sums&) {
+        for (std::int64_t i = i0; i < i1; ++i)
+          for (int k = 0; k < K; ++k) {
+            const auto e = idx(K * i + k);
+            p[e] = inv[idx(i)] * r[e] + beta[idx(k)] * p[e];
+          }
+      });
+      any = false;
+      for (int k = 0; k < K; ++k) {
+        active[idx(k)] = active[idx(k)] && sums[idx(K + k)] > stop[idx(k)];
+        any = any || active[idx(k)];
+      }
+    }
+    publish();
+  });
+  if (failure == Failure::too_many)
+    throw Error(std::string("Ambrosio-Tortorelli (mesh): conjugate gradients on the ") + which +
+                "-step did not reach the relative residual " + std::to_string(o.cg_tolerance) +
+                " in " + str(max_it) + " iterations");
+  if (failure == Failure::not_definite)
+    throw Error(std::string("Ambrosio-Tortorelli (mesh): the ") + which +
+                "-step matrix is not positive definite (p^T A p = " + std::to_string(failed_pap) +
+                ")");
+  std::int64_t total = 0;
+  for (const auto t : it) total += t;
+  return total;
 }
 
 // One linear solver per step: CG, or a Cholesky factorization analysed once.
@@ -437,6 +553,8 @@ struct StepSolver {
   const char* which;
   std::optional<SparseSpdSolver> cholesky;
   std::int64_t iterations = 0;
+  CGWork work{};
+  std::vector<double> rhs, iterate; // the step's right-hand side and iterate
 
   void solve(const SparseMatrix& a, std::span<const double> b, std::vector<double>& x) {
     if (options.solver == ATLinearSolver::cholesky) {
@@ -446,7 +564,21 @@ struct StepSolver {
         cholesky.emplace(a);
       x = cholesky->solve(b);
     } else {
-      iterations += cg(a, b, x, options, which);
+      iterations += block_cg<1>(a, b, x, options, which, work);
+    }
+  }
+  // The three coordinates of u (interleaved: x[3 f + k]) with one matrix.
+  void solve3(const SparseMatrix& a, std::span<const double> b, std::vector<double>& x) {
+    if (options.solver == ATLinearSolver::cholesky) {
+      const std::size_t n = b.size() / 3;
+      std::vector<double> bk(n), xk;
+      for (std::size_t k = 0; k < 3; ++k) {
+        for (std::size_t f = 0; f < n; ++f) bk[f] = b[3 * f + k];
+        solve(a, bk, xk);
+        for (std::size_t f = 0; f < n; ++f) x[3 * f + k] = xk[f];
+      }
+    } else {
+      iterations += block_cg<3>(a, b, x, options, which, work);
     }
   }
 };
@@ -455,23 +587,27 @@ void solve_u(const ATMesh& m, Pattern& pat, std::span<const P> g, std::span<cons
              double alpha, std::span<const double> w, std::vector<P>& u, StepSolver& s) {
   assemble_u(m, pat, v, alpha, w);
   const std::size_t n = g.size();
-  std::vector<double> b(n), x(n);
-  for (int k = 0; k < 3; ++k) {
-    const auto c = [k](P& p) -> double& { return k == 0 ? p.x : k == 1 ? p.y : p.z; };
-    for (std::size_t f = 0; f < n; ++f) {
-      P gf = g[f];
-      b[f] = alpha * m.face_area[f] * weight(w, f) * c(gf);
-      x[f] = c(u[f]);
-    }
-    s.solve(pat.m, b, x);
-    for (std::size_t f = 0; f < n; ++f) c(u[f]) = x[f];
+  std::vector<double>&b = s.rhs, &x = s.iterate;
+  b.resize(3 * n);
+  x.resize(3 * n);
+  for (std::size_t f = 0; f < n; ++f) {
+    const double c = alpha * m.face_area[f] * weight(w, f);
+    b[3 * f] = c * g[f].x;
+    b[3 * f + 1] = c * g[f].y;
+    b[3 * f + 2] = c * g[f].z;
+    x[3 * f] = u[f].x;
+    x[3 * f + 1] = u[f].y;
+    x[3 * f + 2] = u[f].z;
   }
+  s.solve3(pat.m, b, x);
+  for (std::size_t f = 0; f < n; ++f) u[f] = {x[3 * f], x[3 * f + 1], x[3 * f + 2]};
 }
 
 void solve_v(const ATMesh& m, Pattern& pat, std::span<const P> u, double lambda, double eps,
              std::vector<double>& v, StepSolver& s) {
   assemble_v(m, pat, u, lambda, eps);
-  std::vector<double> b(v.size());
+  std::vector<double>& b = s.rhs;
+  b.resize(v.size());
   for (std::size_t q = 0; q < b.size(); ++q) b[q] = lambda / (4 * eps) * m.vertex_area[q];
   s.solve(pat.m, b, v);
 }
@@ -580,7 +716,8 @@ ATMeshResult at_mesh_normals(const ATMesh& mesh, std::span<const Point3<double>>
   r.v.assign(idx(mesh.vertex_count), 1.0);
   Pattern upat(mesh.face_count(), face_pairs(mesh));
   Pattern vpat(mesh.vertex_count, vertex_pairs(mesh));
-  StepSolver us{options, "u", std::nullopt, 0}, vs{options, "v", std::nullopt, 0};
+  StepSolver us{options, "u", std::nullopt, 0, {}, {}, {}},
+      vs{options, "v", std::nullopt, 0, {}, {}, {}};
   const auto energy_now = [&](double eps) {
     return energy(mesh, g, r.u, r.v, parameters, eps, weights);
   };

@@ -59,7 +59,10 @@
 // Linear solves: `cholesky` factors each matrix (kernel/linalg/sparse_spd_solver.hpp; the
 // pattern is analysed once); `conjugate_gradient` (the default) runs Jacobi-preconditioned
 // conjugate gradients from the previous iterate until ||r|| <= cg_tolerance ||b|| (relative
-// residual; Error past cg_max_iterations), the matrix-vector products on `threads` threads.
+// residual, for each coordinate of u; Error past cg_max_iterations), the three coordinates of u
+// in lockstep (one pass over the matrix serves the three), every pass on one team of `threads`
+// workers; the dot products are summed by fixed blocks of rows, so that the result is the same,
+// bit for bit, whatever the thread count.
 // The matrices are assembled in place on a pattern computed once: O(F + E) per step.
 //
 // Cost: building the calculus O(F log F) (edges by sorting the directed sides); per half step

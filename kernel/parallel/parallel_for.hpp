@@ -4,6 +4,9 @@
 //                                    from a shared counter (dynamic schedule: uneven work)
 //   parallel_chunks(n, threads, fn)  fn(begin, end) on `threads` contiguous chunks of [0, n)
 //                                    (static schedule: uniform work, locality kept)
+//   parallel_team(threads, fn)       fn(rank, size, sync) on one team of `size` workers for
+//                                    the whole call, sync() a barrier of the team (iterative
+//                                    solvers: one thread start per solve, not per sweep)
 //
 // `threads` = 0 means the hardware's concurrency; the count is clamped to [1, n]. The caller's
 // thread works too. Exceptions: the first exception thrown by fn stops the hand-out of new
@@ -78,6 +81,15 @@ void parallel_for(std::int64_t n, unsigned threads, Fn&& fn) {
   });
   error.rethrow();
 }
+
+/// Runs fn(rank, size, sync) once on each of `size` workers (ranks 0 .. size - 1, the caller is
+/// rank 0; size = worker_count(threads, max), fewer when the system refuses threads), sync()
+/// blocking until every worker of the team has called it. fn must not throw, and every worker
+/// must call sync() the same number of times (decisions that end a loop are taken on values
+/// all ranks share).
+void parallel_team(
+    unsigned threads, std::int64_t max,
+    const std::function<void(unsigned rank, unsigned size, const std::function<void()>& sync)>& fn);
 
 template <class Fn>
 void parallel_chunks(std::int64_t n, unsigned threads, Fn&& fn) {

@@ -224,6 +224,31 @@ TEST(AmbrosioTortorelliMesh, ConjugateGradientsAgreeWithCholesky) {
   EXPECT_EQ(b.solver, "conjugate-gradient");
 }
 
+// The conjugate gradients sum their dot products by fixed blocks of rows in block order, so
+// the minimiser is the same, bit for bit, on any number of threads (a mesh of several blocks).
+TEST(AmbrosioTortorelliMesh, ResultDoesNotDependOnTheThreadCount) {
+  auto m = test::cube_mesh(30); // 10,800 faces: 3 blocks of rows in the u-step
+  test::add_vertex_noise(m.mesh, 0.01, 5);
+  const ATMesh cx = at_mesh(m.mesh);
+  const auto g = mesh_face_normals(m.mesh);
+  ATParameters p;
+  p.max_iterations = 2;
+  ATMeshOptions o;
+  o.threads = 1;
+  const auto one = at_mesh_normals(cx, g, p, o);
+  for (const unsigned t : {2u, 3u}) {
+    o.threads = t;
+    const auto many = at_mesh_normals(cx, g, p, o);
+    EXPECT_EQ(many.cg_iterations, one.cg_iterations);
+    EXPECT_EQ(many.v, one.v);
+    for (std::size_t f = 0; f < one.u.size(); ++f) {
+      EXPECT_EQ(many.u[f].x, one.u[f].x);
+      EXPECT_EQ(many.u[f].y, one.u[f].y);
+      EXPECT_EQ(many.u[f].z, one.u[f].z);
+    }
+  }
+}
+
 // A smooth sphere mesh with its own face normals (no noise): no discontinuity, v stays near 1
 // (the normal turns by about 0.05 rad per face at n = 32: v = c / (c + |delta u|^2 l / d) is
 // about 0.93 with c = lambda / (4 eps)), one segment, normals close to the input.

@@ -101,6 +101,33 @@ TEST(ParallelFor, StopsHandingOutWorkAfterAFailure) {
   EXPECT_LT(ran.load(), 1'000'000);
 }
 
+// parallel_team: ranks 0 .. size - 1 once each, size as worker_count says, and sync() a
+// barrier: after it every rank sees every rank's write of the phase before.
+TEST(ParallelTeam, RanksAndBarrier) {
+  for (const unsigned threads : {1u, 2u, 3u, 4u}) {
+    std::vector<std::int64_t> slot(threads, -1);
+    std::atomic<int> failures{0};
+    std::atomic<unsigned> seen_size{0};
+    zdg::parallel_team(threads, 1000, [&](unsigned rank, unsigned size, const auto& sync) {
+      seen_size = size;
+      for (std::int64_t phase = 0; phase < 200; ++phase) {
+        slot[rank] = phase;
+        sync();
+        for (unsigned r = 0; r < size; ++r)
+          if (slot[r] != phase) ++failures;
+        sync();
+      }
+    });
+    EXPECT_EQ(seen_size.load(), zdg::worker_count(threads, 1000));
+    EXPECT_EQ(failures.load(), 0);
+    for (unsigned r = 0; r < seen_size.load(); ++r) EXPECT_EQ(slot[r], 199);
+  }
+  // no more workers than the items
+  unsigned size_for_one = 0;
+  zdg::parallel_team(4, 1, [&](unsigned, unsigned size, const auto&) { size_for_one = size; });
+  EXPECT_EQ(size_for_one, 1u);
+}
+
 TEST(ParallelFor, WorkerCountIsClampedToTheItems) {
   EXPECT_EQ(zdg::worker_count(8, 3), 3u);
   EXPECT_EQ(zdg::worker_count(8, 0), 1u);
