@@ -369,39 +369,112 @@ double energy(const ATMesh& m, std::span<const P> g, std::span<const P> u,
   return p.alpha * data + coupling + p.lambda * eps * dirichlet + p.lambda / (4 * eps) * well;
 }
 
-// Jacobi-preconditioned conjugate gradients on a for K right-hand sides at once (column k of b
-// and x at K i + k), from x (the previous iterate): K independent CG runs in lockstep, each
-// with its own scalars, each stopping when ||r_k|| <= tol ||b_k|| (its later iterations leave
-// it unchanged), sharing each pass over the matrix. One team of workers for the whole solve;
-// the rows are cut into fixed blocks whose partial dot products every worker sums in block
-// order, so that the iterates do not depend on the thread count and every worker takes the
-// same decisions. Returns the iterations of the K runs together; Error past max_iterations
+// Preconditioned conjugate gradients on a for K right-hand sides at once (column k of b and x
+// at K i + k), from x (the previous iterate): K independent CG runs in lockstep, each with its
+// own scalars, each stopping when ||r_k|| <= tol ||b_k|| (its later iterations leave it
+// unchanged), sharing each pass over the matrix. The rows are cut into fixed blocks of kBlock;
+// the preconditioner is Jacobi, or (incomplete_cholesky) block Jacobi with the zero-fill
+// incomplete Cholesky factor IC(0) of each diagonal block (Meijerink, van der Vorst, Math.
+// Comp. 31, 1977: it exists for the M-matrices of the u-step; a pivot that is not positive is
+// replaced by the diagonal entry, which keeps the preconditioner symmetric positive definite).
+// One team of workers for the whole solve; each block's partial dot products are summed in
+// block order, so that the iterates do not depend on the thread count and every worker takes
+// the same decisions. Returns the iterations of the K runs together; Error past max_iterations
 // (per run) or on a matrix that is not positive definite along a search direction.
-// The vectors of block_cg, kept from one solve to the next (their pages mapped once; every
-// entry is written before it is read).
 struct CGWork {
-  std::vector<double> inv, r, p, ap;
+  std::vector<double> inv, r, p, ap, z;
+  std::vector<double> l, ldiag;     // IC(0): L's entries at A's positions, its diagonal
+  std::vector<std::int64_t> lo, dg; // row i's entries in its block left of the diagonal
 };
+
+constexpr std::int64_t kBlock = 4096;
+
+// IC(0) of the diagonal block [i0, i1) of a (rows' columns sorted).
+void factor_block(const SparseMatrix& a, std::int64_t i0, std::int64_t i1, CGWork& w) {
+  for (std::int64_t i = i0; i < i1; ++i) {
+    const auto rb = a.column.begin() + a.row_start[idx(i)];
+    const auto re = a.column.begin() + a.row_start[idx(i) + 1];
+    w.lo[idx(i)] = std::lower_bound(rb, re, i0) - a.column.begin();
+    w.dg[idx(i)] = std::lower_bound(rb, re, i) - a.column.begin();
+    double d = a.value[idx(w.dg[idx(i)])];
+    for (auto q = w.lo[idx(i)]; q < w.dg[idx(i)]; ++q) {
+      const auto j = a.column[idx(q)];
+      // l_ij = (a_ij - sum_{k < j} l_ik l_jk) / l_jj, k over both rows' lower entries
+      double t = a.value[idx(q)];
+      auto qi = w.lo[idx(i)], qj = w.lo[idx(j)];
+      while (qi < q && qj < w.dg[idx(j)]) {
+        const auto ci = a.column[idx(qi)], cj = a.column[idx(qj)];
+        if (ci == cj)
+          t -= w.l[idx(qi++)] * w.l[idx(qj++)];
+        else if (ci < cj)
+          ++qi;
+        else
+          ++qj;
+      }
+      const double lij = t / w.ldiag[idx(j)];
+      w.l[idx(q)] = lij;
+      d -= lij * lij;
+    }
+    const double aii = a.value[idx(w.dg[idx(i)])];
+    w.ldiag[idx(i)] = std::sqrt(d > 0 && std::isfinite(d) ? d : aii);
+  }
+}
+
+// z = M^-1 r on the rows [i0, i1) (K columns).
+template <int K>
+void precondition(const SparseMatrix& a, std::int64_t i0, std::int64_t i1, bool ic, const CGWork& w,
+                  const double* r, double* z) {
+  if (!ic) {
+    for (std::int64_t i = i0; i < i1; ++i)
+      for (int k = 0; k < K; ++k) z[K * i + k] = w.inv[idx(i)] * r[K * i + k];
+    return;
+  }
+  for (std::int64_t i = i0; i < i1; ++i) { // L y = r
+    double y[K];
+    for (int k = 0; k < K; ++k) y[k] = r[K * i + k];
+    for (auto q = w.lo[idx(i)]; q < w.dg[idx(i)]; ++q) {
+      const double lq = w.l[idx(q)];
+      const double* zj = z + K * a.column[idx(q)];
+      for (int k = 0; k < K; ++k) y[k] -= lq * zj[k];
+    }
+    const double inv = 1 / w.ldiag[idx(i)];
+    for (int k = 0; k < K; ++k) z[K * i + k] = y[k] * inv;
+  }
+  for (std::int64_t i = i1 - 1; i >= i0; --i) { // L^T z = y, by columns of L
+    const double inv = 1 / w.ldiag[idx(i)];
+    double zi[K];
+    for (int k = 0; k < K; ++k) zi[k] = z[K * i + k] *= inv;
+    for (auto q = w.lo[idx(i)]; q < w.dg[idx(i)]; ++q) {
+      const double lq = w.l[idx(q)];
+      double* zj = z + K * a.column[idx(q)];
+      for (int k = 0; k < K; ++k) zj[k] -= lq * zi[k];
+    }
+  }
+}
 
 template <int K>
 std::int64_t block_cg(const SparseMatrix& a, std::span<const double> b, std::span<double> x,
-                      const ATMeshOptions& o, const char* which, CGWork& work) {
-  constexpr std::int64_t kBlock = 4096;
+                      const ATMeshOptions& o, const char* which, CGWork& work,
+                      bool incomplete_cholesky) {
   const std::int64_t n = a.rows;
   const std::int64_t blocks = (n + kBlock - 1) / kBlock;
   const std::int64_t max_it = o.cg_max_iterations > 0 ? o.cg_max_iterations : 10 * n + 1000;
   work.inv.resize(idx(n));
-  work.r.resize(idx(K * n));
-  work.p.resize(idx(K * n));
-  work.ap.resize(idx(K * n));
-  std::vector<double>&inv = work.inv, &r = work.r, &p = work.p, &ap = work.ap;
+  for (auto* v : {&work.r, &work.p, &work.ap, &work.z}) v->resize(idx(K * n));
+  if (incomplete_cholesky) {
+    work.l.resize(a.value.size());
+    work.ldiag.resize(idx(n));
+    work.lo.resize(idx(n));
+    work.dg.resize(idx(n));
+  }
+  std::vector<double>&r = work.r, &p = work.p, &ap = work.ap, &z = work.z;
   for (std::int64_t i = 0; i < n; ++i) {
     const double d = a.at(i, i);
     if (!(d > 0))
       throw Error(std::string("Ambrosio-Tortorelli (mesh): the ") + which +
                   "-step matrix has a zero diagonal entry at row " + str(i) +
                   " (an inpainted face cut off by v = 0)");
-    inv[idx(i)] = 1 / d;
+    work.inv[idx(i)] = 1 / d;
   }
   using Sums = std::array<double, 3 * K>;
   std::array<std::vector<Sums>, 2> part{std::vector<Sums>(idx(blocks)),
@@ -444,20 +517,23 @@ std::int64_t block_cg(const SparseMatrix& a, std::span<const double> b, std::spa
         for (int k = 0; k < 3 * K; ++k) total[idx(k)] += s[idx(k)];
       return total;
     };
-    // r = b - A x, p = D^-1 r; sums ||b_k||^2, r_k . D^-1 r_k, ||r_k||^2.
+    // The block's factor; r = b - A x, p = z = M^-1 r; sums ||b_k||^2, r_k . z_k, ||r_k||^2.
     const Sums start = sweep([&](std::int64_t i0, std::int64_t i1, Sums& s) {
+      if (incomplete_cholesky) factor_block(a, i0, i1, work);
       for (std::int64_t i = i0; i < i1; ++i) {
         double y[K];
         row_product(i, x.data(), y);
+        for (int k = 0; k < K; ++k) r[idx(K * i + k)] = b[idx(K * i + k)] - y[k];
+      }
+      precondition<K>(a, i0, i1, incomplete_cholesky, work, r.data(), z.data());
+      for (std::int64_t i = i0; i < i1; ++i)
         for (int k = 0; k < K; ++k) {
           const auto e = idx(K * i + k);
-          r[e] = b[e] - y[k];
-          p[e] = inv[idx(i)] * r[e];
+          p[e] = z[e];
           s[idx(k)] += b[e] * b[e];
-          s[idx(K + k)] += r[e] * p[e];
+          s[idx(K + k)] += r[e] * z[e];
           s[idx(2 * K + k)] += r[e] * r[e];
         }
-      }
     });
     std::array<double, K> rz{}, stop{};
     std::array<bool, K> active{}, zero{};
@@ -500,14 +576,19 @@ std::int64_t block_cg(const SparseMatrix& a, std::span<const double> b, std::spa
         }
         step[idx(k)] = rz[idx(k)] / pap[idx(k)];
       }
-      // x += step p, r -= step ap; sums r . D^-1 r and r . r
+      // x += step p, r -= step ap, z = M^-1 r; sums r . z and r . r
       const Sums sums = sweep([&](std::int64_t i0, std::int64_t i1, Sums& s) {
         for (std::int64_t i = i0; i < i1; ++i)
           for (int k = 0; k < K; ++k) {
             const auto e = idx(K * i + k);
             x[e] += step[idx(k)] * p[e];
             r[e] -= step[idx(k)] * ap[e];
-            s[idx(k)] += r[e] * inv[idx(i)] * r[e];
+          }
+        precondition<K>(a, i0, i1, incomplete_cholesky, work, r.data(), z.data());
+        for (std::int64_t i = i0; i < i1; ++i)
+          for (int k = 0; k < K; ++k) {
+            const auto e = idx(K * i + k);
+            s[idx(k)] += r[e] * z[e];
             s[idx(K + k)] += r[e] * r[e];
           }
       });
@@ -518,12 +599,12 @@ std::int64_t block_cg(const SparseMatrix& a, std::span<const double> b, std::spa
         rz[idx(k)] = sums[idx(k)];
         ++done[idx(k)];
       }
-      // p = D^-1 r + beta p
+      // p = z + beta p
       sweep([&](std::int64_t i0, std::int64_t i1, Sums&) {
         for (std::int64_t i = i0; i < i1; ++i)
           for (int k = 0; k < K; ++k) {
             const auto e = idx(K * i + k);
-            p[e] = inv[idx(i)] * r[e] + beta[idx(k)] * p[e];
+            p[e] = z[e] + beta[idx(k)] * p[e];
           }
       });
       any = false;
@@ -564,7 +645,7 @@ struct StepSolver {
         cholesky.emplace(a);
       x = cholesky->solve(b);
     } else {
-      iterations += block_cg<1>(a, b, x, options, which, work);
+      iterations += block_cg<1>(a, b, x, options, which, work, true);
     }
   }
   // The three coordinates of u (interleaved: x[3 f + k]) with one matrix.
@@ -578,7 +659,7 @@ struct StepSolver {
         for (std::size_t f = 0; f < n; ++f) x[3 * f + k] = xk[f];
       }
     } else {
-      iterations += block_cg<3>(a, b, x, options, which, work);
+      iterations += block_cg<3>(a, b, x, options, which, work, true);
     }
   }
 };

@@ -57,8 +57,11 @@
 // smallest face first).
 //
 // Linear solves: `cholesky` factors each matrix (kernel/linalg/sparse_spd_solver.hpp; the
-// pattern is analysed once); `conjugate_gradient` (the default) runs Jacobi-preconditioned
-// conjugate gradients from the previous iterate until ||r|| <= cg_tolerance ||b|| (relative
+// pattern is analysed once); `conjugate_gradient` (the default) runs conjugate gradients
+// preconditioned by block Jacobi with the zero-fill incomplete Cholesky factor of each diagonal
+// block of 4096 rows (Meijerink, van der Vorst 1977; a pivot that is not positive, possible on
+// the v-step's matrix, which is not an M-matrix, is replaced by the diagonal entry) from the
+// previous iterate until ||r|| <= cg_tolerance ||b|| (relative
 // residual, for each coordinate of u; Error past cg_max_iterations), the three coordinates of u
 // in lockstep (one pass over the matrix serves the three), every pass on one team of `threads`
 // workers; the dot products are summed by fixed blocks of rows, so that the result is the same,
