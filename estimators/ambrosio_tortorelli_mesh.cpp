@@ -349,23 +349,46 @@ void assemble_v(const ATMesh& m, Pattern& pat, std::span<const P> u, double lamb
   }
 }
 
+// AT_eps, its four sums taken by fixed blocks (of faces, edges, vertices) added in block order:
+// the same value on any number of threads.
 double energy(const ATMesh& m, std::span<const P> g, std::span<const P> u,
               std::span<const double> v, const ATParameters& p, double eps,
-              std::span<const double> w) {
+              std::span<const double> w, unsigned threads = 1) {
+  constexpr std::int64_t kSpan = 1 << 15;
+  const auto nf = std::int64_t(g.size()), ne = m.edge_count(), nv = std::int64_t(v.size());
+  const std::int64_t bf = (nf + kSpan - 1) / kSpan, be = (ne + kSpan - 1) / kSpan,
+                     bv = (nv + kSpan - 1) / kSpan;
+  std::vector<std::array<double, 4>> part(idx(bf + be + bv), {0, 0, 0, 0});
+  parallel_for(bf + be + bv, threads, [&](std::int64_t blk) {
+    auto& s = part[idx(blk)];
+    if (blk < bf) {
+      for (auto f = idx(blk * kSpan); f < idx(std::min(nf, (blk + 1) * kSpan)); ++f) {
+        const P d = u[f] - g[f];
+        s[0] += weight(w, f) * m.face_area[f] * dot(d, d);
+      }
+    } else if (blk < bf + be) {
+      const auto b0 = (blk - bf) * kSpan;
+      for (auto e = idx(b0); e < idx(std::min(ne, b0 + kSpan)); ++e) {
+        const auto& ed = m.edges[e];
+        const double dv = v[idx(ed.b)] - v[idx(ed.a)];
+        s[2] += m.edge_weight[e] * dv * dv;
+        if (ed.face[1] < 0) continue;
+        const double mv = 0.5 * (v[idx(ed.a)] + v[idx(ed.b)]);
+        s[1] += m.jump_weight[e] * mv * mv * squared_jump(u, ed);
+      }
+    } else {
+      const auto b0 = (blk - bf - be) * kSpan;
+      for (auto q = idx(b0); q < idx(std::min(nv, b0 + kSpan)); ++q)
+        s[3] += m.vertex_area[q] * (1 - v[q]) * (1 - v[q]);
+    }
+  });
   double data = 0, coupling = 0, dirichlet = 0, well = 0;
-  for (std::size_t f = 0; f < g.size(); ++f) {
-    const P d = u[f] - g[f];
-    data += weight(w, f) * m.face_area[f] * dot(d, d);
+  for (const auto& s : part) {
+    data += s[0];
+    coupling += s[1];
+    dirichlet += s[2];
+    well += s[3];
   }
-  for (std::size_t e = 0; e < m.edges.size(); ++e) {
-    const auto& ed = m.edges[e];
-    const double dv = v[idx(ed.b)] - v[idx(ed.a)];
-    dirichlet += m.edge_weight[e] * dv * dv;
-    if (ed.face[1] < 0) continue;
-    const double mv = 0.5 * (v[idx(ed.a)] + v[idx(ed.b)]);
-    coupling += m.jump_weight[e] * mv * mv * squared_jump(u, ed);
-  }
-  for (std::size_t q = 0; q < v.size(); ++q) well += m.vertex_area[q] * (1 - v[q]) * (1 - v[q]);
   return p.alpha * data + coupling + p.lambda * eps * dirichlet + p.lambda / (4 * eps) * well;
 }
 
@@ -468,14 +491,21 @@ std::int64_t block_cg(const SparseMatrix& a, std::span<const double> b, std::spa
     work.dg.resize(idx(n));
   }
   std::vector<double>&r = work.r, &p = work.p, &ap = work.ap, &z = work.z;
-  for (std::int64_t i = 0; i < n; ++i) {
-    const double d = a.at(i, i);
-    if (!(d > 0))
+  std::vector<std::int64_t> bad_row(idx(blocks), -1); // the first row of each block with d <= 0
+  parallel_for(blocks, o.threads, [&](std::int64_t blk) {
+    for (std::int64_t i = blk * kBlock; i < std::min(n, (blk + 1) * kBlock); ++i) {
+      const double d = a.at(i, i);
+      if (d > 0)
+        work.inv[idx(i)] = 1 / d;
+      else if (bad_row[idx(blk)] < 0)
+        bad_row[idx(blk)] = i;
+    }
+  });
+  for (const auto i : bad_row)
+    if (i >= 0)
       throw Error(std::string("Ambrosio-Tortorelli (mesh): the ") + which +
                   "-step matrix has a zero diagonal entry at row " + str(i) +
                   " (an inpainted face cut off by v = 0)");
-    work.inv[idx(i)] = 1 / d;
-  }
   using Sums = std::array<double, 3 * K>;
   std::array<std::vector<Sums>, 2> part{std::vector<Sums>(idx(blocks)),
                                         std::vector<Sums>(idx(blocks))};
@@ -800,7 +830,7 @@ ATMeshResult at_mesh_normals(const ATMesh& mesh, std::span<const Point3<double>>
   StepSolver us{options, "u", std::nullopt, 0, {}, {}, {}},
       vs{options, "v", std::nullopt, 0, {}, {}, {}};
   const auto energy_now = [&](double eps) {
-    return energy(mesh, g, r.u, r.v, parameters, eps, weights);
+    return energy(mesh, g, r.u, r.v, parameters, eps, weights, options.threads);
   };
   for (int k = 0;; ++k) {
     const double eps = parameters.epsilon1 / std::pow(parameters.epsilon_factor, k);
