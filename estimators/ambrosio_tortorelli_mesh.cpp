@@ -406,8 +406,10 @@ double energy(const ATMesh& m, std::span<const P> g, std::span<const P> u,
 // (per run) or on a matrix that is not positive definite along a search direction.
 struct CGWork {
   std::vector<double> inv, r, p, ap, z;
-  std::vector<double> l, ldiag;     // IC(0): L's entries at A's positions, its diagonal
-  std::vector<std::int64_t> lo, dg; // row i's entries in its block left of the diagonal
+  std::vector<double> l, ldiag_inv; // IC(0): L's entries at A's positions, 1 / its diagonal
+  // Row i's entries in its block: [lo, dg) left of the diagonal, (dg, hi) right of it; tpos of
+  // an entry (i, j) right of the diagonal: the position of (j, i), where L holds l_ji.
+  std::vector<std::int64_t> lo, dg, hi, tpos;
 };
 
 constexpr std::int64_t kBlock = 4096;
@@ -419,7 +421,9 @@ void factor_block(const SparseMatrix& a, std::int64_t i0, std::int64_t i1, CGWor
     const auto re = a.column.begin() + a.row_start[idx(i) + 1];
     w.lo[idx(i)] = std::lower_bound(rb, re, i0) - a.column.begin();
     w.dg[idx(i)] = std::lower_bound(rb, re, i) - a.column.begin();
-    double d = a.value[idx(w.dg[idx(i)])];
+    w.hi[idx(i)] = std::lower_bound(rb, re, i1) - a.column.begin();
+    const double aii = a.value[idx(w.dg[idx(i)])];
+    double d = aii;
     for (auto q = w.lo[idx(i)]; q < w.dg[idx(i)]; ++q) {
       const auto j = a.column[idx(q)];
       // l_ij = (a_ij - sum_{k < j} l_ik l_jk) / l_jj, k over both rows' lower entries
@@ -434,12 +438,14 @@ void factor_block(const SparseMatrix& a, std::int64_t i0, std::int64_t i1, CGWor
         else
           ++qj;
       }
-      const double lij = t / w.ldiag[idx(j)];
+      const double lij = t * w.ldiag_inv[idx(j)];
       w.l[idx(q)] = lij;
       d -= lij * lij;
+      // row j's entry (j, i), right of its diagonal: where the backward sweep finds l_ij
+      const auto jb = a.column.begin() + w.dg[idx(j)], je = a.column.begin() + w.hi[idx(j)];
+      w.tpos[idx(std::lower_bound(jb, je, i) - a.column.begin())] = q;
     }
-    const double aii = a.value[idx(w.dg[idx(i)])];
-    w.ldiag[idx(i)] = std::sqrt(d > 0 && std::isfinite(d) ? d : aii);
+    w.ldiag_inv[idx(i)] = 1 / std::sqrt(d > 0 && std::isfinite(d) ? d : aii);
   }
 }
 
@@ -452,26 +458,26 @@ void precondition(const SparseMatrix& a, std::int64_t i0, std::int64_t i1, bool 
       for (int k = 0; k < K; ++k) z[K * i + k] = w.inv[idx(i)] * r[K * i + k];
     return;
   }
-  for (std::int64_t i = i0; i < i1; ++i) { // L y = r
+  const std::int64_t* const column = a.column.data();
+  const double* const l = w.l.data();
+  for (std::int64_t i = i0; i < i1; ++i) { // L y = r (y in z)
     double y[K];
     for (int k = 0; k < K; ++k) y[k] = r[K * i + k];
     for (auto q = w.lo[idx(i)]; q < w.dg[idx(i)]; ++q) {
-      const double lq = w.l[idx(q)];
-      const double* zj = z + K * a.column[idx(q)];
+      const double* zj = z + K * column[q];
+      for (int k = 0; k < K; ++k) y[k] -= l[q] * zj[k];
+    }
+    for (int k = 0; k < K; ++k) z[K * i + k] = y[k] * w.ldiag_inv[idx(i)];
+  }
+  for (std::int64_t i = i1 - 1; i >= i0; --i) { // L^T z = y, row i of L^T by tpos
+    double y[K];
+    for (int k = 0; k < K; ++k) y[k] = z[K * i + k];
+    for (auto q = w.dg[idx(i)] + 1; q < w.hi[idx(i)]; ++q) {
+      const double* zj = z + K * column[q];
+      const double lq = l[w.tpos[idx(q)]];
       for (int k = 0; k < K; ++k) y[k] -= lq * zj[k];
     }
-    const double inv = 1 / w.ldiag[idx(i)];
-    for (int k = 0; k < K; ++k) z[K * i + k] = y[k] * inv;
-  }
-  for (std::int64_t i = i1 - 1; i >= i0; --i) { // L^T z = y, by columns of L
-    const double inv = 1 / w.ldiag[idx(i)];
-    double zi[K];
-    for (int k = 0; k < K; ++k) zi[k] = z[K * i + k] *= inv;
-    for (auto q = w.lo[idx(i)]; q < w.dg[idx(i)]; ++q) {
-      const double lq = w.l[idx(q)];
-      double* zj = z + K * a.column[idx(q)];
-      for (int k = 0; k < K; ++k) zj[k] -= lq * zi[k];
-    }
+    for (int k = 0; k < K; ++k) z[K * i + k] = y[k] * w.ldiag_inv[idx(i)];
   }
 }
 
@@ -486,9 +492,9 @@ std::int64_t block_cg(const SparseMatrix& a, std::span<const double> b, std::spa
   for (auto* v : {&work.r, &work.p, &work.ap, &work.z}) v->resize(idx(K * n));
   if (incomplete_cholesky) {
     work.l.resize(a.value.size());
-    work.ldiag.resize(idx(n));
-    work.lo.resize(idx(n));
-    work.dg.resize(idx(n));
+    work.tpos.resize(a.value.size());
+    work.ldiag_inv.resize(idx(n));
+    for (auto* v : {&work.lo, &work.dg, &work.hi}) v->resize(idx(n));
   }
   std::vector<double>&r = work.r, &p = work.p, &ap = work.ap, &z = work.z;
   std::vector<std::int64_t> bad_row(idx(blocks), -1); // the first row of each block with d <= 0
