@@ -423,22 +423,22 @@ void solve_free_block(const Block& bl, const std::array<bool, 3>& free, const do
   }
 }
 
-// MPRGP (Dostal, Schoberl, Comput. Optim. Appl. 30, 2005; Dostal, "Optimal quadratic
-// programming algorithms", Springer 2009, ch. 8) with preconditioning in face: min f(y) = y^T A
-// y / 2 - b^T y over the box |y_k| <= u_k (u_k may be infinite), the unknowns in blocks of 3
-// (one vertex). Conjugate gradient steps on the free set, preconditioned by the free part of
-// A's 3x3 diagonal blocks (z = M_F^{-1} phi, zero on the clamped coordinates), while they stay
-// feasible and the chopped gradient is small against the free one (Gamma = 1); expansion steps
-// when CG would leave the box: the feasible CG step, then a projected gradient step of fixed
-// length abar <= 2 / |A| -- or the whole CG step projected onto the box when its f is lower
-// (cf. Kruzik, Horak, Cermak, Pospisil, Pecha, "Active set expansion strategies in MPRGP
-// algorithm", Adv. Eng. Softw. 149, 2020), so f decreases at least as in MPRGP; proportioning
-// steps (along the chopped gradient) to release constraints. Stops when the projected gradient
-// g^P (the free gradient plus the chopped one, zero exactly at the KKT point) has |g^P|_2 <=
-// eps, checked again on the gradient recomputed from y (the recurrence's rounding does not
-// decide). Without bounds it is the block-Jacobi preconditioned conjugate gradient method.
-// Each pass over the unknowns does the work of one vertex at a time (update, preconditioner,
-// the sums of the next test), in fixed blocks: the same rounding for any thread count.
+// MPRGP (Dostal, Schoberl, Comput. Optim. Appl. 30, 2005; Dostal, "Optimal quadratic programming
+// algorithms", Springer 2009, ch. 8) with preconditioning in face: min f(y) = y^T A y / 2 - b^T y
+// over the box |y_k| <= u_k (u_k may be infinite), the unknowns in blocks of 3 (one vertex).
+// Conjugate gradient steps on the free set, preconditioned by the free part of A's 3x3 diagonal
+// blocks (z = M_F^{-1} phi, zero on the clamped coordinates), while they stay feasible and the
+// chopped gradient is small against the free one (Gamma = 1); expansion steps when CG would leave
+// the box: the whole CG step projected onto the box when f there is below f at the feasible CG step
+// (cf. the "projected CG" expansion of Kruzik, Horak, Cermak, Pospisil, Pecha, "Active set
+// expansion strategies in MPRGP algorithm", Adv. Eng. Softw. 149, 2020), else MPRGP's: the feasible
+// CG step, then a projected gradient step of fixed length abar <= 2 / |A|; f decreases at every
+// step; proportioning steps (along the chopped gradient) to release constraints. Stops when the
+// projected gradient g^P (the free gradient plus the chopped one, zero exactly at the KKT point)
+// has |g^P|_2 <= eps, checked again on the gradient recomputed from y (the recurrence's rounding
+// does not decide). Without bounds it is the block-Jacobi preconditioned conjugate gradient method.
+// Each pass over the unknowns does the work of one vertex at a time (update, preconditioner, the
+// sums of the next test), in fixed blocks: the same rounding for any thread count.
 struct MprgpOutcome {
   int iterations = 0;
   bool converged = false;
@@ -527,16 +527,6 @@ MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<d
     out[2] = std::max(out[2], 0.0);
     return out;
   };
-  auto energy = [&](const std::vector<double>& yy, const std::vector<double>& gg) {
-    return block_sums<1>(n, threads,
-                         [&](std::int64_t lo, std::int64_t hi) {
-                           std::array<double, 1> t{};
-                           for (auto k = std::size_t(lo); k < std::size_t(hi); ++k)
-                             t[0] += yy[k] * (gg[k] - b[k]);
-                           return t;
-                         })[0] /
-           2;
-  };
   apply(y, g);
   std::array<double, 3> sums = restart(true);
   MprgpOutcome out;
@@ -590,31 +580,39 @@ MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<d
           return s;
         }));
       } else { // expansion step
-        // candidate: the whole CG step projected onto the box
+        // The whole CG step projected onto the box, kept when its f is below f at the feasible
+        // step y - af p (where MPRGP's expansion starts); else MPRGP's expansion from there.
         parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
           for (auto k = std::size_t(lo); k < std::size_t(hi); ++k)
             y_try[k] = std::clamp(y[k] - acg * p[k], -u[k], u[k]);
         });
         apply(y_try, g_try);
-        parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-          for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) g_try[k] -= b[k];
-        });
-        const double f_try = energy(y_try, g_try);
-        // MPRGP's: the feasible step, then the projected gradient step of length abar
-        parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+        const auto f2 = block_sums<2>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+          std::array<double, 2> t{};
           for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
-            y[k] = std::clamp(y[k] - af * p[k], -u[k], u[k]);
-            g[k] -= af * ap[k];
-            y[k] = std::clamp(y[k] - abar * free_part(k), -u[k], u[k]);
+            g_try[k] -= b[k];
+            t[0] += y_try[k] * (g_try[k] - b[k]);
+            t[1] += y[k] * (g[k] - b[k]);
           }
+          return t;
         });
-        apply(y, g);
-        parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-          for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) g[k] -= b[k];
-        });
-        if (f_try < energy(y, g)) {
+        // f(y) = y^T (g - b) / 2; along -p it is a parabola
+        const double f_feasible = f2[1] / 2 - af * pa[1] + af * af * pa[0] / 2;
+        if (f2[0] / 2 < f_feasible) {
           std::swap(y, y_try);
           std::swap(g, g_try);
+        } else {
+          parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+            for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
+              y[k] = std::clamp(y[k] - af * p[k], -u[k], u[k]);
+              g[k] -= af * ap[k];
+              y[k] = std::clamp(y[k] - abar * free_part(k), -u[k], u[k]);
+            }
+          });
+          apply(y, g);
+          parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+            for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) g[k] -= b[k];
+          });
         }
         sums = restart(false);
         recomputed = true;

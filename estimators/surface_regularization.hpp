@@ -23,16 +23,16 @@
 //
 // Solvers. `conjugate_gradient` (and `automatic` with clamp, or past 30,000 vertices): MPRGP
 // (Dostal, Schoberl, Comput. Optim. Appl. 30(1), 2005) with preconditioning in face, on the
-// Jacobi-scaled problem y = D^{1/2} d, D = diag Q (a box stays a box): conjugate gradient steps
-// on the free coordinates, preconditioned by each vertex's 3x3 diagonal block of D^{-1/2} Q
-// D^{-1/2} restricted to its free coordinates (block Jacobi: the block holds the vertex's normal
-// directions, which a diagonal scaling splits across the axes); expansion steps when a CG step
-// would leave the box, each taking whichever has the lower E of MPRGP's (the feasible part of
-// the CG step, then a projected gradient step of length 1.9 / (Gershgorin bound)) and the whole
-// CG step projected onto the box (cf. Kruzik et al., Adv. Eng. Softw. 149, 2020), so E decreases
-// at least as in MPRGP; proportioning steps releasing constraints. Q is applied without
-// assembly (two gathers over the vertices, O(F) per product: about 40 flops per corner);
-// without clamp it is block-Jacobi preconditioned CG.
+// Jacobi-scaled problem y = D^{1/2} d, D = diag Q (a box stays a box): conjugate gradient steps on
+// the free coordinates, preconditioned by each vertex's 3x3 diagonal block of D^{-1/2} Q D^{-1/2}
+// restricted to its free coordinates (block Jacobi: the block holds the vertex's normal directions,
+// which a diagonal scaling splits across the axes); expansion steps when a CG step would leave the
+// box: the whole CG step projected onto the box when E there is below E at the feasible part of the
+// CG step (cf. the projected-CG expansion of Kruzik et al., Adv. Eng. Softw. 149, 2020), else
+// MPRGP's (that feasible step, then a projected gradient step of length 1.9 / (Gershgorin bound)),
+// so E decreases at every step; proportioning steps releasing constraints. Q is applied without
+// assembly (two gathers over the vertices, O(F) per product: about 40 flops per corner); without
+// clamp it is block-Jacobi preconditioned CG.
 // Stopping criterion (stated, and checked on the gradient recomputed from the result): the
 // scaled projected gradient -- the KKT residual, D^{-1/2} times the gradient on the free
 // coordinates plus its component pointing out of the box on the clamped ones, zero exactly at
