@@ -261,6 +261,20 @@ double scaled_gershgorin(const PolygonMesh& mesh, std::span<const Vec> normals, 
   return *std::max_element(rows.begin(), rows.end());
 }
 
+// Per-block partial results over [0, n) in fixed blocks of `block` items, fn(b, e) giving the
+// K partials of [b, e): combined in block order by the caller, the same rounding for any thread
+// count.
+template <std::size_t K, class Fn>
+std::vector<std::array<double, K>> block_partials(std::int64_t n, std::int64_t block,
+                                                  unsigned threads, Fn&& fn) {
+  const std::int64_t blocks = (n + block - 1) / block;
+  std::vector<std::array<double, K>> part(static_cast<std::size_t>(blocks));
+  parallel_chunks(blocks, threads, [&](std::int64_t b, std::int64_t e) {
+    for (auto k = b; k < e; ++k) part[std::size_t(k)] = fn(k * block, std::min(n, (k + 1) * block));
+  });
+  return part;
+}
+
 // Q applied without assembling it (the minimizer's inner loop): per vertex i, its corners
 // (face f, next and previous vertex: the two sides of f at i) and its umbrella N(i):
 //   (Q x)_i = alpha x_i + beta sum_corners n_f (n_f . (2 x_i - x_next - x_prev))
@@ -296,42 +310,26 @@ public:
   /// y = S Q S x, S = diag(scale) (the identity when scale is empty).
   void apply(std::span<const double> x, std::span<double> y,
              std::span<const double> scale = {}) const {
-    auto at = [](std::span<const double> v, std::int64_t i) {
-      return Vec{v[std::size_t(3 * i)], v[std::size_t(3 * i + 1)], v[std::size_t(3 * i + 2)]};
-    };
-    const bool scaled = !scale.empty();
-    auto xs = [&](std::int64_t i) {
-      const auto k = std::size_t(3 * i);
-      return scaled ? Vec{scale[k] * x[k], scale[k + 1] * x[k + 1], scale[k + 2] * x[k + 2]}
-                    : Vec{x[k], x[k + 1], x[k + 2]};
-    };
+    laplacian(x, scale);
     parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
-      for (auto i = b; i < e; ++i) {
-        Vec s{0, 0, 0};
-        for (auto j : in_.around(i)) s += xs(j);
-        const Vec l = xs(i) - inv_degree_[std::size_t(i)] * s;
-        lap_[std::size_t(3 * i)] = l.x;
-        lap_[std::size_t(3 * i + 1)] = l.y;
-        lap_[std::size_t(3 * i + 2)] = l.z;
-      }
+      for (auto i = b; i < e; ++i) output(x, y, scale, i);
     });
-    const std::span<const double> lap(lap_);
-    parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
+  }
+
+  /// apply, and epilogue(i, partials) after each vertex i's output, in fixed blocks of vertices
+  /// (the partials of each block, in order: the same for any thread count).
+  template <std::size_t K, class Epilogue>
+  std::vector<std::array<double, K>>
+  apply_reduce(std::span<const double> x, std::span<double> y, std::span<const double> scale,
+               const std::array<double, K>& init, Epilogue&& epilogue) const {
+    laplacian(x, scale);
+    return block_partials<K>(nv_, 2048, p_.threads, [&](std::int64_t b, std::int64_t e) {
+      std::array<double, K> part = init;
       for (auto i = b; i < e; ++i) {
-        const Vec xi = xs(i);
-        Vec align{0, 0, 0};
-        for (auto c = corner_start_[std::size_t(i)]; c < corner_start_[std::size_t(i + 1)]; ++c) {
-          const auto& k = corners_[std::size_t(c)];
-          align += dot(k.n, 2.0 * xi - xs(k.next) - xs(k.prev)) * k.n;
-        }
-        Vec fair = at(lap, i);
-        for (auto m : in_.around(i)) fair -= inv_degree_[std::size_t(m)] * at(lap, m);
-        const Vec out = p_.alpha * xi + p_.beta * align + p_.gamma * fair;
-        const auto k = std::size_t(3 * i);
-        y[k] = scaled ? scale[k] * out.x : out.x;
-        y[k + 1] = scaled ? scale[k + 1] * out.y : out.y;
-        y[k + 2] = scaled ? scale[k + 2] * out.z : out.z;
+        output(x, y, scale, i);
+        epilogue(i, part);
       }
+      return part;
     });
   }
 
@@ -359,6 +357,47 @@ public:
   }
 
 private:
+  static Vec at(std::span<const double> v, std::int64_t i) {
+    return Vec{v[std::size_t(3 * i)], v[std::size_t(3 * i + 1)], v[std::size_t(3 * i + 2)]};
+  }
+  static Vec scaled_at(std::span<const double> x, std::span<const double> scale, std::int64_t i) {
+    const auto k = std::size_t(3 * i);
+    return scale.empty() ? Vec{x[k], x[k + 1], x[k + 2]}
+                         : Vec{scale[k] * x[k], scale[k + 1] * x[k + 1], scale[k + 2] * x[k + 2]};
+  }
+  // lap_ = F (S x)
+  void laplacian(std::span<const double> x, std::span<const double> scale) const {
+    parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
+      for (auto i = b; i < e; ++i) {
+        Vec s{0, 0, 0};
+        for (auto j : in_.around(i)) s += scaled_at(x, scale, j);
+        const Vec l = scaled_at(x, scale, i) - inv_degree_[std::size_t(i)] * s;
+        lap_[std::size_t(3 * i)] = l.x;
+        lap_[std::size_t(3 * i + 1)] = l.y;
+        lap_[std::size_t(3 * i + 2)] = l.z;
+      }
+    });
+  }
+  // (S Q S x)_i from lap_
+  void output(std::span<const double> x, std::span<double> y, std::span<const double> scale,
+              std::int64_t i) const {
+    const Vec xi = scaled_at(x, scale, i);
+    Vec align{0, 0, 0};
+    for (auto c = corner_start_[std::size_t(i)]; c < corner_start_[std::size_t(i + 1)]; ++c) {
+      const auto& k = corners_[std::size_t(c)];
+      align += dot(k.n, 2.0 * xi - scaled_at(x, scale, k.next) - scaled_at(x, scale, k.prev)) * k.n;
+    }
+    const std::span<const double> lap(lap_);
+    Vec fair = at(lap, i);
+    for (auto m : in_.around(i)) fair -= inv_degree_[std::size_t(m)] * at(lap, m);
+    const Vec out = p_.alpha * xi + p_.beta * align + p_.gamma * fair;
+    const auto k = std::size_t(3 * i);
+    const bool scaled = !scale.empty();
+    y[k] = scaled ? scale[k] * out.x : out.x;
+    y[k + 1] = scaled ? scale[k + 1] * out.y : out.y;
+    y[k + 2] = scaled ? scale[k + 2] * out.z : out.z;
+  }
+
   struct Corner {
     std::int64_t next, prev;
     Vec n; // the normal of the corner's face
@@ -372,19 +411,12 @@ private:
   mutable std::vector<double> lap_;
 };
 
-// Per-block partial results over [0, n) in fixed blocks of `block` items, fn(b, e) giving the
-// K partials of [b, e): combined in block order by the caller, the same rounding for any thread
-// count.
-template <std::size_t K, class Fn>
-std::vector<std::array<double, K>> block_partials(std::int64_t n, std::int64_t block,
-                                                  unsigned threads, Fn&& fn) {
-  const std::int64_t blocks = (n + block - 1) / block;
-  std::vector<std::array<double, K>> part(static_cast<std::size_t>(blocks));
-  parallel_chunks(blocks, threads, [&](std::int64_t b, std::int64_t e) {
-    for (auto k = b; k < e; ++k) part[std::size_t(k)] = fn(k * block, std::min(n, (k + 1) * block));
-  });
-  return part;
-}
+// S Q S, the Jacobi-scaled operator of the minimizer.
+struct ScaledOperator {
+  const EnergyOperator& op;
+  std::span<const double> s;
+  void operator()(std::span<const double> x, std::span<double> y) const { op.apply(x, y, s); }
+};
 
 template <std::size_t K, class Fn>
 std::array<double, K> block_sums(std::int64_t n, unsigned threads, Fn&& fn) {
@@ -445,10 +477,9 @@ struct MprgpOutcome {
   double residual = 0; // |g^P(y)|_2 at the end (recomputed)
 };
 
-MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<double>)>& apply,
-                   std::span<const Block> blocks, std::span<const double> b,
-                   std::span<const double> u, double abar, double eps, int max_iterations,
-                   unsigned threads, std::vector<double>& y) {
+MprgpOutcome mprgp(const ScaledOperator& apply, std::span<const Block> blocks,
+                   std::span<const double> b, std::span<const double> u, double abar, double eps,
+                   int max_iterations, unsigned threads, std::vector<double>& y) {
   const auto n = std::int64_t(b.size());
   const std::int64_t nv = n / 3;
   const auto N = std::size_t(n);
@@ -504,25 +535,25 @@ MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<d
     }));
   };
   // p^T A p, g^T p and the largest step along -p that stays in the box
-  auto along = [&](const std::vector<double>& v) {
-    const auto part =
-        block_partials<3>(n, 3 * block, threads, [&](std::int64_t lo, std::int64_t hi) {
-          std::array<double, 3> s{0, 0, std::numeric_limits<double>::infinity()};
-          for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
-            s[0] += v[k] * ap[k];
-            s[1] += g[k] * v[k];
+  // ap = A v, with v^T A v, g^T v and the largest step along -v that stays in the box
+  auto apply_along = [&](const std::vector<double>& v) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const auto part = apply.op.apply_reduce<3>(
+        v, ap, apply.s, {0, 0, inf}, [&](std::int64_t i, std::array<double, 3>& t) {
+          for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) {
+            t[0] += v[k] * ap[k];
+            t[1] += g[k] * v[k];
             if (v[k] > 0)
-              s[2] = std::min(s[2], (y[k] + u[k]) / v[k]);
+              t[2] = std::min(t[2], (y[k] + u[k]) / v[k]);
             else if (v[k] < 0)
-              s[2] = std::min(s[2], (y[k] - u[k]) / v[k]);
+              t[2] = std::min(t[2], (y[k] - u[k]) / v[k]);
           }
-          return s;
         });
-    std::array<double, 3> out{0, 0, std::numeric_limits<double>::infinity()};
-    for (const auto& s : part) {
-      out[0] += s[0];
-      out[1] += s[1];
-      out[2] = std::min(out[2], s[2]);
+    std::array<double, 3> out{0, 0, inf};
+    for (const auto& t : part) {
+      out[0] += t[0];
+      out[1] += t[1];
+      out[2] = std::min(out[2], t[2]);
     }
     out[2] = std::max(out[2], 0.0);
     return out;
@@ -547,8 +578,7 @@ MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<d
     ++out.iterations;
     recomputed = false;
     if (sums[0] <= sums[1]) {
-      apply(p, ap);
-      const auto pa = along(p);
+      const auto pa = apply_along(p);
       if (!(pa[0] > 0)) { // p = 0 up to rounding: restart from the true gradient
         apply(y, g);
         sums = restart(true);
@@ -622,8 +652,7 @@ MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<d
       parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
         for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) d[k] = chopped(k);
       });
-      apply(d, ap);
-      const auto da = along(d);
+      const auto da = apply_along(d);
       const double a = std::min(da[1] / da[0], da[2]);
       parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
         for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
@@ -779,7 +808,7 @@ std::vector<double> regularize_iterative(const PolygonMesh& mesh, std::span<cons
     b[k] = -s[k] * g[k];
     u[k] = p.clamp ? half / s[k] : std::numeric_limits<double>::infinity();
   }
-  auto apply = [&](std::span<const double> y, std::span<double> out) { op.apply(y, out, s); };
+  const ScaledOperator apply{op, s};
   const double abar = 1.9 / scaled_gershgorin(mesh, normals, in, p, s);
   const double b_norm = std::sqrt(std::inner_product(b.begin(), b.end(), b.begin(), 0.0));
   std::vector<double> y(N, 0.0);
