@@ -10,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <numeric>
 
@@ -616,19 +615,23 @@ MprgpOutcome mprgp(const ScaledOperator& apply, std::span<const Block> blocks,
           for (auto k = std::size_t(lo); k < std::size_t(hi); ++k)
             y_try[k] = std::clamp(y[k] - acg * p[k], -u[k], u[k]);
         });
-        apply(y_try, g_try);
-        const auto f2 = block_sums<2>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-          std::array<double, 2> t{};
-          for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
-            g_try[k] -= b[k];
-            t[0] += y_try[k] * (g_try[k] - b[k]);
-            t[1] += y[k] * (g[k] - b[k]);
-          }
-          return t;
-        });
+        std::array<double, 2> f2{};
+        const auto part = apply.op.apply_reduce<2>(
+            y_try, g_try, apply.s, {0, 0}, [&](std::int64_t i, std::array<double, 2>& t) {
+              for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) {
+                g_try[k] -= b[k];
+                t[0] += y_try[k] * (g_try[k] - b[k]);
+                t[1] += y[k] * (g[k] - b[k]);
+              }
+            });
+        for (const auto& t : part) {
+          f2[0] += t[0];
+          f2[1] += t[1];
+        }
         // f(y) = y^T (g - b) / 2; along -p it is a parabola
         const double f_feasible = f2[1] / 2 - af * pa[1] + af * af * pa[0] / 2;
-        if (f2[0] / 2 < f_feasible) {
+        const bool taken = f2[0] / 2 < f_feasible;
+        if (taken) {
           std::swap(y, y_try);
           std::swap(g, g_try);
         } else {
@@ -640,11 +643,8 @@ MprgpOutcome mprgp(const ScaledOperator& apply, std::span<const Block> blocks,
             }
           });
           apply(y, g);
-          parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-            for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) g[k] -= b[k];
-          });
         }
-        sums = restart(false);
+        sums = restart(!taken); // g_try was A y_try - b; here g = A y, b still to subtract
         recomputed = true;
       }
     } else { // proportioning step along the chopped gradient (into the box)
