@@ -533,7 +533,6 @@ MprgpOutcome mprgp(const ScaledOperator& apply, std::span<const Block> blocks,
       return s;
     }));
   };
-  // p^T A p, g^T p and the largest step along -p that stays in the box
   // ap = A v, with v^T A v, g^T v and the largest step along -v that stays in the box
   auto apply_along = [&](const std::vector<double>& v) {
     constexpr double inf = std::numeric_limits<double>::infinity();
