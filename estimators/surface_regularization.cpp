@@ -332,6 +332,33 @@ public:
     });
   }
 
+  /// y += S Q S x for an x that is zero outside the vertices `moved` (sorted, no repeats):
+  /// only the rows within 2 rings of them change, computed serially (the same rounding for any
+  /// thread count). O(|moved|) for bounded degrees. Overwrites the scratch of apply.
+  void add_local(std::span<const double> x, std::span<const std::int64_t> moved,
+                 std::span<double> y, std::span<const double> scale) const {
+    auto grow = [&](std::span<const std::int64_t> set) {
+      std::vector<std::int64_t> out(set.begin(), set.end());
+      for (auto v : set)
+        for (auto j : in_.around(v)) out.push_back(j);
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+      return out;
+    };
+    // F x is zero outside ring 1 of `moved`, the rows of Q x outside ring 2; the rows of ring 2
+    // read F x on ring 3.
+    const auto ring1 = grow(moved);
+    const auto ring2 = grow(ring1);
+    for (auto v : grow(ring2)) laplacian_at(x, scale, v);
+    for (auto i : ring2) {
+      const Vec v = value(x, scale, i);
+      const auto k = std::size_t(3 * i);
+      y[k] += v.x;
+      y[k + 1] += v.y;
+      y[k + 2] += v.z;
+    }
+  }
+
   /// The 3x3 diagonal blocks of Q (row-major, one per vertex): (alpha + gamma (1 + sum_{m in
   /// N(i)} 1/|N(m)|^2)) I + 2 beta sum_corners n n^T.
   std::vector<Block> diagonal_blocks() const {
@@ -367,19 +394,11 @@ private:
   // lap_ = F (S x)
   void laplacian(std::span<const double> x, std::span<const double> scale) const {
     parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
-      for (auto i = b; i < e; ++i) {
-        Vec s{0, 0, 0};
-        for (auto j : in_.around(i)) s += scaled_at(x, scale, j);
-        const Vec l = scaled_at(x, scale, i) - inv_degree_[std::size_t(i)] * s;
-        lap_[std::size_t(3 * i)] = l.x;
-        lap_[std::size_t(3 * i + 1)] = l.y;
-        lap_[std::size_t(3 * i + 2)] = l.z;
-      }
+      for (auto i = b; i < e; ++i) laplacian_at(x, scale, i);
     });
   }
   // (S Q S x)_i from lap_
-  void output(std::span<const double> x, std::span<double> y, std::span<const double> scale,
-              std::int64_t i) const {
+  Vec value(std::span<const double> x, std::span<const double> scale, std::int64_t i) const {
     const Vec xi = scaled_at(x, scale, i);
     Vec align{0, 0, 0};
     for (auto c = corner_start_[std::size_t(i)]; c < corner_start_[std::size_t(i + 1)]; ++c) {
@@ -390,11 +409,27 @@ private:
     Vec fair = at(lap, i);
     for (auto m : in_.around(i)) fair -= inv_degree_[std::size_t(m)] * at(lap, m);
     const Vec out = p_.alpha * xi + p_.beta * align + p_.gamma * fair;
+    if (scale.empty()) return out;
     const auto k = std::size_t(3 * i);
-    const bool scaled = !scale.empty();
-    y[k] = scaled ? scale[k] * out.x : out.x;
-    y[k + 1] = scaled ? scale[k + 1] * out.y : out.y;
-    y[k + 2] = scaled ? scale[k + 2] * out.z : out.z;
+    return {scale[k] * out.x, scale[k + 1] * out.y, scale[k + 2] * out.z};
+  }
+  void output(std::span<const double> x, std::span<double> y, std::span<const double> scale,
+              std::int64_t i) const {
+    const Vec v = value(x, scale, i);
+    const auto k = std::size_t(3 * i);
+    y[k] = v.x;
+    y[k + 1] = v.y;
+    y[k + 2] = v.z;
+  }
+  // lap_ at vertex i (from x at i and N(i))
+  void laplacian_at(std::span<const double> x, std::span<const double> scale,
+                    std::int64_t i) const {
+    Vec s{0, 0, 0};
+    for (auto j : in_.around(i)) s += scaled_at(x, scale, j);
+    const Vec l = scaled_at(x, scale, i) - inv_degree_[std::size_t(i)] * s;
+    lap_[std::size_t(3 * i)] = l.x;
+    lap_[std::size_t(3 * i + 1)] = l.y;
+    lap_[std::size_t(3 * i + 2)] = l.z;
   }
 
   struct Corner {
@@ -483,7 +518,9 @@ MprgpOutcome mprgp(const ScaledOperator& apply, std::span<const Block> blocks,
   const std::int64_t nv = n / 3;
   const auto N = std::size_t(n);
   constexpr std::int64_t block = 2048; // vertices
-  std::vector<double> g(N), p(N), ap(N), z(N), y_try(N), g_try(N);
+  std::vector<double> g(N), p(N), ap(N), z(N), y_try(N), g_try(N), correction(N);
+  std::vector<unsigned char> moved_flag(static_cast<std::size_t>(nv));
+  std::vector<std::int64_t> moved;
   const double inv_abar = 1 / abar;
   auto is_free = [&](std::size_t k) { return std::abs(y[k]) < u[k]; };
   // chopped gradient: at the lower bound min(g, 0), at the upper max(g, 0)
@@ -610,23 +647,38 @@ MprgpOutcome mprgp(const ScaledOperator& apply, std::span<const Block> blocks,
       } else { // expansion step
         // The whole CG step projected onto the box, kept when its f is below f at the feasible
         // step y - af p (where MPRGP's expansion starts); else MPRGP's expansion from there.
-        parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-          for (auto k = std::size_t(lo); k < std::size_t(hi); ++k)
-            y_try[k] = std::clamp(y[k] - acg * p[k], -u[k], u[k]);
+        // Its gradient: g - acg A p, plus A times the projection's correction, which is zero
+        // but on the coordinates that the projection moved (a product near those vertices), or
+        // a whole product when they are many.
+        parallel_chunks(nv, threads, [&](std::int64_t lo, std::int64_t hi) {
+          for (auto i = lo; i < hi; ++i) {
+            moved_flag[std::size_t(i)] = 0;
+            for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) {
+              const double free_step = y[k] - acg * p[k];
+              y_try[k] = std::clamp(free_step, -u[k], u[k]);
+              correction[k] = y_try[k] - free_step;
+              g_try[k] = g[k] - acg * ap[k];
+              if (correction[k] != 0) moved_flag[std::size_t(i)] = 1;
+            }
+          }
         });
-        std::array<double, 2> f2{};
-        const auto part = apply.op.apply_reduce<2>(
-            y_try, g_try, apply.s, {0, 0}, [&](std::int64_t i, std::array<double, 2>& t) {
-              for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) {
-                g_try[k] -= b[k];
-                t[0] += y_try[k] * (g_try[k] - b[k]);
-                t[1] += y[k] * (g[k] - b[k]);
-              }
-            });
-        for (const auto& t : part) {
-          f2[0] += t[0];
-          f2[1] += t[1];
-        }
+        moved.clear();
+        for (std::int64_t i = 0; i < nv; ++i)
+          if (moved_flag[std::size_t(i)]) moved.push_back(i);
+        const bool local = std::int64_t(moved.size()) * 32 <= nv;
+        if (local)
+          apply.op.add_local(correction, moved, g_try, apply.s);
+        else
+          apply(y_try, g_try);
+        const auto f2 = block_sums<2>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+          std::array<double, 2> t{};
+          for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
+            if (!local) g_try[k] -= b[k];
+            t[0] += y_try[k] * (g_try[k] - b[k]);
+            t[1] += y[k] * (g[k] - b[k]);
+          }
+          return t;
+        });
         // f(y) = y^T (g - b) / 2; along -p it is a parabola
         const double f_feasible = f2[1] / 2 - af * pa[1] + af * af * pa[0] / 2;
         const bool taken = f2[0] / 2 < f_feasible;
@@ -644,7 +696,7 @@ MprgpOutcome mprgp(const ScaledOperator& apply, std::span<const Block> blocks,
           apply(y, g);
         }
         sums = restart(!taken); // g_try was A y_try - b; here g = A y, b still to subtract
-        recomputed = true;
+        recomputed = !(taken && local);
       }
     } else { // proportioning step along the chopped gradient (into the box)
       std::vector<double>& d = p;

@@ -30,9 +30,11 @@
 // box: the whole CG step projected onto the box when E there is below E at the feasible part of the
 // CG step (cf. the projected-CG expansion of Kruzik et al., Adv. Eng. Softw. 149, 2020), else
 // MPRGP's (that feasible step, then a projected gradient step of length 1.9 / (Gershgorin bound)),
-// so E decreases at every step; proportioning steps releasing constraints. Q is applied without
-// assembly (two gathers over the vertices, O(F) per product: about 40 flops per corner); without
-// clamp it is block-Jacobi preconditioned CG.
+// so E decreases at every step (the projected step's gradient by the CG recurrence plus Q times
+// the projection's correction, a product over the 2-ring of the vertices it moved when they are
+// at most 1/32 of all, else a whole product); proportioning steps releasing constraints. Q is
+// applied without assembly (two gathers over the vertices, O(F) per product: about 40 flops per
+// corner); without clamp it is block-Jacobi preconditioned CG.
 // Stopping criterion (stated, and checked on the gradient recomputed from the result): the
 // scaled projected gradient -- the KKT residual, D^{-1/2} times the gradient on the free
 // coordinates plus its component pointing out of the box on the clamped ones, zero exactly at
