@@ -10,7 +10,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <numeric>
 
@@ -261,6 +260,20 @@ double scaled_gershgorin(const PolygonMesh& mesh, std::span<const Vec> normals, 
   return *std::max_element(rows.begin(), rows.end());
 }
 
+// Per-block partial results over [0, n) in fixed blocks of `block` items, fn(b, e) giving the
+// K partials of [b, e): combined in block order by the caller, the same rounding for any thread
+// count.
+template <std::size_t K, class Fn>
+std::vector<std::array<double, K>> block_partials(std::int64_t n, std::int64_t block,
+                                                  unsigned threads, Fn&& fn) {
+  const std::int64_t blocks = (n + block - 1) / block;
+  std::vector<std::array<double, K>> part(static_cast<std::size_t>(blocks));
+  parallel_chunks(blocks, threads, [&](std::int64_t b, std::int64_t e) {
+    for (auto k = b; k < e; ++k) part[std::size_t(k)] = fn(k * block, std::min(n, (k + 1) * block));
+  });
+  return part;
+}
+
 // Q applied without assembling it (the minimizer's inner loop): per vertex i, its corners
 // (face f, next and previous vertex: the two sides of f at i) and its umbrella N(i):
 //   (Q x)_i = alpha x_i + beta sum_corners n_f (n_f . (2 x_i - x_next - x_prev))
@@ -270,7 +283,7 @@ class EnergyOperator {
 public:
   EnergyOperator(const PolygonMesh& mesh, std::span<const Vec> normals, const Incidence& in,
                  const RegularizationParameters& p)
-      : in_(in), normals_(normals), p_(p), nv_(mesh.vertex_count()) {
+      : in_(in), p_(p), nv_(mesh.vertex_count()) {
     corner_start_.assign(std::size_t(nv_ + 1), 0);
     for (std::int64_t i = 0; i < nv_; ++i)
       corner_start_[std::size_t(i + 1)] =
@@ -283,7 +296,7 @@ public:
         for (auto f : in.faces_of(i)) {
           int found = 0;
           const auto js = sides_at(mesh, f, i, found);
-          corners_[k++] = {f, js[0], js[1]};
+          corners_[k++] = {js[0], js[1], normals[std::size_t(f)]};
         }
         inv_degree_[std::size_t(i)] = 1.0 / double(in.degree(i));
       }
@@ -293,68 +306,137 @@ public:
 
   std::int64_t size() const { return 3 * nv_; }
 
-  void apply(std::span<const double> x, std::span<double> y) const {
-    auto at = [](std::span<const double> v, std::int64_t i) {
-      return Vec{v[std::size_t(3 * i)], v[std::size_t(3 * i + 1)], v[std::size_t(3 * i + 2)]};
-    };
+  /// y = S Q S x, S = diag(scale) (the identity when scale is empty).
+  void apply(std::span<const double> x, std::span<double> y,
+             std::span<const double> scale = {}) const {
+    laplacian(x, scale);
     parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
-      for (auto i = b; i < e; ++i) {
-        Vec s{0, 0, 0};
-        for (auto j : in_.around(i)) s += at(x, j);
-        const Vec l = at(x, i) - inv_degree_[std::size_t(i)] * s;
-        lap_[std::size_t(3 * i)] = l.x;
-        lap_[std::size_t(3 * i + 1)] = l.y;
-        lap_[std::size_t(3 * i + 2)] = l.z;
-      }
-    });
-    const std::span<const double> lap(lap_);
-    parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
-      for (auto i = b; i < e; ++i) {
-        const Vec xi = at(x, i);
-        Vec align{0, 0, 0};
-        for (auto c = corner_start_[std::size_t(i)]; c < corner_start_[std::size_t(i + 1)]; ++c) {
-          const auto& k = corners_[std::size_t(c)];
-          const Vec n = normals_[std::size_t(k.face)];
-          align += dot(n, 2.0 * xi - at(x, k.next) - at(x, k.prev)) * n;
-        }
-        Vec fair = at(lap, i);
-        for (auto m : in_.around(i)) fair -= inv_degree_[std::size_t(m)] * at(lap, m);
-        const Vec out = p_.alpha * xi + p_.beta * align + p_.gamma * fair;
-        y[std::size_t(3 * i)] = out.x;
-        y[std::size_t(3 * i + 1)] = out.y;
-        y[std::size_t(3 * i + 2)] = out.z;
-      }
+      for (auto i = b; i < e; ++i) output(x, y, scale, i);
     });
   }
 
-  /// The diagonal of Q: alpha + 2 beta sum_corners n_a^2 + gamma (1 + sum_{m in N(i)}
-  /// 1/|N(m)|^2).
-  std::vector<double> diagonal() const {
-    std::vector<double> d(std::size_t(3 * nv_));
+  /// apply, and epilogue(i, partials) after each vertex i's output, in fixed blocks of vertices
+  /// (the partials of each block, in order: the same for any thread count).
+  template <std::size_t K, class Epilogue>
+  std::vector<std::array<double, K>>
+  apply_reduce(std::span<const double> x, std::span<double> y, std::span<const double> scale,
+               const std::array<double, K>& init, Epilogue&& epilogue) const {
+    laplacian(x, scale);
+    return block_partials<K>(nv_, 2048, p_.threads, [&](std::int64_t b, std::int64_t e) {
+      std::array<double, K> part = init;
+      for (auto i = b; i < e; ++i) {
+        output(x, y, scale, i);
+        epilogue(i, part);
+      }
+      return part;
+    });
+  }
+
+  /// y += S Q S x for an x that is zero outside the vertices `moved` (sorted, no repeats):
+  /// only the rows within 2 rings of them change, computed serially (the same rounding for any
+  /// thread count). O(|moved|) for bounded degrees. Overwrites the scratch of apply.
+  void add_local(std::span<const double> x, std::span<const std::int64_t> moved,
+                 std::span<double> y, std::span<const double> scale) const {
+    auto grow = [&](std::span<const std::int64_t> set) {
+      std::vector<std::int64_t> out(set.begin(), set.end());
+      for (auto v : set)
+        for (auto j : in_.around(v)) out.push_back(j);
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+      return out;
+    };
+    // F x is zero outside ring 1 of `moved`, the rows of Q x outside ring 2; the rows of ring 2
+    // read F x on ring 3.
+    const auto ring1 = grow(moved);
+    const auto ring2 = grow(ring1);
+    for (auto v : grow(ring2)) laplacian_at(x, scale, v);
+    for (auto i : ring2) {
+      const Vec v = value(x, scale, i);
+      const auto k = std::size_t(3 * i);
+      y[k] += v.x;
+      y[k + 1] += v.y;
+      y[k + 2] += v.z;
+    }
+  }
+
+  /// The 3x3 diagonal blocks of Q (row-major, one per vertex): (alpha + gamma (1 + sum_{m in
+  /// N(i)} 1/|N(m)|^2)) I + 2 beta sum_corners n n^T.
+  std::vector<Block> diagonal_blocks() const {
+    std::vector<Block> d(static_cast<std::size_t>(nv_));
     parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
       for (auto i = b; i < e; ++i) {
         double fair = 1;
         for (auto m : in_.around(i))
           fair += inv_degree_[std::size_t(m)] * inv_degree_[std::size_t(m)];
-        Vec nn{0, 0, 0};
+        Block blk{};
         for (auto c = corner_start_[std::size_t(i)]; c < corner_start_[std::size_t(i + 1)]; ++c) {
-          const Vec n = normals_[std::size_t(corners_[std::size_t(c)].face)];
-          nn += Vec{n.x * n.x, n.y * n.y, n.z * n.z};
+          const Vec n = corners_[std::size_t(c)].n;
+          const std::array<double, 3> v{n.x, n.y, n.z};
+          for (std::size_t a = 0; a < 3; ++a)
+            for (std::size_t k = 0; k < 3; ++k) blk[3 * a + k] += 2 * p_.beta * v[a] * v[k];
         }
-        d[std::size_t(3 * i)] = p_.alpha + 2 * p_.beta * nn.x + p_.gamma * fair;
-        d[std::size_t(3 * i + 1)] = p_.alpha + 2 * p_.beta * nn.y + p_.gamma * fair;
-        d[std::size_t(3 * i + 2)] = p_.alpha + 2 * p_.beta * nn.z + p_.gamma * fair;
+        for (std::size_t a = 0; a < 3; ++a) blk[4 * a] += p_.alpha + p_.gamma * fair;
+        d[std::size_t(i)] = blk;
       }
     });
     return d;
   }
 
 private:
+  static Vec at(std::span<const double> v, std::int64_t i) {
+    return Vec{v[std::size_t(3 * i)], v[std::size_t(3 * i + 1)], v[std::size_t(3 * i + 2)]};
+  }
+  static Vec scaled_at(std::span<const double> x, std::span<const double> scale, std::int64_t i) {
+    const auto k = std::size_t(3 * i);
+    return scale.empty() ? Vec{x[k], x[k + 1], x[k + 2]}
+                         : Vec{scale[k] * x[k], scale[k + 1] * x[k + 1], scale[k + 2] * x[k + 2]};
+  }
+  // lap_ = F (S x)
+  void laplacian(std::span<const double> x, std::span<const double> scale) const {
+    parallel_chunks(nv_, p_.threads, [&](std::int64_t b, std::int64_t e) {
+      for (auto i = b; i < e; ++i) laplacian_at(x, scale, i);
+    });
+  }
+  // (S Q S x)_i from lap_
+  Vec value(std::span<const double> x, std::span<const double> scale, std::int64_t i) const {
+    const Vec xi = scaled_at(x, scale, i);
+    Vec align{0, 0, 0};
+    for (auto c = corner_start_[std::size_t(i)]; c < corner_start_[std::size_t(i + 1)]; ++c) {
+      const auto& k = corners_[std::size_t(c)];
+      align += dot(k.n, 2.0 * xi - scaled_at(x, scale, k.next) - scaled_at(x, scale, k.prev)) * k.n;
+    }
+    const std::span<const double> lap(lap_);
+    Vec fair = at(lap, i);
+    for (auto m : in_.around(i)) fair -= inv_degree_[std::size_t(m)] * at(lap, m);
+    const Vec out = p_.alpha * xi + p_.beta * align + p_.gamma * fair;
+    if (scale.empty()) return out;
+    const auto k = std::size_t(3 * i);
+    return {scale[k] * out.x, scale[k + 1] * out.y, scale[k + 2] * out.z};
+  }
+  void output(std::span<const double> x, std::span<double> y, std::span<const double> scale,
+              std::int64_t i) const {
+    const Vec v = value(x, scale, i);
+    const auto k = std::size_t(3 * i);
+    y[k] = v.x;
+    y[k + 1] = v.y;
+    y[k + 2] = v.z;
+  }
+  // lap_ at vertex i (from x at i and N(i))
+  void laplacian_at(std::span<const double> x, std::span<const double> scale,
+                    std::int64_t i) const {
+    Vec s{0, 0, 0};
+    for (auto j : in_.around(i)) s += scaled_at(x, scale, j);
+    const Vec l = scaled_at(x, scale, i) - inv_degree_[std::size_t(i)] * s;
+    lap_[std::size_t(3 * i)] = l.x;
+    lap_[std::size_t(3 * i + 1)] = l.y;
+    lap_[std::size_t(3 * i + 2)] = l.z;
+  }
+
   struct Corner {
-    std::int64_t face, next, prev;
+    std::int64_t next, prev;
+    Vec n; // the normal of the corner's face
   };
   const Incidence& in_;
-  std::span<const Vec> normals_;
   const RegularizationParameters& p_;
   std::int64_t nv_;
   std::vector<std::int64_t> corner_start_;
@@ -363,49 +445,83 @@ private:
   mutable std::vector<double> lap_;
 };
 
-// Sums over [0, n) in fixed blocks, the blocks' partial sums added in order: the same rounding
-// for any thread count. fn(b, e) returns the partial sums of [b, e) as an array of K doubles.
+// S Q S, the Jacobi-scaled operator of the minimizer.
+struct ScaledOperator {
+  const EnergyOperator& op;
+  std::span<const double> s;
+  void operator()(std::span<const double> x, std::span<double> y) const { op.apply(x, y, s); }
+};
+
 template <std::size_t K, class Fn>
 std::array<double, K> block_sums(std::int64_t n, unsigned threads, Fn&& fn) {
-  constexpr std::int64_t block = 8192;
-  const std::int64_t blocks = (n + block - 1) / block;
-  std::vector<std::array<double, K>> part(static_cast<std::size_t>(blocks));
-  parallel_chunks(blocks, threads, [&](std::int64_t b, std::int64_t e) {
-    for (auto k = b; k < e; ++k) part[std::size_t(k)] = fn(k * block, std::min(n, (k + 1) * block));
-  });
   std::array<double, K> out{};
-  for (const auto& s : part)
+  for (const auto& s : block_partials<K>(n, 4096, threads, std::forward<Fn>(fn)))
     for (std::size_t k = 0; k < K; ++k) out[k] += s[k];
   return out;
 }
 
-// MPRGP (Dostal, Schoberl, Comput. Optim. Appl. 30, 2005; Dostal, "Optimal quadratic
-// programming algorithms", Springer 2009, ch. 8): min f(y) = y^T A y / 2 - b^T y over the box
-// |y_k| <= u_k (u_k may be infinite). Conjugate gradient steps on the free set while they stay
-// feasible and the chopped gradient is small against the free one (Gamma = 1), expansion steps
-// (the feasible CG step, then a projected gradient step of fixed length abar <= 2 / |A|) when CG
-// would leave the box, proportioning steps (along the chopped gradient) to release constraints.
-// Stops when the projected gradient g^P (the free gradient plus the chopped one, zero exactly
-// at the KKT point) has |g^P|_2 <= eps, checked again on the gradient recomputed from y (the
-// recurrence's rounding does not decide). Without bounds it is the conjugate gradient method.
+// z = B_F^{-1} r_F on the free coordinates F of one vertex (zero on the others): B the vertex's
+// 3x3 diagonal block of the scaled matrix, B_F its principal submatrix on F (positive definite:
+// a principal submatrix of a positive definite matrix), solved by Cramer's rule.
+void solve_free_block(const Block& bl, const std::array<bool, 3>& free, const double* r,
+                      double* z) {
+  std::array<std::size_t, 3> f{};
+  std::size_t m = 0;
+  for (std::size_t a = 0; a < 3; ++a) {
+    z[a] = 0;
+    if (free[a]) f[m++] = a;
+  }
+  if (m == 1) {
+    z[f[0]] = r[f[0]] / bl[4 * f[0]];
+  } else if (m == 2) {
+    const double a = bl[4 * f[0]], b = bl[3 * f[0] + f[1]], d = bl[4 * f[1]];
+    const double det = a * d - b * b, r0 = r[f[0]], r1 = r[f[1]];
+    z[f[0]] = (d * r0 - b * r1) / det;
+    z[f[1]] = (a * r1 - b * r0) / det;
+  } else if (m == 3) {
+    const double c00 = bl[4] * bl[8] - bl[5] * bl[7], c01 = bl[5] * bl[6] - bl[3] * bl[8];
+    const double c02 = bl[3] * bl[7] - bl[4] * bl[6], c11 = bl[0] * bl[8] - bl[2] * bl[6];
+    const double c12 = bl[1] * bl[6] - bl[0] * bl[7], c22 = bl[0] * bl[4] - bl[1] * bl[3];
+    const double det = bl[0] * c00 + bl[1] * c01 + bl[2] * c02;
+    z[0] = (c00 * r[0] + c01 * r[1] + c02 * r[2]) / det;
+    z[1] = (c01 * r[0] + c11 * r[1] + c12 * r[2]) / det;
+    z[2] = (c02 * r[0] + c12 * r[1] + c22 * r[2]) / det;
+  }
+}
+
+// MPRGP (Dostal, Schoberl, Comput. Optim. Appl. 30, 2005; Dostal, "Optimal quadratic programming
+// algorithms", Springer 2009, ch. 8) with preconditioning in face: min f(y) = y^T A y / 2 - b^T y
+// over the box |y_k| <= u_k (u_k may be infinite), the unknowns in blocks of 3 (one vertex).
+// Conjugate gradient steps on the free set, preconditioned by the free part of A's 3x3 diagonal
+// blocks (z = M_F^{-1} phi, zero on the clamped coordinates), while they stay feasible and the
+// chopped gradient is small against the free one (Gamma = 1); expansion steps when CG would leave
+// the box: the whole CG step projected onto the box when f there is below f at the feasible CG step
+// (cf. the "projected CG" expansion of Kruzik, Horak, Cermak, Pospisil, Pecha, "Active set
+// expansion strategies in MPRGP algorithm", Adv. Eng. Softw. 149, 2020), else MPRGP's: the feasible
+// CG step, then a projected gradient step of fixed length abar <= 2 / |A|; f decreases at every
+// step; proportioning steps (along the chopped gradient) to release constraints. Stops when the
+// projected gradient g^P (the free gradient plus the chopped one, zero exactly at the KKT point)
+// has |g^P|_2 <= eps, checked again on the gradient recomputed from y (the recurrence's rounding
+// does not decide). Without bounds it is the block-Jacobi preconditioned conjugate gradient method.
+// Each pass over the unknowns does the work of one vertex at a time (update, preconditioner, the
+// sums of the next test), in fixed blocks: the same rounding for any thread count.
 struct MprgpOutcome {
   int iterations = 0;
   bool converged = false;
   double residual = 0; // |g^P(y)|_2 at the end (recomputed)
 };
 
-MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<double>)>& apply,
+MprgpOutcome mprgp(const ScaledOperator& apply, std::span<const Block> blocks,
                    std::span<const double> b, std::span<const double> u, double abar, double eps,
                    int max_iterations, unsigned threads, std::vector<double>& y) {
   const auto n = std::int64_t(b.size());
+  const std::int64_t nv = n / 3;
   const auto N = std::size_t(n);
-  std::vector<double> g(N), p(N), ap(N);
-  auto gradient = [&] {
-    apply(y, g);
-    parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-      for (auto k = lo; k < hi; ++k) g[std::size_t(k)] -= b[std::size_t(k)];
-    });
-  };
+  constexpr std::int64_t block = 2048; // vertices
+  std::vector<double> g(N), p(N), ap(N), z(N), y_try(N), g_try(N), correction(N);
+  std::vector<unsigned char> moved_flag(static_cast<std::size_t>(nv));
+  std::vector<std::int64_t> moved;
+  const double inv_abar = 1 / abar;
   auto is_free = [&](std::size_t k) { return std::abs(y[k]) < u[k]; };
   // chopped gradient: at the lower bound min(g, 0), at the upper max(g, 0)
   auto chopped = [&](std::size_t k) {
@@ -413,54 +529,83 @@ MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<d
     return y[k] < 0 ? std::min(g[k], 0.0) : std::max(g[k], 0.0);
   };
   auto free_part = [&](std::size_t k) { return is_free(k) ? g[k] : 0.0; };
-  // p = phi(y)
-  auto restart = [&] {
-    parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-      for (auto k = lo; k < hi; ++k) p[std::size_t(k)] = free_part(std::size_t(k));
-    });
+  // z = M_F^{-1} phi(y) at vertex i
+  auto precondition = [&](std::int64_t i) {
+    const auto k = std::size_t(3 * i);
+    solve_free_block(blocks[std::size_t(i)], {is_free(k), is_free(k + 1), is_free(k + 2)}, &g[k],
+                     &z[k]);
   };
-  // the largest step along -v that stays in the box
-  auto feasible_step = [&](const std::vector<double>& v) {
-    double a = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < N; ++k) {
-      if (v[k] > 0)
-        a = std::min(a, (y[k] + u[k]) / v[k]);
-      else if (v[k] < 0)
-        a = std::min(a, (y[k] - u[k]) / v[k]);
+  // |beta|^2, phi~^T phi, |phi|^2 at vertex i (phi~: the reduced free gradient)
+  auto tests = [&](std::int64_t i, std::array<double, 3>& s) {
+    for (std::size_t k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) {
+      const double be = chopped(k), ph = free_part(k);
+      double reduced = 0;
+      if (ph > 0)
+        reduced = std::min((y[k] + u[k]) * inv_abar, ph);
+      else if (ph < 0)
+        reduced = std::max((y[k] - u[k]) * inv_abar, ph);
+      s[0] += be * be;
+      s[1] += reduced * ph;
+      s[2] += ph * ph;
     }
-    return std::max(a, 0.0);
   };
-  auto clamp_y = [&](std::size_t k) { y[k] = std::clamp(y[k], -u[k], u[k]); };
-  gradient();
-  restart();
+  auto sum3 = [](const std::vector<std::array<double, 3>>& part) {
+    std::array<double, 3> out{};
+    for (const auto& s : part)
+      for (std::size_t k = 0; k < 3; ++k) out[k] += s[k];
+    return out;
+  };
+  // p = z = M_F^{-1} phi(y) (after g -= b when `subtract_b`: g was A y), and the tests
+  auto restart = [&](bool subtract_b) {
+    return sum3(block_partials<3>(nv, block, threads, [&](std::int64_t lo, std::int64_t hi) {
+      std::array<double, 3> s{};
+      for (auto i = lo; i < hi; ++i) {
+        const auto k = std::size_t(3 * i);
+        if (subtract_b)
+          for (std::size_t a = 0; a < 3; ++a) g[k + a] -= b[k + a];
+        precondition(i);
+        for (std::size_t a = 0; a < 3; ++a) p[k + a] = z[k + a];
+        tests(i, s);
+      }
+      return s;
+    }));
+  };
+  // ap = A v, with v^T A v, g^T v and the largest step along -v that stays in the box
+  auto apply_along = [&](const std::vector<double>& v) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const auto part = apply.op.apply_reduce<3>(
+        v, ap, apply.s, {0, 0, inf}, [&](std::int64_t i, std::array<double, 3>& t) {
+          for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) {
+            t[0] += v[k] * ap[k];
+            t[1] += g[k] * v[k];
+            if (v[k] > 0)
+              t[2] = std::min(t[2], (y[k] + u[k]) / v[k]);
+            else if (v[k] < 0)
+              t[2] = std::min(t[2], (y[k] - u[k]) / v[k]);
+          }
+        });
+    std::array<double, 3> out{0, 0, inf};
+    for (const auto& t : part) {
+      out[0] += t[0];
+      out[1] += t[1];
+      out[2] = std::min(out[2], t[2]);
+    }
+    out[2] = std::max(out[2], 0.0);
+    return out;
+  };
+  apply(y, g);
+  std::array<double, 3> sums = restart(true);
   MprgpOutcome out;
   bool recomputed = true;
   for (;;) {
-    // |beta|^2, phi~^T phi, |phi|^2
-    const auto sums = block_sums<3>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-      std::array<double, 3> s{};
-      for (auto k = lo; k < hi; ++k) {
-        const auto i = std::size_t(k);
-        const double be = chopped(i), ph = free_part(i);
-        double reduced = 0;
-        if (ph > 0)
-          reduced = std::min((y[i] + u[i]) / abar, ph);
-        else if (ph < 0)
-          reduced = std::max((y[i] - u[i]) / abar, ph);
-        s[0] += be * be;
-        s[1] += reduced * ph;
-        s[2] += ph * ph;
-      }
-      return s;
-    });
     out.residual = std::sqrt(sums[0] + sums[2]);
     if (out.residual <= eps) {
       if (recomputed) {
         out.converged = true;
         return out;
       }
-      gradient(); // the recurrence said so: check on the true gradient
-      restart();
+      apply(y, g); // the recurrence said so: check on the true gradient
+      sums = restart(true);
       recomputed = true;
       continue;
     }
@@ -468,78 +613,105 @@ MprgpOutcome mprgp(const std::function<void(std::span<const double>, std::span<d
     ++out.iterations;
     recomputed = false;
     if (sums[0] <= sums[1]) {
-      apply(p, ap);
-      const auto pa = block_sums<2>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-        std::array<double, 2> s{};
-        for (auto k = lo; k < hi; ++k) {
-          s[0] += p[std::size_t(k)] * ap[std::size_t(k)];
-          s[1] += g[std::size_t(k)] * p[std::size_t(k)];
-        }
-        return s;
-      });
+      const auto pa = apply_along(p);
       if (!(pa[0] > 0)) { // p = 0 up to rounding: restart from the true gradient
-        gradient();
-        restart();
+        apply(y, g);
+        sums = restart(true);
         recomputed = true;
         continue;
       }
-      const double acg = pa[1] / pa[0], af = feasible_step(p);
+      const double acg = pa[1] / pa[0], af = pa[2];
       if (acg <= af) { // conjugate gradient step
-        const auto s = block_sums<1>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+        const auto za = block_sums<1>(nv, threads, [&](std::int64_t lo, std::int64_t hi) {
           std::array<double, 1> t{};
-          for (auto k = lo; k < hi; ++k) {
-            const auto i = std::size_t(k);
-            y[i] -= acg * p[i];
-            clamp_y(i);
-            g[i] -= acg * ap[i];
-            t[0] += free_part(i) * ap[i];
+          for (auto i = lo; i < hi; ++i) {
+            for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) {
+              y[k] = std::clamp(y[k] - acg * p[k], -u[k], u[k]);
+              g[k] -= acg * ap[k];
+            }
+            precondition(i);
+            for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) t[0] += z[k] * ap[k];
           }
           return t;
         });
-        const double gamma = s[0] / pa[0];
-        parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-          for (auto k = lo; k < hi; ++k)
-            p[std::size_t(k)] = free_part(std::size_t(k)) - gamma * p[std::size_t(k)];
-        });
+        const double gamma = za[0] / pa[0];
+        sums = sum3(block_partials<3>(nv, block, threads, [&](std::int64_t lo, std::int64_t hi) {
+          std::array<double, 3> s{};
+          for (auto i = lo; i < hi; ++i) {
+            for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k)
+              p[k] = z[k] - gamma * p[k];
+            tests(i, s);
+          }
+          return s;
+        }));
       } else { // expansion step
-        parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-          for (auto k = lo; k < hi; ++k) {
-            const auto i = std::size_t(k);
-            y[i] -= af * p[i];
-            clamp_y(i);
-            g[i] -= af * ap[i];
-            y[i] -= abar * free_part(i);
-            clamp_y(i);
+        // The whole CG step projected onto the box, kept when its f is below f at the feasible
+        // step y - af p (where MPRGP's expansion starts); else MPRGP's expansion from there.
+        // Its gradient: g - acg A p, plus A times the projection's correction, which is zero
+        // but on the coordinates that the projection moved (a product near those vertices), or
+        // a whole product when they are many.
+        parallel_chunks(nv, threads, [&](std::int64_t lo, std::int64_t hi) {
+          for (auto i = lo; i < hi; ++i) {
+            moved_flag[std::size_t(i)] = 0;
+            for (auto k = std::size_t(3 * i); k < std::size_t(3 * i + 3); ++k) {
+              const double free_step = y[k] - acg * p[k];
+              y_try[k] = std::clamp(free_step, -u[k], u[k]);
+              correction[k] = y_try[k] - free_step;
+              g_try[k] = g[k] - acg * ap[k];
+              if (correction[k] != 0) moved_flag[std::size_t(i)] = 1;
+            }
           }
         });
-        gradient();
-        restart();
-        recomputed = true;
+        moved.clear();
+        for (std::int64_t i = 0; i < nv; ++i)
+          if (moved_flag[std::size_t(i)]) moved.push_back(i);
+        const bool local = std::int64_t(moved.size()) * 32 <= nv;
+        if (local)
+          apply.op.add_local(correction, moved, g_try, apply.s);
+        else
+          apply(y_try, g_try);
+        const auto f2 = block_sums<2>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+          std::array<double, 2> t{};
+          for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
+            if (!local) g_try[k] -= b[k];
+            t[0] += y_try[k] * (g_try[k] - b[k]);
+            t[1] += y[k] * (g[k] - b[k]);
+          }
+          return t;
+        });
+        // f(y) = y^T (g - b) / 2; along -p it is a parabola
+        const double f_feasible = f2[1] / 2 - af * pa[1] + af * af * pa[0] / 2;
+        const bool taken = f2[0] / 2 < f_feasible;
+        if (taken) {
+          std::swap(y, y_try);
+          std::swap(g, g_try);
+        } else {
+          parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
+            for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
+              y[k] = std::clamp(y[k] - af * p[k], -u[k], u[k]);
+              g[k] -= af * ap[k];
+              y[k] = std::clamp(y[k] - abar * free_part(k), -u[k], u[k]);
+            }
+          });
+          apply(y, g);
+        }
+        sums = restart(!taken); // g_try was A y_try - b; here g = A y, b still to subtract
+        recomputed = !(taken && local);
       }
     } else { // proportioning step along the chopped gradient (into the box)
       std::vector<double>& d = p;
       parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-        for (auto k = lo; k < hi; ++k) d[std::size_t(k)] = chopped(std::size_t(k));
+        for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) d[k] = chopped(k);
       });
-      apply(d, ap);
-      const auto da = block_sums<2>(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-        std::array<double, 2> s{};
-        for (auto k = lo; k < hi; ++k) {
-          s[0] += d[std::size_t(k)] * ap[std::size_t(k)];
-          s[1] += g[std::size_t(k)] * d[std::size_t(k)];
-        }
-        return s;
-      });
-      const double a = std::min(da[1] / da[0], feasible_step(d));
+      const auto da = apply_along(d);
+      const double a = std::min(da[1] / da[0], da[2]);
       parallel_chunks(n, threads, [&](std::int64_t lo, std::int64_t hi) {
-        for (auto k = lo; k < hi; ++k) {
-          const auto i = std::size_t(k);
-          y[i] -= a * d[i];
-          clamp_y(i);
-          g[i] -= a * ap[i];
+        for (auto k = std::size_t(lo); k < std::size_t(hi); ++k) {
+          y[k] = std::clamp(y[k] - a * d[k], -u[k], u[k]);
+          g[k] -= a * ap[k];
         }
       });
-      restart();
+      sums = restart(false);
     }
   }
 }
@@ -672,30 +844,27 @@ std::vector<double> regularize_iterative(const PolygonMesh& mesh, std::span<cons
       throw InvalidArgument(fmt::format("surface regularization: vertex {} is in no face", i));
   const std::vector<double> g = assemble_g(mesh, normals, in, p);
   const EnergyOperator op(mesh, normals, in, p);
-  std::vector<double> s = op.diagonal();
-  for (double& v : s) v = 1 / std::sqrt(v);
-  const auto n = std::int64_t(s.size());
-  const auto N = s.size();
+  // The scaling S = D^{-1/2} and the preconditioner's blocks S_i Q_ii S_i (unit diagonal).
+  std::vector<Block> blocks = op.diagonal_blocks();
+  const auto N = 3 * blocks.size();
+  std::vector<double> s(N);
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    for (std::size_t a = 0; a < 3; ++a) s[3 * i + a] = 1 / std::sqrt(blocks[i][4 * a]);
+    for (std::size_t a = 0; a < 3; ++a)
+      for (std::size_t c = 0; c < 3; ++c) blocks[i][3 * a + c] *= s[3 * i + a] * s[3 * i + c];
+  }
   const double half = h / 2;
-  std::vector<double> b(N), u(N), tmp(N);
+  std::vector<double> b(N), u(N);
   for (std::size_t k = 0; k < N; ++k) {
     b[k] = -s[k] * g[k];
     u[k] = p.clamp ? half / s[k] : std::numeric_limits<double>::infinity();
   }
-  auto apply = [&](std::span<const double> y, std::span<double> out) {
-    parallel_chunks(n, p.threads, [&](std::int64_t lo, std::int64_t hi) {
-      for (auto k = lo; k < hi; ++k) tmp[std::size_t(k)] = s[std::size_t(k)] * y[std::size_t(k)];
-    });
-    op.apply(tmp, out);
-    parallel_chunks(n, p.threads, [&](std::int64_t lo, std::int64_t hi) {
-      for (auto k = lo; k < hi; ++k) out[std::size_t(k)] *= s[std::size_t(k)];
-    });
-  };
+  const ScaledOperator apply{op, s};
   const double abar = 1.9 / scaled_gershgorin(mesh, normals, in, p, s);
   const double b_norm = std::sqrt(std::inner_product(b.begin(), b.end(), b.begin(), 0.0));
   std::vector<double> y(N, 0.0);
   const MprgpOutcome out =
-      mprgp(apply, b, u, abar, p.tolerance * b_norm, p.max_iterations, p.threads, y);
+      mprgp(apply, blocks, b, u, abar, p.tolerance * b_norm, p.max_iterations, p.threads, y);
   r.solver = "mprgp";
   r.iterations = out.iterations;
   r.converged = out.converged;

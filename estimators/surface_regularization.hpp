@@ -22,20 +22,30 @@
 // minimizer Q d = -g.
 //
 // Solvers. `conjugate_gradient` (and `automatic` with clamp, or past 30,000 vertices): MPRGP
-// (Dostal, Schoberl, Comput. Optim. Appl. 30(1), 2005: conjugate gradient steps on the free
-// coordinates, expansion steps by a projected gradient step of length 1.9 / (Gershgorin bound),
-// proportioning steps releasing constraints) on the Jacobi-scaled problem y = D^{1/2} d, D =
-// diag Q (a box stays a box), with Q applied without assembly (two gathers over the vertices,
-// O(F) per product: about 40 flops per corner); without clamp it is Jacobi-preconditioned CG.
+// (Dostal, Schoberl, Comput. Optim. Appl. 30(1), 2005) with preconditioning in face, on the
+// Jacobi-scaled problem y = D^{1/2} d, D = diag Q (a box stays a box): conjugate gradient steps on
+// the free coordinates, preconditioned by each vertex's 3x3 diagonal block of D^{-1/2} Q D^{-1/2}
+// restricted to its free coordinates (block Jacobi: the block holds the vertex's normal directions,
+// which a diagonal scaling splits across the axes); expansion steps when a CG step would leave the
+// box: the whole CG step projected onto the box when E there is below E at the feasible part of the
+// CG step (cf. the projected-CG expansion of Kruzik et al., Adv. Eng. Softw. 149, 2020), else
+// MPRGP's (that feasible step, then a projected gradient step of length 1.9 / (Gershgorin bound)),
+// so E decreases at every step (the projected step's gradient by the CG recurrence plus Q times
+// the projection's correction, a product over the 2-ring of the vertices it moved when they are
+// at most 1/32 of all, else a whole product); proportioning steps releasing constraints. Q is
+// applied without assembly (two gathers over the vertices, O(F) per product: about 40 flops per
+// corner); without clamp it is block-Jacobi preconditioned CG.
 // Stopping criterion (stated, and checked on the gradient recomputed from the result): the
 // scaled projected gradient -- the KKT residual, D^{-1/2} times the gradient on the free
 // coordinates plus its component pointing out of the box on the clamped ones, zero exactly at
 // the constrained minimizer -- has 2-norm <= tolerance times its value at d = 0 (|D^{-1/2} g|_2);
-// `kkt_residual` reports the ratio reached. The iterations are bounded by the square root of
-// the condition number of D^{-1/2} Q D^{-1/2} times log(1 / tolerance), plus the active set's
-// changes; that condition number does not grow with the mesh (Q's smallest eigenvalue is alpha,
-// the translations; its largest is bounded by the vertex degrees and the weights), but the count
-// below the bound does, as finer meshes have more low-frequency modes near alpha.
+// `kkt_residual` reports the ratio reached. The preconditioner changes the path, not this
+// criterion. The CG part of the iterations is bounded by the square root of the condition number
+// of the block-Jacobi preconditioned Q times log(1 / tolerance), plus the active set's changes;
+// that condition number does not grow with the mesh (Q's smallest eigenvalue is alpha, the
+// translations; its largest is bounded by the vertex degrees and the weights), but the count
+// below the bound does, as finer meshes have more low-frequency modes near alpha and more
+// constraints to find.
 // `direct` (and `automatic` without clamp up to 30,000 vertices): Q factored once with
 // kernel/linalg/sparse_spd_solver.hpp (about n^{3/2} flops for n = 3V); the unconstrained
 // minimizer, which is the answer when it lies in the box; else ADMM (Boyd et al., Found. Trends
