@@ -231,8 +231,9 @@ TEST(SparseSpdSolver, SolverNegativeInertiaCountsTheGridLaplacianEigenvaluesBelo
     std::sort(spectrum.begin(), spectrum.end());
     const auto at = *rc::gen::inRange<std::size_t>(1, spectrum.size());
     RC_PRE(spectrum[at] - spectrum[at - 1] > 1e-6);
-    // Not halfway: the integer matrix minus a dyadic mu can have a leading minor exactly 0.
-    const double mu = spectrum[at - 1] + (spectrum[at] - spectrum[at - 1]) / std::numbers::sqrt2;
+    // Not halfway, nor at 1/sqrt 2 of the gap (the spectrum has sqrt 2 in it): the integer
+    // matrix minus an integer or dyadic mu can have a leading minor exactly 0.
+    const double mu = spectrum[at - 1] + (spectrum[at] - spectrum[at - 1]) / std::numbers::pi;
     const auto want = static_cast<std::int64_t>(at);
     std::vector<SpdBackend> backends{SpdBackend::eigen_ldlt};
     if (SparseSpdSolver::cholmod_available()) backends.push_back(SpdBackend::cholmod);
