@@ -288,7 +288,47 @@ public:
       }
       link(s, ncol);
     }
+    ldl_ = std::move(lx);
     return negative;
+  }
+
+  // x with B x = b, B the last matrix counted (its LDL^T kept): the permuted right-hand side,
+  // L y = b column by column, D, L^T x = y, permuted back. O(nnz(L)).
+  Eigen::VectorXd solve_counted(const Eigen::Map<const Eigen::VectorXd>& b) const {
+    if (ldl_.empty())
+      throw InvalidArgument("sparse solver: no inertia counted, no LDL^T to solve by");
+    const cholmod_factor& f = *factor_;
+    const auto* super = static_cast<const int*>(f.super);
+    const auto* pi = static_cast<const int*>(f.pi);
+    const auto* px = static_cast<const int*>(f.px);
+    const auto* ls = static_cast<const int*>(f.s);
+    const auto* perm = static_cast<const int*>(f.Perm);
+    const auto n = static_cast<Eigen::Index>(f.n);
+    const auto nsuper = static_cast<int>(f.nsuper);
+    Eigen::VectorXd y(n);
+    for (Eigen::Index k = 0; k < n; ++k) y[k] = b[perm[k]];
+    for (int s = 0; s < nsuper; ++s) {
+      const int k1 = super[s], ncol = super[s + 1] - k1, nrow = pi[s + 1] - pi[s];
+      const int* rows = ls + pi[s];
+      for (int j = 0; j < ncol; ++j) {
+        const double* col = ldl_.data() + px[s] + std::size_t(j) * std::size_t(nrow);
+        const double yj = y[k1 + j];
+        for (int i = j + 1; i < nrow; ++i) y[rows[i]] -= col[i] * yj;
+      }
+    }
+    for (int s = nsuper - 1; s >= 0; --s) {
+      const int k1 = super[s], ncol = super[s + 1] - k1, nrow = pi[s + 1] - pi[s];
+      const int* rows = ls + pi[s];
+      for (int j = ncol - 1; j >= 0; --j) {
+        const double* col = ldl_.data() + px[s] + std::size_t(j) * std::size_t(nrow);
+        double v = y[k1 + j] / col[j];
+        for (int i = j + 1; i < nrow; ++i) v -= col[i] * y[rows[i]];
+        y[k1 + j] = v;
+      }
+    }
+    Eigen::VectorXd x(n);
+    for (Eigen::Index k = 0; k < n; ++k) x[perm[k]] = y[k];
+    return x;
   }
 
 private:
@@ -310,6 +350,7 @@ private:
     return a;
   }
   const CholmodApi& api_;
+  mutable std::vector<double> ldl_; // the LDL^T of the last matrix counted
   mutable cholmod_common common_{}; // CHOLMOD's workspace, also used by the solves
   cholmod_factor* factor_ = nullptr;
 };
@@ -439,6 +480,20 @@ std::int64_t SparseSpdSolver::size() const {
 
 SpdBackend SparseSpdSolver::backend() const {
   return impl_->backend;
+}
+
+std::vector<double> SparseSpdSolver::solve_counted(std::span<const double> b) const {
+  if (static_cast<std::int64_t>(b.size()) != impl_->n)
+    throw InvalidArgument("sparse solver: a right-hand side of " + std::to_string(b.size()) +
+                          " entries for " + std::to_string(impl_->n) + " unknowns");
+#ifdef ZDG_HAVE_CHOLMOD
+  if (impl_->cholmod) {
+    const Eigen::VectorXd x = impl_->cholmod->solve_counted(
+        Eigen::Map<const Eigen::VectorXd>(b.data(), Eigen::Index(b.size())));
+    return std::vector<double>(x.data(), x.data() + x.size());
+  }
+#endif
+  throw InvalidArgument("sparse solver: the Eigen backend keeps no LDL^T of the matrix counted");
 }
 
 std::vector<double> SparseSpdSolver::solve(std::span<const double> b) const {

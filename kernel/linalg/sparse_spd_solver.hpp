@@ -56,6 +56,11 @@ public:
   /// InvalidArgument when B's pattern differs; Error when a pivot is 0 or not finite (B, or a
   /// leading minor in the elimination order, is singular).
   std::int64_t negative_inertia(const SparseMatrix& b) const;
+  /// x with B x = b, B the last matrix negative_inertia counted, by its LDL^T (kept, CHOLMOD
+  /// backend: O(nnz(L)) per solve; B indefinite: no pivoting, the accuracy degrades with B's
+  /// smallest pivots). InvalidArgument with the Eigen backend, before any count, or when b does
+  /// not have n entries.
+  std::vector<double> solve_counted(std::span<const double> b) const;
   /// x with A x = b (b has n entries; InvalidArgument otherwise).
   std::vector<double> solve(std::span<const double> b) const;
   std::int64_t size() const;

@@ -240,12 +240,28 @@ TEST(SparseSpdSolver, SolverNegativeInertiaCountsTheGridLaplacianEigenvaluesBelo
     for (const auto backend : backends) {
       for (const auto ordering : {SpdOrdering::minimum_degree, SpdOrdering::nested_dissection}) {
         const SparseSpdSolver s(shifted(-1), backend, ordering);
-        RC_ASSERT(s.negative_inertia(shifted(mu)) == want);
         RC_ASSERT(s.negative_inertia(shifted(-0.5)) == 0);
+        const SparseMatrix shifted_mu = shifted(mu);
+        RC_ASSERT(s.negative_inertia(shifted_mu) == want);
+        // The LDL^T kept solves B x = r (CHOLMOD): the residual is the oracle (B is at least
+        // (1 - 1/pi) of the gap away from singular).
+        std::vector<double> r(std::size_t(shifted_mu.rows), 0.0);
+        for (std::size_t i = 0; i < r.size(); ++i) r[i] = double(int(i % 7) - 3);
+        if (backend == SpdBackend::cholmod) {
+          const auto x = s.solve_counted(r);
+          const auto bx = shifted_mu.multiply(x);
+          double gap = spectrum[at] - spectrum[at - 1], xmax = 0;
+          for (const double v : x) xmax = std::max(xmax, std::abs(v));
+          for (std::size_t i = 0; i < r.size(); ++i)
+            RC_ASSERT(std::abs(bx[i] - r[i]) <= 1e-8 * (1 + xmax) / std::min(gap, 1.0));
+        } else {
+          RC_ASSERT_THROWS_AS(s.solve_counted(r), InvalidArgument);
+        }
       }
     }
   });
   const SparseSpdSolver s(SparseMatrix::diagonal(std::vector<double>{1, 2, 3}));
+  EXPECT_THROW(s.solve_counted(std::vector<double>{1, 2, 3}), InvalidArgument); // nothing counted
   EXPECT_EQ(s.negative_inertia(SparseMatrix::diagonal(std::vector<double>{-1, 2, -3})), 2);
   EXPECT_THROW(s.negative_inertia(SparseMatrix::diagonal(std::vector<double>{1, 0, 3})), Error);
   EXPECT_THROW(s.negative_inertia(SparseMatrix::diagonal(std::vector<double>{1, 2})),
