@@ -232,8 +232,10 @@ GeneralizedEigenpairs smallest_generalized_eigenpairs(const SparseMatrix& l, con
       // Spectra's vectors are not always M-normalized (seen when the subspace is all of R^n):
       // the length is measured before and after the projection.
       const double norm0 = m_norm2(x);
-      if (!(norm0 > 0) || !std::isfinite(norm0) || !std::isfinite(values(j)))
+      if (!(norm0 > 0) || !std::isfinite(norm0) || !std::isfinite(values(j))) {
+        if (!at_sigma) continue; // the LDL^T's rounding: a run at sigma follows
         throw Error(what + "Lanczos returned a zero or non-finite eigenvector");
+      }
       for (int pass = 0; pass < 2; ++pass) {
         for (std::size_t q = 0; q < out.vectors.size(); ++q) {
           double c = 0;

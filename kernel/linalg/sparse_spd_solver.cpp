@@ -166,6 +166,7 @@ public:
   // (L_d D_d L_d^T restricted to its rows, one dgemm), then factored as a dense panel (blocks of
   // 32 columns, the trailing columns by dgemm). Only the signs of D are kept.
   std::int64_t negative_inertia(const SparseMatrix& b) const {
+    ldl_ = {}; // a count that fails keeps no factor (solve_counted then refuses)
     const cholmod_factor& f = *factor_;
     if (!f.is_super) throw Error("inertia (cholmod): the factor is not supernodal");
     const auto n = static_cast<int>(f.n);
