@@ -9,20 +9,26 @@
 // Qiu, https://spectralib.org; Lehoucq, Sorensen, Yang, ARPACK Users' Guide, 1998) on
 // (L - sigma M)^{-1} M with the M inner product, sigma < 0 a small shift below the spectrum so
 // that L - sigma M is positive definite even though L is singular: one sparse Cholesky
-// factorization (kernel/linalg/sparse_spd_solver.hpp, CHOLMOD or Eigen), then one solve and one
-// product by M per Lanczos step. Lanczos can miss copies of a multiple eigenvalue (the
-// sphere's are 2l + 1 fold): the result is certified by Sylvester's law of inertia, the number
-// of eigenvalues below mu = lambda_k (1 - 1e-6) being the count of negative pivots of the
-// LDL^T factorization of L - mu M (one more factorization, kernel/linalg/sparse_spd_solver.hpp
-// negative_inertia); while it exceeds the number found, Lanczos runs again on the operator
-// deflated by the vectors found (at most k such runs, else Error); an eigenvalue within 1e-6
-// lambda_k of lambda_k can escape the certificate (the LDL^T pivots' rounding needs that margin).
-// Cost: the factorizations, plus about ncv + (restarts x (ncv - k)) solves of O(nnz(Cholesky
-// factor)) per run and O(ncv n) memory for the Krylov basis (ncv = max(2k + 1, 20) by default, at
-// most n). Application: the Laplace-Beltrami spectrum as a shape descriptor (Reuter, Wolter,
-// Peinecke, "Laplace-Beltrami spectra as 'Shape-DNA' of surfaces and solids", CAD 38(4), 2006); on
-// the sphere of radius r the eigenvalues are l(l+1)/r^2 with multiplicity 2l+1
-// (papers/lb-spectrum/README.md).
+// factorization (kernel/linalg/sparse_spd_solver.hpp, CHOLMOD with METIS's nested dissection, or
+// Eigen), then one solve and one product by M per Lanczos step. Lanczos can miss copies of a
+// multiple eigenvalue (the sphere's are 2l + 1 fold): the result is certified by Sylvester's law
+// of inertia, the number of eigenvalues below mu = lambda_k (1 - 1e-6) being the count of
+// negative pivots of the LDL^T factorization of L - mu M (counted once, on the Cholesky
+// factorization's ordering and supernodes: SparseSpdSolver::negative_inertia). While it exceeds
+// the number found below mu, Lanczos runs again on the operator deflated by the vectors found:
+// first (CHOLMOD) at shift mu by that LDL^T, selecting the operator's most negative eigenvalues
+// (the missing ones are the only eigenvalues below mu left), a pair kept only when its residual
+// ||L x - lambda M x|| is at most 1e-6 (||L x|| + |lambda| ||M x||); then at sigma (at most k + 1
+// runs in all, else Error). Every eigenvalue below mu is then found, so the first k are the k
+// smallest; an eigenvalue within 1e-6 lambda_k (up to 8e-6 when a pivot of exactly 0 moves mu)
+// below lambda_k can escape the certificate (the LDL^T pivots' rounding needs that margin).
+// Cost: the factorization and the count (each about the flops of one Cholesky factorization,
+// O(nnz(factor)) memory each), plus about ncv + (restarts x (ncv - k)) solves of O(nnz(factor))
+// per run at sigma (2 want + 10 at mu) and O(ncv n) memory for the Krylov basis
+// (ncv = max(2k + 1, 20) by default, at most n). Application: the Laplace-Beltrami spectrum as a
+// shape descriptor (Reuter, Wolter, Peinecke, "Laplace-Beltrami spectra as 'Shape-DNA' of surfaces
+// and solids", CAD 38(4), 2006); on the sphere of radius r the eigenvalues are l(l+1)/r^2 with
+// multiplicity 2l+1 (papers/lb-spectrum/README.md).
 //
 // Requirements (InvalidArgument, one line, otherwise): L and M square of the same size n;
 // 1 <= k < n; L and M symmetric (max |a_ij - a_ji| <= 1e-10 max |a_ij|); the diagonal of M

@@ -9,6 +9,7 @@
 #include <dlfcn.h>
 #endif
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -26,14 +27,22 @@ EigenSparse to_eigen(const SparseMatrix& a) {
     throw InvalidArgument("sparse solver: " + std::to_string(a.rows) + " unknowns and " +
                           std::to_string(a.nonzeros()) +
                           " nonzeros exceed the 32-bit indices of the factorization");
-  std::vector<Eigen::Triplet<double, int>> t;
-  t.reserve(std::size_t(a.nonzeros()));
-  for (std::int64_t i = 0; i < a.rows; ++i)
-    for (std::int64_t k = a.row_start[std::size_t(i)]; k < a.row_start[std::size_t(i) + 1]; ++k)
-      t.emplace_back(int(i), int(a.column[std::size_t(k)]), a.value[std::size_t(k)]);
+  // The compressed columns of A by one counting pass over its rows (row indices increasing in
+  // each column): O(n + nnz).
   EigenSparse m(int(a.rows), int(a.cols));
-  m.setFromTriplets(t.begin(), t.end());
-  m.makeCompressed();
+  m.resizeNonZeros(Eigen::Index(a.nonzeros()));
+  int* outer = m.outerIndexPtr();
+  std::fill(outer, outer + a.cols + 1, 0);
+  for (const auto c : a.column) ++outer[c + 1];
+  for (std::int64_t j = 0; j < a.cols; ++j) outer[j + 1] += outer[j];
+  std::vector<int> next(outer, outer + a.cols);
+  for (std::int64_t i = 0; i < a.rows; ++i) {
+    for (auto k = a.row_start[std::size_t(i)]; k < a.row_start[std::size_t(i) + 1]; ++k) {
+      const int at = next[std::size_t(a.column[std::size_t(k)])]++;
+      m.innerIndexPtr()[at] = int(i);
+      m.valuePtr()[at] = a.value[std::size_t(k)];
+    }
+  }
   return m;
 }
 
@@ -57,6 +66,12 @@ struct CholmodApi {
   decltype(&cholmod_solve) solve = nullptr;
   decltype(&cholmod_free_factor) free_factor = nullptr;
   decltype(&cholmod_free_dense) free_dense = nullptr;
+  // BLAS's dgemm (Fortran ABI, 32-bit integers), from the BLAS CHOLMOD itself loads: the
+  // supernodal LDL^T of the inertia count below.
+  using Dgemm = void (*)(const char*, const char*, const int*, const int*, const int*,
+                         const double*, const double*, const int*, const double*, const int*,
+                         const double*, double*, const int*);
+  Dgemm dgemm = nullptr;
   std::string error; // why it could not be loaded; empty when it was
 };
 
@@ -81,18 +96,19 @@ const CholmodApi& cholmod_api() {
     find(a.solve, "cholmod_solve");
     find(a.free_factor, "cholmod_free_factor");
     find(a.free_dense, "cholmod_free_dense");
+    find(a.dgemm, "dgemm_"); // dlsym searches the library's dependencies too
     return a;
   }();
   return api;
 }
 
 // A supernodal L L^T factorization of the lower triangle (what Eigen's CholmodSupernodalLLT
-// does, called through the functions loaded above): one ordering (AMD), not CHOLMOD's default
-// search over AMD, METIS and NESDIS, so that the analysis is a small part of the cost on the
-// surface meshes here.
+// does, called through the functions loaded above): one ordering (AMD, or METIS's nested
+// dissection when asked for), not CHOLMOD's default search over AMD, METIS and NESDIS, so that
+// the analysis is a small part of the cost on the surface meshes here.
 class CholmodFactor {
 public:
-  explicit CholmodFactor(const CholmodApi& api) : api_(api) {
+  CholmodFactor(const CholmodApi& api, SpdOrdering ordering) : api_(api) {
     api_.start(&common_);
     // CHOLMOD prints its own warnings with printf, on stdout (a matrix that is not positive
     // definite, ...), where a command's --json goes; zdg reports every failure itself: off.
@@ -100,7 +116,8 @@ public:
     common_.final_asis = 1;
     common_.supernodal = CHOLMOD_SUPERNODAL;
     common_.nmethods = 1;
-    common_.method[0].ordering = CHOLMOD_AMD;
+    common_.method[0].ordering =
+        ordering == SpdOrdering::nested_dissection ? CHOLMOD_METIS : CHOLMOD_AMD;
     common_.postorder = 1;
   }
   ~CholmodFactor() {
@@ -143,6 +160,178 @@ public:
     return out;
   }
 
+  // The negative pivots of B's LDL^T (no pivoting) on the supernodal structure of the factor
+  // (B has the pattern analysed): left-looking, the supernodes in order; each is assembled from
+  // B's lower triangle (permuted by the analysis's ordering), updated by every descendant d
+  // (L_d D_d L_d^T restricted to its rows, one dgemm), then factored as a dense panel (blocks of
+  // 32 columns, the trailing columns by dgemm). Only the signs of D are kept.
+  std::int64_t negative_inertia(const SparseMatrix& b) const {
+    ldl_ = {}; // a count that fails keeps no factor (solve_counted then refuses)
+    const cholmod_factor& f = *factor_;
+    if (!f.is_super) throw Error("inertia (cholmod): the factor is not supernodal");
+    const auto n = static_cast<int>(f.n);
+    const auto nsuper = static_cast<int>(f.nsuper);
+    const auto* super = static_cast<const int*>(f.super);
+    const auto* pi = static_cast<const int*>(f.pi);
+    const auto* px = static_cast<const int*>(f.px);
+    const auto* ls = static_cast<const int*>(f.s);
+    const auto* perm = static_cast<const int*>(f.Perm);
+    std::vector<int> pinv(std::size_t(n), 0);
+    for (int k = 0; k < n; ++k) pinv[std::size_t(perm[k])] = k;
+    // B's lower triangle, permuted, by columns: entry (r, c), r >= c, goes to column min(pinv).
+    std::vector<int> cp(std::size_t(n) + 1, 0), ci;
+    std::vector<double> cx;
+    for (int pass = 0; pass < 2; ++pass) {
+      std::vector<int> fill;
+      if (pass == 1) {
+        for (int j = 0; j < n; ++j) cp[std::size_t(j) + 1] += cp[std::size_t(j)];
+        ci.resize(std::size_t(cp[std::size_t(n)]));
+        cx.resize(ci.size());
+        fill.assign(cp.begin(), cp.end() - 1);
+      }
+      for (int r = 0; r < n; ++r) {
+        for (auto q = b.row_start[std::size_t(r)]; q < b.row_start[std::size_t(r) + 1]; ++q) {
+          const auto c = static_cast<int>(b.column[std::size_t(q)]);
+          if (c > r) continue;
+          const int pr = pinv[std::size_t(r)], pc = pinv[std::size_t(c)];
+          const int j = std::min(pr, pc);
+          if (pass == 0) {
+            ++cp[std::size_t(j) + 1];
+          } else {
+            const auto at = std::size_t(fill[std::size_t(j)]++);
+            ci[at] = std::max(pr, pc);
+            cx[at] = b.value[std::size_t(q)];
+          }
+        }
+      }
+    }
+    std::vector<int> super_of(std::size_t(n), 0);
+    for (int s = 0; s < nsuper; ++s)
+      for (int k = super[s]; k < super[s + 1]; ++k) super_of[std::size_t(k)] = s;
+    std::vector<double> lx(f.xsize, 0.0), w, c;
+    std::vector<int> map(std::size_t(n), 0), head(std::size_t(nsuper), -1),
+        next(std::size_t(nsuper), -1), pos(std::size_t(nsuper), 0);
+    const auto link = [&](int d, int p) { // d updates the supernode of its p-th row next
+      pos[std::size_t(d)] = p;
+      if (p < pi[d + 1] - pi[d]) {
+        const int t = super_of[std::size_t(ls[pi[d] + p])];
+        next[std::size_t(d)] = head[std::size_t(t)];
+        head[std::size_t(t)] = d;
+      }
+    };
+    const char no = 'N', tr = 'T';
+    const double one = 1, minus_one = -1, zero = 0;
+    std::int64_t negative = 0;
+    for (int s = 0; s < nsuper; ++s) {
+      const int k1 = super[s], k2 = super[s + 1], ncol = k2 - k1, nrow = pi[s + 1] - pi[s];
+      const int* rows = ls + pi[s];
+      double* a = lx.data() + px[s]; // nrow x ncol, column-major
+      for (int p = 0; p < nrow; ++p) map[std::size_t(rows[p])] = p;
+      for (int j = k1; j < k2; ++j)
+        for (int q = cp[std::size_t(j)]; q < cp[std::size_t(j) + 1]; ++q)
+          a[std::size_t(j - k1) * std::size_t(nrow) +
+            std::size_t(map[std::size_t(ci[std::size_t(q)])])] += cx[std::size_t(q)];
+      for (int d = head[std::size_t(s)]; d != -1;) {
+        const int d_next = next[std::size_t(d)];
+        const int dcol = super[d + 1] - super[d], drow = pi[d + 1] - pi[d];
+        const int* drows = ls + pi[d];
+        const double* ld = lx.data() + px[d];
+        const int p1 = pos[std::size_t(d)];
+        int p2 = p1;
+        while (p2 < drow && drows[p2] < k2) ++p2;
+        const int m1 = p2 - p1, m2 = drow - p1;
+        // W = L_d(p1:p2, :) D_d, C = L_d(p1:, :) W^T.
+        w.resize(std::size_t(m1) * std::size_t(dcol));
+        for (int j = 0; j < dcol; ++j) {
+          const double dj = ld[std::size_t(j) * std::size_t(drow) + std::size_t(j)];
+          for (int i = 0; i < m1; ++i)
+            w[std::size_t(j) * std::size_t(m1) + std::size_t(i)] =
+                ld[std::size_t(j) * std::size_t(drow) + std::size_t(p1 + i)] * dj;
+        }
+        c.resize(std::size_t(m2) * std::size_t(m1));
+        api_.dgemm(&no, &tr, &m2, &m1, &dcol, &one, ld + p1, &drow, w.data(), &m1, &zero, c.data(),
+                   &m2);
+        for (int j = 0; j < m1; ++j) {
+          double* col = a + std::size_t(drows[p1 + j] - k1) * std::size_t(nrow);
+          for (int i = j; i < m2; ++i)
+            col[map[std::size_t(drows[p1 + i])]] -=
+                c[std::size_t(j) * std::size_t(m2) + std::size_t(i)];
+        }
+        link(d, p2);
+        d = d_next;
+      }
+      // The panel: LDL^T of the diagonal block, L below it, in blocks of 32 columns.
+      const auto at = [&](int i, int j) -> double& {
+        return a[std::size_t(j) * std::size_t(nrow) + std::size_t(i)];
+      };
+      for (int kb = 0; kb < ncol; kb += 32) {
+        const int ke = std::min(ncol, kb + 32);
+        for (int j = kb; j < ke; ++j) {
+          const double dj = at(j, j);
+          if (!std::isfinite(dj) || dj == 0)
+            throw Error("inertia: pivot " + std::to_string(k1 + j) + " is " + std::to_string(dj) +
+                        " (the matrix or a leading minor is singular)");
+          if (dj < 0) ++negative;
+          for (int k = j + 1; k < ke; ++k) {
+            const double lkj = at(k, j) / dj;
+            for (int i = k; i < nrow; ++i) at(i, k) -= at(i, j) * lkj;
+          }
+          for (int i = j + 1; i < nrow; ++i) at(i, j) /= dj;
+        }
+        const int rest = ncol - ke, below = nrow - ke, width = ke - kb;
+        if (rest <= 0) continue;
+        w.resize(std::size_t(rest) * std::size_t(width));
+        for (int j = kb; j < ke; ++j)
+          for (int i = 0; i < rest; ++i)
+            w[std::size_t(j - kb) * std::size_t(rest) + std::size_t(i)] = at(ke + i, j) * at(j, j);
+        api_.dgemm(&no, &tr, &below, &rest, &width, &minus_one, &at(ke, kb), &nrow, w.data(), &rest,
+                   &one, &at(ke, ke), &nrow);
+      }
+      link(s, ncol);
+    }
+    ldl_ = std::move(lx);
+    return negative;
+  }
+
+  // x with B x = b, B the last matrix counted (its LDL^T kept): the permuted right-hand side,
+  // L y = b column by column, D, L^T x = y, permuted back. O(nnz(L)).
+  Eigen::VectorXd solve_counted(const Eigen::Map<const Eigen::VectorXd>& b) const {
+    if (ldl_.empty())
+      throw InvalidArgument("sparse solver: no inertia counted, no LDL^T to solve by");
+    const cholmod_factor& f = *factor_;
+    const auto* super = static_cast<const int*>(f.super);
+    const auto* pi = static_cast<const int*>(f.pi);
+    const auto* px = static_cast<const int*>(f.px);
+    const auto* ls = static_cast<const int*>(f.s);
+    const auto* perm = static_cast<const int*>(f.Perm);
+    const auto n = static_cast<Eigen::Index>(f.n);
+    const auto nsuper = static_cast<int>(f.nsuper);
+    Eigen::VectorXd y(n);
+    for (Eigen::Index k = 0; k < n; ++k) y[k] = b[perm[k]];
+    for (int s = 0; s < nsuper; ++s) {
+      const int k1 = super[s], ncol = super[s + 1] - k1, nrow = pi[s + 1] - pi[s];
+      const int* rows = ls + pi[s];
+      for (int j = 0; j < ncol; ++j) {
+        const double* col = ldl_.data() + px[s] + std::size_t(j) * std::size_t(nrow);
+        const double yj = y[k1 + j];
+        for (int i = j + 1; i < nrow; ++i) y[rows[i]] -= col[i] * yj;
+      }
+    }
+    for (int s = nsuper - 1; s >= 0; --s) {
+      const int k1 = super[s], ncol = super[s + 1] - k1, nrow = pi[s + 1] - pi[s];
+      const int* rows = ls + pi[s];
+      for (int j = ncol - 1; j >= 0; --j) {
+        const double* col = ldl_.data() + px[s] + std::size_t(j) * std::size_t(nrow);
+        double v = y[k1 + j] / col[j];
+        for (int i = j + 1; i < nrow; ++i) v -= col[i] * y[rows[i]];
+        y[k1 + j] = v;
+      }
+    }
+    Eigen::VectorXd x(n);
+    for (Eigen::Index k = 0; k < n; ++k) x[perm[k]] = y[k];
+    return x;
+  }
+
 private:
   // The matrix as CHOLMOD's compressed-column view of its lower triangle (stype -1), no copy.
   static cholmod_sparse view(const EigenSparse& m) {
@@ -162,6 +351,7 @@ private:
     return a;
   }
   const CholmodApi& api_;
+  mutable std::vector<double> ldl_; // the LDL^T of the last matrix counted
   mutable cholmod_common common_{}; // CHOLMOD's workspace, also used by the solves
   cholmod_factor* factor_ = nullptr;
 };
@@ -183,6 +373,7 @@ std::string spd_backend_name(SpdBackend backend) {
 struct SparseSpdSolver::Impl {
   std::int64_t n = 0;
   SpdBackend backend = SpdBackend::eigen_ldlt;
+  SpdOrdering ordering = SpdOrdering::minimum_degree;
   std::vector<std::int64_t> row_start, column; // the pattern analysed
   void factor(const EigenSparse& m, bool analyse);
   std::optional<Eigen::SimplicialLDLT<EigenSparse>> ldlt;
@@ -207,7 +398,7 @@ std::string SparseSpdSolver::cholmod_library() {
 #endif
 }
 
-SparseSpdSolver::SparseSpdSolver(const SparseMatrix& a, SpdBackend backend)
+SparseSpdSolver::SparseSpdSolver(const SparseMatrix& a, SpdBackend backend, SpdOrdering ordering)
     : impl_(std::make_unique<Impl>()) {
   if (a.rows != a.cols)
     throw InvalidArgument("sparse solver: the matrix is " + std::to_string(a.rows) + " x " +
@@ -222,6 +413,7 @@ SparseSpdSolver::SparseSpdSolver(const SparseMatrix& a, SpdBackend backend)
 #endif
   }
   impl_->n = a.rows;
+  impl_->ordering = ordering;
   impl_->row_start = a.row_start;
   impl_->column = a.column;
   const bool use_cholmod =
@@ -234,7 +426,7 @@ void SparseSpdSolver::Impl::factor(const EigenSparse& m, bool analyse) {
 #ifdef ZDG_HAVE_CHOLMOD
   if (backend == SpdBackend::cholmod) {
     if (analyse) {
-      cholmod.emplace(cholmod_api());
+      cholmod.emplace(cholmod_api(), ordering);
       cholmod->analyze(m);
     }
     cholmod->factorize(m);
@@ -267,6 +459,18 @@ void SparseSpdSolver::refactor(const SparseMatrix& b) {
   impl_->factor(to_eigen(b), false);
 }
 
+std::int64_t SparseSpdSolver::negative_inertia(const SparseMatrix& b) const {
+  if (b.rows != impl_->n || b.cols != impl_->n || b.row_start != impl_->row_start ||
+      b.column != impl_->column)
+    throw InvalidArgument("inertia: the matrix needs the pattern of the matrix analysed (" +
+                          std::to_string(impl_->n) + " x " + std::to_string(impl_->n) + ", " +
+                          std::to_string(impl_->column.size()) + " stored entries)");
+#ifdef ZDG_HAVE_CHOLMOD
+  if (impl_->cholmod) return impl_->cholmod->negative_inertia(b);
+#endif
+  return zdg::negative_inertia(b);
+}
+
 SparseSpdSolver::~SparseSpdSolver() = default;
 SparseSpdSolver::SparseSpdSolver(SparseSpdSolver&&) noexcept = default;
 SparseSpdSolver& SparseSpdSolver::operator=(SparseSpdSolver&&) noexcept = default;
@@ -277,6 +481,20 @@ std::int64_t SparseSpdSolver::size() const {
 
 SpdBackend SparseSpdSolver::backend() const {
   return impl_->backend;
+}
+
+std::vector<double> SparseSpdSolver::solve_counted(std::span<const double> b) const {
+  if (static_cast<std::int64_t>(b.size()) != impl_->n)
+    throw InvalidArgument("sparse solver: a right-hand side of " + std::to_string(b.size()) +
+                          " entries for " + std::to_string(impl_->n) + " unknowns");
+#ifdef ZDG_HAVE_CHOLMOD
+  if (impl_->cholmod) {
+    const Eigen::VectorXd x = impl_->cholmod->solve_counted(
+        Eigen::Map<const Eigen::VectorXd>(b.data(), Eigen::Index(b.size())));
+    return std::vector<double>(x.data(), x.data() + x.size());
+  }
+#endif
+  throw InvalidArgument("sparse solver: the Eigen backend keeps no LDL^T of the matrix counted");
 }
 
 std::vector<double> SparseSpdSolver::solve(std::span<const double> b) const {

@@ -6,9 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <numbers>
 #include <string>
 
 namespace {
@@ -48,8 +50,10 @@ TEST(SparseSpdSolver, SolvesRandomSpdSystemsOnEveryBackend) {
     std::vector<zdg::SpdBackend> backends{zdg::SpdBackend::eigen_ldlt};
     if (zdg::SparseSpdSolver::cholmod_available()) backends.push_back(zdg::SpdBackend::cholmod);
     std::vector<std::vector<double>> xs;
+    const auto ordering =
+        *rc::gen::element(zdg::SpdOrdering::minimum_degree, zdg::SpdOrdering::nested_dissection);
     for (auto be : backends) {
-      const zdg::SparseSpdSolver s(a, be);
+      const zdg::SparseSpdSolver s(a, be, ordering);
       RC_ASSERT(s.backend() == be);
       const auto x = s.solve(rhs);
       const auto ax = a.multiply(x);
@@ -192,6 +196,78 @@ TEST(SparseSpdSolver, NegativeInertiaIsTheNumberOfNegativeEigenvalues) {
   });
   EXPECT_THROW(negative_inertia(SparseMatrix::from_triplets(2, 3, {})), InvalidArgument);
   EXPECT_THROW(negative_inertia(SparseMatrix::from_triplets(2, 2, {{0, 0, 1.0}})), Error);
+}
+
+// The a x b grid graph's Laplacian G (the Cartesian product of two paths) has the closed-form
+// eigenvalues (2 - 2 cos(pi i / a)) + (2 - 2 cos(pi j / b)), 0 <= i < a, 0 <= j < b: the
+// solver's inertia of G - mu I, on the analysis of G + I (same pattern), is the number of them
+// below mu, for mu between two consecutive distinct ones, on every backend and ordering.
+// Grids up to 70 x 70 make supernodes wider than the 32-column blocks of the CHOLMOD panel.
+TEST(SparseSpdSolver, SolverNegativeInertiaCountsTheGridLaplacianEigenvaluesBelowMu) {
+  test::check_property([] {
+    const auto a = *rc::gen::inRange<std::int64_t>(1, 71);
+    const auto b = *rc::gen::inRange<std::int64_t>(2, 71);
+    const auto shifted = [&](double mu) {
+      std::vector<SparseTriplet> t;
+      for (std::int64_t x = 0; x < a; ++x) {
+        for (std::int64_t y = 0; y < b; ++y) {
+          const std::int64_t i = x * b + y;
+          const double degree = double((x > 0) + (x + 1 < a) + (y > 0) + (y + 1 < b));
+          t.push_back({i, i, degree - mu});
+          for (const std::int64_t j : {x + 1 < a ? i + b : i, y + 1 < b ? i + 1 : i}) {
+            if (j == i) continue;
+            t.push_back({i, j, -1.0});
+            t.push_back({j, i, -1.0});
+          }
+        }
+      }
+      return SparseMatrix::from_triplets(a * b, a * b, t);
+    };
+    std::vector<double> spectrum;
+    for (std::int64_t i = 0; i < a; ++i)
+      for (std::int64_t j = 0; j < b; ++j)
+        spectrum.push_back(4 - 2 * std::cos(std::numbers::pi * double(i) / double(a)) -
+                           2 * std::cos(std::numbers::pi * double(j) / double(b)));
+    std::sort(spectrum.begin(), spectrum.end());
+    const auto at = *rc::gen::inRange<std::size_t>(1, spectrum.size());
+    RC_PRE(spectrum[at] - spectrum[at - 1] > 1e-6);
+    // Not halfway, nor at 1/sqrt 2 of the gap (the spectrum has sqrt 2 in it): the integer
+    // matrix minus an integer or dyadic mu can have a leading minor exactly 0.
+    const double mu = spectrum[at - 1] + (spectrum[at] - spectrum[at - 1]) / std::numbers::pi;
+    const auto want = static_cast<std::int64_t>(at);
+    std::vector<SpdBackend> backends{SpdBackend::eigen_ldlt};
+    if (SparseSpdSolver::cholmod_available()) backends.push_back(SpdBackend::cholmod);
+    for (const auto backend : backends) {
+      for (const auto ordering : {SpdOrdering::minimum_degree, SpdOrdering::nested_dissection}) {
+        const SparseSpdSolver s(shifted(-1), backend, ordering);
+        RC_ASSERT(s.negative_inertia(shifted(-0.5)) == 0);
+        const SparseMatrix shifted_mu = shifted(mu);
+        RC_ASSERT(s.negative_inertia(shifted_mu) == want);
+        // The LDL^T kept solves B x = r (CHOLMOD): the residual is the oracle (B is at least
+        // (1 - 1/pi) of the gap away from singular).
+        std::vector<double> r(std::size_t(shifted_mu.rows), 0.0);
+        for (std::size_t i = 0; i < r.size(); ++i) r[i] = double(int(i % 7) - 3);
+        if (backend == SpdBackend::cholmod) {
+          const auto x = s.solve_counted(r);
+          const auto bx = shifted_mu.multiply(x);
+          double gap = spectrum[at] - spectrum[at - 1], xmax = 0;
+          for (const double v : x) xmax = std::max(xmax, std::abs(v));
+          for (std::size_t i = 0; i < r.size(); ++i)
+            RC_ASSERT(std::abs(bx[i] - r[i]) <= 1e-8 * (1 + xmax) / std::min(gap, 1.0));
+        } else {
+          RC_ASSERT_THROWS_AS(s.solve_counted(r), InvalidArgument);
+        }
+      }
+    }
+  });
+  const SparseSpdSolver s(SparseMatrix::diagonal(std::vector<double>{1, 2, 3}));
+  EXPECT_THROW(s.solve_counted(std::vector<double>{1, 2, 3}), InvalidArgument); // nothing counted
+  EXPECT_EQ(s.negative_inertia(SparseMatrix::diagonal(std::vector<double>{-1, 2, -3})), 2);
+  EXPECT_THROW(s.negative_inertia(SparseMatrix::diagonal(std::vector<double>{1, 0, 3})), Error);
+  EXPECT_THROW(s.negative_inertia(SparseMatrix::diagonal(std::vector<double>{1, 2})),
+               InvalidArgument);
+  EXPECT_THROW(s.negative_inertia(SparseMatrix::from_triplets(3, 3, {{0, 1, 1.0}})),
+               InvalidArgument);
 }
 
 } // namespace
