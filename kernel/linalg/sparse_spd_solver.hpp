@@ -22,10 +22,9 @@ namespace zdg {
 
 enum class SpdBackend { automatic, cholmod, eigen_ldlt };
 
-/// CHOLMOD's fill-reducing ordering: approximate minimum degree (AMD: the fastest analysis), or
-/// METIS's nested dissection (an analysis several times AMD's, but less fill on large surface
-/// meshes: a factor with about 40% fewer entries, 3x fewer flops, at 10^6 unknowns). The Eigen
-/// backend orders by AMD either way.
+/// CHOLMOD's fill-reducing ordering: approximate minimum degree (AMD: the cheaper analysis), or
+/// METIS's nested dissection (a costlier analysis, less fill on large surface meshes; figures in
+/// bench/README.md, "Laplace-Beltrami spectra"). The Eigen backend orders by AMD either way.
 enum class SpdOrdering { minimum_degree, nested_dissection };
 
 /// "cholmod", "eigen-simplicial-ldlt" (automatic: "automatic").
