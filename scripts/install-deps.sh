@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake git pkg-config clang-format
-  libgmp-dev libboost-dev libeigen3-dev libcgal-dev libspectra-dev
+  libgmp-dev libboost-dev libeigen3-dev libcgal-dev libspectra-dev libnanoflann-dev
   librapidcheck-dev libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev pybind11-dev
   zlib1g-dev libnifti2-dev libpng-dev libsuitesparse-dev
@@ -23,7 +23,7 @@ packages=(
 # installed by scripts/run-tests.sh (ZDG_TEST_PACKAGES=1), not by the main job.
 if [ "${ZDG_TEST_PACKAGES:-0}" = 1 ]; then
   packages+=(chromium chromium-driver python3-selenium python3-nbclient python3-ipykernel
-            python3-skimage)
+            python3-skimage python3-pydicom)
 fi
 
 # Extra packages for one caller (CI adds the fuzzing toolchain: clang-14 libclang-rt-14-dev).
