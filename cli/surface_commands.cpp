@@ -471,7 +471,7 @@ struct ContourArgs {
   std::int64_t max_faces = 2'000'000;
   PictureArgs picture;
   unsigned threads = 0;
-  bool json = false, quiet = false, force = false;
+  bool json = false, quiet = false, force = false, interpolated = false;
 };
 
 void run_contour(const ContourArgs& a) {
@@ -480,6 +480,7 @@ void run_contour(const ContourArgs& a) {
   o.adjacency = parse_adjacency_pair(a.adjacency, 2);
   o.component = parse_component(a.component);
   o.estimates = split_list(a.estimate);
+  o.interpolated = a.interpolated;
   check_estimator_names(o.estimates, contour_estimators());
   // The picture's colour: --color ii-curvature (computed when not in --estimate), the default
   // when ii-curvature is estimated; otherwise the contours are drawn in black.
@@ -514,7 +515,14 @@ void run_contour(const ContourArgs& a) {
   OperationProgress steps = input_steps(obj, cpu_read, o.progress);
   const nlohmann::json input = std::move(obj.json);
   ObjectImage image = object_image(obj, a.in.path);
-  std::vector<unsigned char>().swap(obj.volume.array.bytes); // frees (= {} keeps the capacity)
+  // Marching squares on the grey values at the threshold's level; otherwise the values are
+  // freed now (the interpolated contour is then through the linel midpoints).
+  if (a.interpolated && !a.in.threshold.empty()) {
+    image.grey = std::move(obj.volume);
+    image.grey_level = obj.selection.low;
+  } else {
+    std::vector<unsigned char>().swap(obj.volume.array.bytes); // frees (= {} keeps the capacity)
+  }
   const ContourResult r = contour_operation(std::move(image), o);
 
   if (!a.output.empty()) {
@@ -700,6 +708,11 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                      "picture of the image with its contours coloured by ii-curvature (--color), "
                      "with a colour bar (default size 1000x800)");
   contour->add_option("--estimate", c->estimate, estimate_help(contour_estimators()));
+  contour->add_flag("--interpolated", c->interpolated,
+                    "marching squares beside the linel contours: one vertex a linel, on the grid "
+                    "edge between its pixels by linear interpolation of the values at the "
+                    "--threshold level (the linel midpoints without --threshold); lengths and "
+                    "areas in the JSON, vertices in the CSV (interpolated_x, interpolated_y)");
   contour->add_option("--color", c->picture.color,
                       "the estimate that colours the contours in the picture: ii-curvature "
                       "(computed if not in --estimate) or none; default: ii-curvature when "

@@ -780,6 +780,24 @@ ContourResult contour_operation(ObjectImage image, const ContourOptions& o) {
     r.estimates = contour_estimates(mask, r.contours, req, r.h, r.R, o.threads);
     progress.done("estimates");
   }
+  if (o.interpolated) {
+    progress.start("marching squares");
+    std::optional<GreyLevel2> grey;
+    if (image.grey) {
+      const ScalarVolume* v = &*image.grey;
+      const Domain* d = &dom;
+      grey.emplace();
+      grey->value = [v, d](const Pixel& z) {
+        const std::array<std::int64_t, 2> p{z.y, z.x};
+        return v->value(d->index(p));
+      };
+      grey->level = image.grey_level;
+      r.interpolated_grey = true;
+      r.interpolated_level = image.grey_level;
+    }
+    r.interpolated = marching_squares(r.contours, dom, grey ? &*grey : nullptr);
+    progress.done("marching squares");
+  }
   r.mask = std::move(mask);
   r.seconds = std::move(progress.seconds);
   r.cpu_seconds = std::move(progress.cpu_seconds);
@@ -797,6 +815,9 @@ nlohmann::json to_json(const ContourResult& r) {
                         {"pixels", str(area2 / 2)},
                         {"kind", area2 > 0 ? "outer" : "hole"}};
     if (req.mlp_length) k["mlp-length"] = e.mlp_length[c];
+    if (c < r.interpolated.size())
+      k["interpolated"] = {{"length", r.h * r.interpolated[c].length()},
+                           {"area", r.h * r.h * r.interpolated[c].signed_area()}};
     contours.push_back(k);
   }
   nlohmann::json estimates = nlohmann::json::object();
@@ -820,17 +841,29 @@ nlohmann::json to_json(const ContourResult& r) {
     estimates["radius"] = r.R;
     estimates["radius_pixels"] = r.R / r.h;
   }
-  return {{"adjacency", r.adjacency.name()},
-          {"component", component_text(r.component)},
-          {"object_components", str(r.object_components)},
-          {"contours", contours},
-          {"linels", str(cs.linels())},
-          {"euler", str(r.betti.euler)},
-          {"betti", {str(r.betti.b[0]), str(r.betti.b[1])}},
-          {"estimates", estimates},
-          {"seconds", timings(r.seconds)},
-          {"cpu_seconds", timings(r.cpu_seconds)},
-          {"threads", r.threads}};
+  nlohmann::json out = {{"adjacency", r.adjacency.name()},
+                        {"component", component_text(r.component)},
+                        {"object_components", str(r.object_components)},
+                        {"contours", contours},
+                        {"linels", str(cs.linels())},
+                        {"euler", str(r.betti.euler)},
+                        {"betti", {str(r.betti.b[0]), str(r.betti.b[1])}},
+                        {"estimates", estimates},
+                        {"seconds", timings(r.seconds)},
+                        {"cpu_seconds", timings(r.cpu_seconds)},
+                        {"threads", r.threads}};
+  if (!r.interpolated.empty() || (cs.contours.empty() && r.interpolated_grey)) {
+    double length = 0, area = 0;
+    for (const auto& c : r.interpolated) {
+      length += c.length();
+      area += c.signed_area();
+    }
+    out["interpolated"] = {{"level", r.interpolated_grey ? nlohmann::json(r.interpolated_level)
+                                                         : nlohmann::json(nullptr)},
+                           {"length", r.h * length},
+                           {"area", r.h * r.h * area}};
+  }
+  return out;
 }
 
 void write_contour_csv(const std::string& path, const ContourResult& r) {
@@ -844,6 +877,8 @@ void write_contour_csv(const std::string& path, const ContourResult& r) {
   if (req.ii_curvature) out += ",ii_curvature";
   if (req.bc_tangent) out += ",bc_tx,bc_ty";
   if (req.lmst_tangent) out += ",lmst_tx,lmst_ty";
+  const bool ms = !r.interpolated.empty();
+  if (ms) out += ",interpolated_x,interpolated_y";
   out += "\n";
   for (std::size_t c = 0; c < cs.contours.size(); ++c) {
     const auto& k = cs.contours[c];
@@ -864,6 +899,12 @@ void write_contour_csv(const std::string& path, const ContourResult& r) {
       if (req.lmst_tangent)
         fmt::format_to(std::back_inserter(out), ",{},{}", e.lmst_tangent[c][i].x,
                        e.lmst_tangent[c][i].y);
+      if (ms) {
+        const auto& v = r.interpolated[c].vertices[i];
+        fmt::format_to(std::back_inserter(out), ",{},{}",
+                       r.origin.x + h * (v.x - double(r.origin_pixel.x)),
+                       r.origin.y + h * (v.y - double(r.origin_pixel.y)));
+      }
       out += "\n";
       p = p + d;
       if (out.size() > (std::size_t{1} << 22)) {

@@ -37,6 +37,7 @@
 #include <zdg/estimators/surface_regularization.hpp>
 #include <zdg/estimators/volume_ii.hpp>
 #include <zdg/kernel/curves/image_contours.hpp>
+#include <zdg/kernel/curves/marching_squares.hpp>
 #include <zdg/kernel/images/image.hpp>
 #include <zdg/kernel/images/scalar_volume.hpp>
 #include <zdg/kernel/render/contour_svg.hpp>
@@ -226,6 +227,9 @@ struct ContourOptions {
   std::int64_t component = 0;         ///< 0: all; K >= 1: the K-th largest
   std::vector<std::string> estimates; ///< names from contour_estimators()
   EstimatorRadius radius;
+  /// Marching squares beside the linel contours (kernel/curves/marching_squares.hpp): on the
+  /// image's grey values at its level when ObjectImage::grey is set, else the linel midpoints.
+  bool interpolated = false;
   unsigned threads = 0;
   ProgressCallback progress;
 };
@@ -237,6 +241,9 @@ struct ContourResult {
   ImageContours contours;
   ContourEstimateRequest request;
   ContourEstimates estimates;
+  std::vector<InterpolatedContour> interpolated; ///< one per contour, lattice coordinates
+  bool interpolated_grey = false;                ///< on grey values (else linel midpoints)
+  double interpolated_level = 0;
   double h = 1, R = 0;
   Image<std::uint8_t> mask; ///< the selected object (for a picture)
   Pixel origin_pixel;       ///< the lattice point at the physical origin
@@ -248,7 +255,8 @@ struct ContourResult {
 ContourResult contour_operation(ObjectImage image, const ContourOptions& options);
 
 /// {"adjacency","component","object_components","contours":[{"linels","pixels","kind",
-/// "mlp-length"?}],"linels","euler","betti","estimates":{...},"seconds","cpu_seconds",
+/// "mlp-length"?,"interpolated"?:{"length","area"} (physical units)}],
+/// "interpolated"?:{"level"|null,"length","area"},"linels","euler","betti","estimates":{...},"seconds","cpu_seconds",
 /// "threads"}.
 nlohmann::json to_json(const ContourResult& r);
 

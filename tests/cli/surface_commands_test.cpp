@@ -365,6 +365,45 @@ TEST(SurfaceCommand, ComponentSelection) {
   EXPECT_EQ(j["components"][0]["voxels"], small);
 }
 
+// zdg contour --interpolated: marching squares on the grey values at the --threshold level.
+// A grey disc f = 100 (1 - |z - c| / 15) (float) thresholded at 0: the interpolated length and
+// area are the circle's within 0.5 %, one vertex a linel in the CSV; without --threshold (a
+// binary image) the vertices are the linel midpoints.
+TEST(ContourCommand, InterpolatedMarchingSquares) {
+  Files f;
+  const std::int64_t n = 40;
+  std::vector<double> v(std::size_t(n * n));
+  std::vector<std::int64_t> bin(std::size_t(n * n));
+  for (std::int64_t y = 0; y < n; ++y)
+    for (std::int64_t x = 0; x < n; ++x) {
+      const double r = std::hypot(x - 19.3, y - 20.1);
+      v[std::size_t(y * n + x)] = 100 * (1 - r / 15);
+      bin[std::size_t(y * n + x)] = r <= 15 ? 1 : 0;
+    }
+  write_npy(f.path("grey.npy"), make_npy(std::vector<std::int64_t>{n, n}, v));
+  write_npy(f.path("bin.npy"), make_npy(DType::U8, {n, n}, bin));
+  auto j =
+      run_json("contour " + f("grey.npy") + " --threshold 0 --interpolated --csv " + f("g.csv"));
+  ASSERT_TRUE(j.contains("interpolated"));
+  EXPECT_EQ(j["interpolated"]["level"].get<double>(), 0.0);
+  EXPECT_NEAR(j["interpolated"]["length"].get<double>() / (2 * M_PI * 15), 1.0, 5e-3);
+  EXPECT_NEAR(j["interpolated"]["area"].get<double>() / (M_PI * 225), 1.0, 5e-3);
+  EXPECT_NEAR(j["contours"][0]["interpolated"]["length"].get<double>(),
+              j["interpolated"]["length"].get<double>(), 1e-9);
+  const auto csv = f.bytes("g.csv");
+  EXPECT_NE(csv.find("interpolated_x,interpolated_y"), std::string::npos);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n') - 1,
+            std::stoll(j["linels"].get<std::string>()));
+  j = run_json("contour " + f("bin.npy") + " --interpolated");
+  EXPECT_TRUE(j["interpolated"]["level"].is_null());
+  // The polygon of the linel midpoints: shorter than the linel contour, longer than the circle.
+  const double l = j["interpolated"]["length"].get<double>();
+  EXPECT_LT(l, double(std::stoll(j["linels"].get<std::string>())));
+  EXPECT_GT(l, 2 * M_PI * 15 * 0.98);
+  j = run_json("contour " + f("bin.npy"));
+  EXPECT_FALSE(j.contains("interpolated"));
+}
+
 TEST(ContourCommand, TopologyEstimatesAndOutputs) {
   Files f;
   const std::int64_t n = 40;
