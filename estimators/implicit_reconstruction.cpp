@@ -315,10 +315,11 @@ double winding_number_exact(const PointCloud& cloud, std::span<const double> are
 
 struct WindingTree::Impl {
   struct Node {
-    P3 c;              // area-weighted centre
-    double r2 = 0;     // squared radius
-    P3 m;              // sum a_i n_i
-    double mm[9] = {}; // sum a_i (p_i - c) n_i^T, row-major
+    P3 c;               // area-weighted centre
+    double r2 = 0;      // squared radius
+    P3 m;               // sum a_i n_i
+    double mm[9] = {};  // sum a_i (p_i - c) n_i^T, row-major
+    double t3[27] = {}; // T_ijk = sum a_i n_i (p_i - c)_j (p_i - c)_k, index 9 i + 3 j + k
     std::uint32_t begin = 0, end = 0;
     std::int32_t left = -1, right = -1;
   };
@@ -373,8 +374,13 @@ struct WindingTree::Impl {
       const P3 r = nd.c - q;
       const double d2 = dot(r, r);
       if (d2 > beta2 * nd.r2) {
-        // g(r) = r / |r|^3, J(r) = I / |r|^3 - 3 r r^T / |r|^5: w ~ m . g + trace(J M).
-        const double inv = 1 / std::sqrt(d2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv;
+        // g(r) = r / |r|^3 expanded about r = c - q to second order in d = p - c:
+        //   g_i(r + d) ~ g_i + dg_i/dr_j d_j + 1/2 d2g_i/dr_j dr_k d_j d_k, with
+        //   dg_i/dr_j = delta_ij / |r|^3 - 3 r_i r_j / |r|^5 and
+        //   d2g_i/dr_j dr_k = -3 (delta_ij r_k + delta_ik r_j + delta_jk r_i) / |r|^5
+        //                     + 15 r_i r_j r_k / |r|^7.
+        const double inv = 1 / std::sqrt(d2), inv3 = inv * inv * inv, inv5 = inv3 * inv * inv,
+                     inv7 = inv5 * inv * inv;
         double t = dot(nd.m, r) * inv3;
         const double* M = nd.mm;
         const double rr[3] = {r.x, r.y, r.z};
@@ -382,6 +388,16 @@ struct WindingTree::Impl {
         for (int i = 0; i < 3; ++i)
           for (int j = 0; j < 3; ++j) rmr += rr[i] * M[3 * i + j] * rr[j];
         t += tr * inv3 - 3 * rmr * inv5;
+        const double* T = nd.t3;
+        double tiij = 0, tijj = 0, trrr = 0;
+        for (int i = 0; i < 3; ++i) {
+          tiij += T[9 * i + 3 * i + 0] * rr[0] + T[9 * i + 3 * i + 1] * rr[1] +
+                  T[9 * i + 3 * i + 2] * rr[2];
+          tijj += (T[9 * i + 0] + T[9 * i + 4] + T[9 * i + 8]) * rr[i];
+          for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) trrr += T[9 * i + 3 * j + k] * rr[i] * rr[j] * rr[k];
+        }
+        t += 0.5 * (-3 * (2 * tiij + tijj) * inv5 + 15 * trrr * inv7);
         w += t;
         continue;
       }
@@ -422,6 +438,7 @@ WindingTree::WindingTree(const PointCloud& cloud, std::span<const double> areas)
     auto& nd = impl_->nodes[id];
     nd.m = {};
     std::fill(std::begin(nd.mm), std::end(nd.mm), 0.0);
+    std::fill(std::begin(nd.t3), std::end(nd.t3), 0.0);
     double r2 = 0;
     for (std::uint32_t i = nd.begin; i < nd.end; ++i) {
       const P3 d = impl_->p[i] - nd.c;
@@ -430,6 +447,9 @@ WindingTree::WindingTree(const PointCloud& cloud, std::span<const double> areas)
       const double dd[3] = {d.x, d.y, d.z}, aa[3] = {a.x, a.y, a.z};
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) nd.mm[3 * r + c] += dd[r] * aa[c];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          for (int k = 0; k < 3; ++k) nd.t3[9 * i + 3 * j + k] += aa[i] * dd[j] * dd[k];
       r2 = std::max(r2, dot(d, d));
     }
     nd.r2 = r2;
@@ -457,7 +477,8 @@ ImplicitField reconstruct_field(const PointCloud& cloud, const SampleGrid& grid,
   case ReconstructionMethod::rbf:
     return rbf_field(cloud, tree, grid, o);
   case ReconstructionMethod::winding: {
-    const auto areas = point_areas(cloud, tree, o.k, o.threads);
+    const auto areas = point_areas(
+        cloud, tree, std::min(std::max<std::size_t>(o.k, 20), cloud.size() - 1), o.threads);
     if (o.winding_exact)
       return sample(grid, o.threads,
                     [&](const P3& q) { return 0.5 - winding_number_exact(cloud, areas, q); });

@@ -12,8 +12,8 @@
 //   winding  1/2 - w(q), w the generalized winding number of the oriented points (Barill,
 //            Dickson, Schmidt, Levin, Jacobson, "Fast winding numbers for soups and clouds",
 //            SIGGRAPH 2018): w(q) = sum_i a_i (p_i - q) . n_i / (4 pi |p_i - q|^3), a_i the
-//            area of p_i's Voronoi cell among its k nearest projected on its tangent plane
-//            (point_areas). Evaluated by the tree of the paper (WindingTree: second-order
+//            area of p_i's Voronoi cell among its max(k, 20) nearest projected on its tangent
+//            plane (point_areas). Evaluated by the tree of the paper (WindingTree: second-order
 //            Taylor expansions of far clusters, Barnes-Hut criterion |q - c| > beta r) or
 //            exactly (the brute-force sum, `winding_exact`).
 //   poisson  CGAL's Poisson surface reconstruction (Kazhdan, Bolitho, Hoppe, SGP 2006, as
@@ -125,9 +125,11 @@ double winding_number_exact(const PointCloud& cloud, std::span<const double> are
 
 /// The tree of Barill et al.: a binary tree of the points (median splits, leaves of at most
 /// 8 points); each node keeps its area-weighted centre c, radius r (the farthest point) and
-/// the moments sum a_i n_i and sum a_i (p_i - c) n_i^T of the expansion of order 2. A node with
-/// |q - c| > beta r contributes its expansion, a leaf otherwise its exact sum. The error of
-/// one node is O((r / |q - c|)^2) times its exact contribution's scale (the paper's bound).
+/// the moments sum a_i n_i, sum a_i (p_i - c) n_i^T and sum a_i n_i (p_i - c)(p_i - c)^T of
+/// the Taylor expansion of order 2 of the kernel about c. A node with |q - c| > beta r
+/// contributes its expansion, a leaf otherwise its exact sum; the error of one node is
+/// O((r / |q - c|)^3) relative to its contribution (beta = 2: a node's expansion within 1/8 of
+/// it; the sum over a sphere of 3000 points within 1e-2 of the exact one, 1e-3 at beta = 3).
 class WindingTree {
 public:
   WindingTree(const PointCloud& cloud, std::span<const double> areas);

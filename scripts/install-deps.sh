@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake git pkg-config clang-format
-  libgmp-dev libboost-dev libeigen3-dev libcgal-dev libspectra-dev libnanoflann-dev
+  libgmp-dev libboost-dev libeigen3-dev libcgal-dev libmpfr-dev libspectra-dev libnanoflann-dev
   librapidcheck-dev libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev pybind11-dev
   zlib1g-dev libnifti2-dev libpng-dev libsuitesparse-dev

@@ -76,14 +76,15 @@ TEST(PointAreas, PlanarLatticeCellsAreSquares) {
   }
 }
 
-// The areas of uniform samples of a sphere add up to its area (4 pi r^2) within a few percent.
+// The areas of uniform samples of a sphere add up to its area (4 pi r^2) within 1 % with 20
+// neighbours (with 10, missing Voronoi neighbours inflate the cells by about 9 %).
 TEST(PointAreas, SphereAreasSumToTheSphereArea) {
   const auto c = sphere_points(4000, 2.0, 7);
   const KdTree tree(c.points);
-  const auto a = point_areas(c, tree, 12);
+  const auto a = point_areas(c, tree, 20);
   double sum = 0;
   for (double x : a) sum += x;
-  EXPECT_NEAR(sum / (16 * std::numbers::pi), 1.0, 0.03);
+  EXPECT_NEAR(sum / (16 * std::numbers::pi), 1.0, 0.01);
 }
 
 // Theorem (Barill et al. 2018, section 3): the winding number of a closed surface is 1 inside
@@ -91,7 +92,7 @@ TEST(PointAreas, SphereAreasSumToTheSphereArea) {
 TEST(WindingNumber, NearOneInsideAndZeroOutsideOfASphere) {
   const auto c = sphere_points(3000, 1.0, 11);
   const KdTree tree(c.points);
-  const auto a = point_areas(c, tree, 12);
+  const auto a = point_areas(c, tree, 20);
   const WindingTree wt(c, a);
   std::mt19937_64 rng(3);
   for (int t = 0; t < 200; ++t) {
