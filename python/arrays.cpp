@@ -38,6 +38,7 @@
 #include <zdg/kernel/transforms/reverse_distance_transform.hpp>
 #include <zdg/kernel/transforms/separable_engine.hpp>
 #include <zdg/kernel/transforms/voronoi_map.hpp>
+#include <zdg/operations/reconstruct_operations.hpp>
 #include <zdg/operations/surface_operations.hpp>
 
 #include <pybind11/stl.h>
@@ -578,6 +579,72 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
   return d;
 }
 
+// zdg reconstruct's operation (operations/reconstruct_operations.hpp): points (n, 3) and
+// optional normals (n, 3) in, the mesh and the topology of the reconstruction out.
+std::vector<Point3<double>> triples_of(const py::object& obj, const char* what) {
+  py::array a = py::array::ensure(obj);
+  if (!a) throw InvalidArgument(std::string("reconstruct: ") + what + " is not an array");
+  const char k = a.dtype().kind();
+  if (!(k == 'i' || k == 'u' || k == 'f'))
+    throw InvalidArgument(std::string("reconstruct: ") + what + " must hold numbers, not " +
+                          std::string(py::str(a.dtype())));
+  if (a.ndim() != 2 || a.shape(1) != 3)
+    throw InvalidArgument(std::string("reconstruct: ") + what + " has shape " + shape_text(a) +
+                          ", not (n, 3)");
+  const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  std::vector<Point3<double>> out(static_cast<std::size_t>(d.shape(0)));
+  for (std::size_t i = 0; i < out.size(); ++i)
+    out[i] = {d.data()[3 * i], d.data()[3 * i + 1], d.data()[3 * i + 2]};
+  return out;
+}
+
+py::dict reconstruct_py(const py::object& points, const py::object& normals, double h,
+                        const std::string& method, std::size_t k, std::size_t normals_k,
+                        double beta, bool exact, std::size_t rbf_centers, double rbf_offset,
+                        double imls_radius, int margin, unsigned threads) {
+  PointCloud cloud;
+  cloud.points = triples_of(points, "points");
+  if (!normals.is_none()) cloud.normals = triples_of(normals, "normals");
+  ReconstructOptions o;
+  o.method.method = reconstruction_method_of(method);
+  o.method.k = k;
+  o.method.winding_beta = beta;
+  o.method.winding_exact = exact;
+  o.method.rbf_centers = rbf_centers;
+  o.method.rbf_offset = rbf_offset;
+  o.method.imls_radius = imls_radius;
+  o.method.threads = threads;
+  o.h = h;
+  o.margin = margin;
+  o.normals_k = normals_k;
+  o.source = "reconstruct";
+  ReconstructResult r = [&] {
+    py::gil_scoped_release release;
+    return reconstruct_operation(std::move(cloud), o);
+  }();
+  PolygonMesh& m = r.reconstruction.mesh;
+  const std::int64_t nv = m.vertex_count(), nf = m.face_count();
+  std::vector<double> xyz(static_cast<std::size_t>(3 * nv));
+  for (std::int64_t i = 0; i < nv; ++i) {
+    const auto& v = m.vertices[static_cast<std::size_t>(i)];
+    xyz[static_cast<std::size_t>(3 * i)] = v.x;
+    xyz[static_cast<std::size_t>(3 * i + 1)] = v.y;
+    xyz[static_cast<std::size_t>(3 * i + 2)] = v.z;
+  }
+  const auto& g = r.reconstruction.field.grid;
+  py::dict d;
+  d["vertices"] = owning_array(std::move(xyz), {nv, 3});
+  d["faces"] = owning_array(std::move(m.indices), {nf, 3});
+  d["field"] = owning_array(std::move(r.reconstruction.field.values), {g.nz, g.ny, g.nx});
+  d["lower"] = py::make_tuple(g.lower[2], g.lower[1], g.lower[0]);
+  d["h"] = h;
+  const auto& b = r.reconstruction.betti;
+  d["betti"] = py::make_tuple(b.b[0], b.b[1], b.b[2]);
+  d["inside"] = r.reconstruction.inside_count;
+  d["normals"] = r.normals_estimated ? "estimated" : "given";
+  return d;
+}
+
 // zdg contour's operation (operations/surface_operations.hpp) on the whole 2D object: the
 // contours as Freeman chains, the Betti numbers and the estimates asked for.
 py::dict contour_py(const py::object& obj, const std::string& adjacency,
@@ -892,6 +959,18 @@ void bind_arrays(py::module_& m) {
         "PLY (zdg.view shows it). estimate='mean' or 'principal' (primal "
         "mesh only: face f is surfel f) adds the integral-invariant estimates per face at grid "
         "step h and radius R, as ii_curvature returns them.");
+  m.def("reconstruct", &reconstruct_py, py::arg("points"), py::arg("normals") = py::none(),
+        py::kw_only(), py::arg("h"), py::arg("method") = "hoppe", py::arg("k") = 10,
+        py::arg("normals_k") = 10, py::arg("beta") = 2.0, py::arg("exact") = false,
+        py::arg("rbf_centers") = 1000, py::arg("rbf_offset") = 0.0, py::arg("imls_radius") = 0.0,
+        py::arg("margin") = 3, py::arg("threads") = 0,
+        "A surface from points (n, 3) with optional outward normals (n, 3; estimated by PCA "
+        "and oriented over the MST when None), as zdg reconstruct computes it: the field of "
+        "method ('hoppe', 'winding', 'poisson', 'rbf', 'imls') on the lattice h Z^3 (negative "
+        "inside), the digitization of its negative set and its marching-cubes mesh: "
+        "{'vertices' (m, 3), 'faces' (f, 3), 'field' (nz, ny, nx), 'lower' (z, y, x index of "
+        "field[0, 0, 0]: the sample h * lower), 'h', 'betti' (b0, b1, b2), 'inside', "
+        "'normals' ('given' or 'estimated')}.");
   m.def("contour", &contour_py, py::arg("image"), py::kw_only(), py::arg("adjacency") = "4,8",
         py::arg("estimates") = std::vector<std::string>{}, py::arg("radius") = "5v",
         py::arg("spacing") = py::none(), py::arg("threads") = 0,

@@ -81,6 +81,9 @@ const std::vector<Operation>& operations() {
        "the operators themselves are reached through zdg converge's lb-* estimators"},
       {"mesh at", "", "",
        "serve and Python: works on files (a .ply mesh in, a .ply mesh with the fields out)"},
+      {"reconstruct", "", "reconstruct",
+       "serve: a point cloud of 10^5 points is not a line of JSON; the command reads point "
+       "files, Python takes arrays"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
   };

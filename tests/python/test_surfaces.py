@@ -95,3 +95,39 @@ def test_contour_estimates_and_the_surface_topology():
     ball = (((x - 9.5) ** 2 + (y - 9.5) ** 2 + (z - 9.5) ** 2) <= 64).astype(np.uint8)
     s = zdg.surface(ball)
     assert s["betti"] == (1, 0, 0) and s["surfaces"] == 1 and s["object_components"] == 1
+
+
+def sphere_points(n, radius, seed):
+    """n points uniform on the sphere of the given radius about the origin, with unit normals."""
+    rng = np.random.default_rng(seed)
+    u = rng.normal(size=(n, 3))
+    u /= np.linalg.norm(u, axis=1)[:, None]
+    return radius * u, u
+
+
+@pytest.mark.parametrize("method", ["hoppe", "winding", "imls"])
+def test_reconstruct_a_sphere_from_points(method):
+    """The reconstruction of sphere samples is one sphere (Betti numbers 1, 0, 1) whose mesh
+    vertices lie within a grid step of the sphere; the field is negative at the centre."""
+    p, n = sphere_points(2000, 1.0, 3)
+    r = zdg.reconstruct(p, n, h=0.1, method=method)
+    assert r["betti"] == (1, 0, 1)
+    assert r["normals"] == "given"
+    d = np.abs(np.linalg.norm(r["vertices"], axis=1) - 1)
+    assert d.max() < 0.1
+    assert r["faces"].shape[1] == 3 and r["faces"].max() < len(r["vertices"])
+    centre = tuple(-np.array(r["lower"]))  # the sample h * 0
+    assert r["field"][centre] < 0
+
+
+def test_reconstruct_estimates_missing_normals_and_refuses_bad_points():
+    p, _ = sphere_points(1500, 1.0, 4)
+    r = zdg.reconstruct(p, h=0.1)
+    assert r["normals"] == "estimated"
+    assert r["betti"] == (1, 0, 1)
+    bad = p.copy()
+    bad[5] = bad[2]
+    with pytest.raises(ValueError, match="repeats point 2"):
+        zdg.reconstruct(bad, h=0.1)
+    with pytest.raises(ValueError, match=r"not \(n, 3\)"):
+        zdg.reconstruct(p[:, :2], h=0.1)
