@@ -212,9 +212,9 @@ void put_text(std::string& out, double v) {
 }
 
 std::string ply_bytes(const PointCloud& c) {
-  std::string out = "ply\nformat binary_little_endian 1.0\ncomment written by zdg\nelement vertex " +
-                    std::to_string(c.size()) +
-                    "\nproperty double x\nproperty double y\nproperty double z\n";
+  std::string out =
+      "ply\nformat binary_little_endian 1.0\ncomment written by zdg\nelement vertex " +
+      std::to_string(c.size()) + "\nproperty double x\nproperty double y\nproperty double z\n";
   if (c.has_normals()) out += "property double nx\nproperty double ny\nproperty double nz\n";
   out += "end_header\n";
   out.reserve(out.size() + c.size() * (c.has_normals() ? 48 : 24));
