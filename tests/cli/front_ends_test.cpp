@@ -81,6 +81,9 @@ const std::vector<Operation>& operations() {
        "the operators themselves are reached through zdg converge's lb-* estimators"},
       {"mesh at", "", "",
        "serve and Python: works on files (a .ply mesh in, a .ply mesh with the fields out)"},
+      {"normals", "", "",
+       "serve and Python: works on files (a point cloud in, the points with their normals out); "
+       "the library function is estimators/point_normals.hpp"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
   };
