@@ -8,8 +8,9 @@
 //   C = sum_{q in N(p)} (q - c)(q - c)^T, c the centroid of N(p) (Eigen's closed-form 3x3
 //   self-adjoint solver on C scaled by its largest entry). On points of a plane it is the
 //   plane's normal up to rounding: the error is about 1e-16 times the neighbourhood's extent
-//   over its smallest in-plane spread (tests: 1e-9 on random planes). Hoppe's O(r) rate for
-//   the normal of a C^2 surface sampled densely (r the neighbourhood radius): papers/THEORY.md.
+//   over its smallest in-plane spread (tests: 1e-9 on random planes). On a C^2 surface sampled
+//   without noise the error is O(r), r the neighbourhood radius (the convergence study
+//   measures it; no row in papers/THEORY.md yet).
 // jet: the osculating jet of degree 2 fitted to N(p) (estimators/jet_fitting.hpp, jet_fit;
 //   Cazals, Pouget 2005); needs k >= 5 (the 6 coefficients of a quadric).
 // VCM (estimators/vcm_normal.hpp) does not apply: it integrates over the Voronoi cells of a
