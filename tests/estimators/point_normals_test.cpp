@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -24,14 +25,13 @@ P unit(const P& v) {
   return (1 / std::sqrt(dot(v, v))) * v;
 }
 
-// A random unit vector from RapidCheck.
+// A random unit vector from RapidCheck (z and the longitude: uniform on the sphere; no
+// rejection loop, which RapidCheck's small sizes could keep failing).
 P random_direction() {
-  for (;;) {
-    const P v{*rc::gen::inRange(-1000, 1001) / 1000.0, *rc::gen::inRange(-1000, 1001) / 1000.0,
-              *rc::gen::inRange(-1000, 1001) / 1000.0};
-    const double l = dot(v, v);
-    if (l > 0.01 && l <= 1) return unit(v);
-  }
+  const double z = *rc::gen::inRange(-100000, 100001) / 100000.0;
+  const double t = *rc::gen::inRange(0, 100000) / 100000.0 * 2 * std::numbers::pi;
+  const double r = std::sqrt(std::max(0.0, 1 - z * z));
+  return {r * std::cos(t), r * std::sin(t), z};
 }
 
 // A rotation of R^3 taking e_z to a random direction (its frame as columns).
