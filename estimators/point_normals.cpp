@@ -8,10 +8,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <numeric>
 #include <queue>
 #include <tuple>
+#include <utility>
 
 namespace zdg {
 
@@ -42,14 +44,58 @@ void check_k(std::size_t k, std::size_t n, PointNormalMethod method) {
                           std::to_string(n));
 }
 
+// The bits of x (21 of them) spread to every third bit: a Morton code's one coordinate.
+std::uint64_t spread_bits(std::uint64_t x) {
+  x &= 0x1fffff;
+  x = (x | x << 32) & 0x1f00000000ffff;
+  x = (x | x << 16) & 0x1f0000ff0000ff;
+  x = (x | x << 8) & 0x100f00f00f00f00f;
+  x = (x | x << 4) & 0x10c30c30c30c30c3;
+  x = (x | x << 2) & 0x1249249249249249;
+  return x;
+}
+
+// The tree's points in Morton order (21 bits per axis over their bounding box, ties by index):
+// the order in which the queries run, so that consecutive queries visit the same part of the
+// tree and of the points (bench/README.md). The results do not depend on it.
+std::vector<std::size_t> spatial_order(const KdTree& tree) {
+  const std::size_t n = tree.size();
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  if (n == 0) return order;
+  Point3<double> lo = tree.point(0), hi = lo;
+  for (std::size_t i = 1; i < n; ++i) {
+    const auto& p = tree.point(i);
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  const auto cell = [](double v, double a, double b) {
+    if (!(b > a)) return std::uint64_t{0};
+    const double t = std::clamp((v - a) / (b - a), 0.0, 1.0);
+    return static_cast<std::uint64_t>(t * 2097151.0);
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t>> key(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& p = tree.point(i);
+    key[i] = {spread_bits(cell(p.x, lo.x, hi.x)) | spread_bits(cell(p.y, lo.y, hi.y)) << 1 |
+                  spread_bits(cell(p.z, lo.z, hi.z)) << 2,
+              i};
+  }
+  std::sort(key.begin(), key.end());
+  for (std::size_t i = 0; i < n; ++i) order[i] = key[i].second;
+  return order;
+}
+
 // The k nearest other points of every tree point, row i at [i k, i k + k) (the point itself
 // left out: it is the first of its own k + 1 nearest when the points are distinct).
-std::vector<std::size_t> knn_lists(const KdTree& tree, std::size_t k, unsigned threads) {
+std::vector<std::size_t> knn_lists(const KdTree& tree, std::size_t k, unsigned threads,
+                                   const std::vector<std::size_t>& order) {
   const std::size_t n = tree.size();
   std::vector<std::size_t> out(n * k);
   parallel_chunks(static_cast<std::int64_t>(n), threads, [&](std::int64_t b, std::int64_t e) {
     std::vector<Neighbour> nb;
-    for (auto i = static_cast<std::size_t>(b); i < static_cast<std::size_t>(e); ++i) {
+    for (auto at = static_cast<std::size_t>(b); at < static_cast<std::size_t>(e); ++at) {
+      const std::size_t i = order[at];
       tree.nearest(tree.point(i), k + 1, nb);
       std::size_t m = 0;
       for (const auto& x : nb)
@@ -193,14 +239,16 @@ PointNormals point_normals(const KdTree& tree, const PointNormalsOptions& option
   out.normals.resize(n);
   const bool orienting = options.orientation == PointNormalOrientation::mst;
   // The lists are kept for the orientation; without it each chunk queries as it goes.
+  const std::vector<std::size_t> order = spatial_order(tree);
   std::vector<std::size_t> knn;
-  if (orienting) knn = knn_lists(tree, k, options.threads);
+  if (orienting) knn = knn_lists(tree, k, options.threads, order);
   parallel_chunks(
       static_cast<std::int64_t>(n), options.threads, [&](std::int64_t b, std::int64_t e) {
         std::vector<Neighbour> found;
         std::vector<Point3<double>> nb;
         nb.reserve(k + 1);
-        for (auto i = static_cast<std::size_t>(b); i < static_cast<std::size_t>(e); ++i) {
+        for (auto at = static_cast<std::size_t>(b); at < static_cast<std::size_t>(e); ++at) {
+          const std::size_t i = order[at];
           nb.clear();
           nb.push_back(tree.point(i));
           if (orienting) {
@@ -245,7 +293,8 @@ std::size_t orient_normals_mst(const KdTree& tree, std::size_t k,
   check_normals(normals, tree.size());
   std::vector<Point3<double>> units(normals.size());
   for (std::size_t i = 0; i < normals.size(); ++i) units[i] = unit(normals[i]);
-  const std::size_t components = orient(tree, knn_lists(tree, k, threads), k, units);
+  const std::size_t components =
+      orient(tree, knn_lists(tree, k, threads, spatial_order(tree)), k, units);
   // The given normals keep their lengths; only their signs change.
   for (std::size_t i = 0; i < normals.size(); ++i)
     if (dot(units[i], normals[i]) < 0) normals[i] = -normals[i];

@@ -27,10 +27,11 @@
 //   into the half-space n_z > 0 (n_y > 0 when n_z = 0, then n_x > 0).
 //
 // The result does not depend on the thread count (each normal is a function of its
-// neighbourhood; the orientation is sequential). Complexity: the kd-tree O(N log N), the
-// queries O(N (log N + k)) expected, PCA O(N k), jet O(N k) CGAL fits of 6 coefficients, the
-// orientation O(N k log(N k)) time and O(N k) memory (the graph). Threads through
-// kernel/parallel/parallel_for.hpp (0 = all cores).
+// neighbourhood, whatever the order of the queries; the orientation is sequential).
+// Complexity: the kd-tree O(N log N), a Morton sort of the points O(N log N) (the queries run
+// in that order, for locality), the queries O(N (log N + k)) expected, PCA O(N k), jet O(N k) CGAL
+// fits of 6 coefficients, the orientation O(N k log(N k)) time and O(N k) memory (the graph).
+// Threads through kernel/parallel/parallel_for.hpp (0 = all cores).
 //
 // Errors: InvalidArgument, one line: k < 3, k > N - 1 (too few neighbours: "k = 10 needs at
 // least 11 points, the cloud has 5"), jet with k < 5, and the cloud's own checks
