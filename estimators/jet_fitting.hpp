@@ -41,4 +41,11 @@ std::vector<JetEstimate> jet_fitting(std::span<const Point3<double>> points,
                                      std::span<const Point3<double>> outward, double radius,
                                      int degree, unsigned threads = 0);
 
+/// Jet fitting on one given neighbourhood (the k nearest of a point cloud, for instance):
+/// neighbourhood[0] is the point where the Monge form is taken, the others its neighbours;
+/// the normal is turned towards `outward`. ok = false when there are fewer points than the jet
+/// has coefficients ((d + 1)(d + 2)/2); InvalidArgument for a degree outside 1..4.
+JetEstimate jet_fit(std::span<const Point3<double>> neighbourhood, const Point3<double>& outward,
+                    int degree);
+
 } // namespace zdg

@@ -215,7 +215,10 @@ std::uint64_t min_record_bytes(const Element& e, Format format) {
 
 } // namespace
 
-PlyMesh parse_ply(std::string_view bytes, const std::string& source) {
+namespace {
+
+// parse_ply, or with faces_optional a file without a face element (a point cloud).
+PlyMesh parse_ply_file(std::string_view bytes, const std::string& source, bool faces_optional) {
   // The header: lines up to "end_header", each ended by "\n" (or "\r\n").
   std::size_t pos = 0;
   std::size_t line_no = 0;
@@ -358,17 +361,22 @@ PlyMesh parse_ply(std::string_view bytes, const std::string& source) {
     vrole[i] = 6 + int(out.vertex_scalars.size());
     out.vertex_scalars.emplace_back(p.name, std::vector<double>{});
   }
-  if (!face_el) throw IoError(source + ": no face element (a point cloud is not a mesh)");
+  if (!face_el && !faces_optional)
+    throw IoError(source + ": no face element (a point cloud is not a mesh)");
   // The face element's roles: 0 the indices, 1..3 normal, 4 + j the j-th scalar.
+  const Element no_faces;
+  if (!face_el) face_el = &no_faces; // no records: none is read
   std::vector<int> frole(face_el->props.size(), -1);
-  int ind = find(*face_el, "vertex_indices");
+  int ind = face_el == &no_faces ? 0 : find(*face_el, "vertex_indices");
   if (ind < 0) ind = find(*face_el, "vertex_index");
-  if (ind < 0 || !face_el->props[std::size_t(ind)].list)
-    throw IoError(source + ": the face element has no list property 'vertex_indices'");
-  if (!is_integer(face_el->props[std::size_t(ind)].type))
-    throw IoError(source + ": the face indices are of a floating-point type");
-  frole[std::size_t(ind)] = 0;
-  bool fnormals = true;
+  if (face_el != &no_faces) {
+    if (ind < 0 || !face_el->props[std::size_t(ind)].list)
+      throw IoError(source + ": the face element has no list property 'vertex_indices'");
+    if (!is_integer(face_el->props[std::size_t(ind)].type))
+      throw IoError(source + ": the face indices are of a floating-point type");
+    frole[std::size_t(ind)] = 0;
+  }
+  bool fnormals = face_el != &no_faces;
   for (int k = 0; k < 3; ++k) {
     const int i = find(*face_el, normal[k]);
     fnormals = fnormals && i >= 0 && !face_el->props[std::size_t(i)].list;
@@ -521,6 +529,16 @@ PlyMesh parse_ply(std::string_view bytes, const std::string& source) {
   }
   m.validate();
   return out;
+}
+
+} // namespace
+
+PlyMesh parse_ply(std::string_view bytes, const std::string& source) {
+  return parse_ply_file(bytes, source, false);
+}
+
+PlyMesh parse_ply_points(std::string_view bytes, const std::string& source) {
+  return parse_ply_file(bytes, source, true);
 }
 
 PlyMesh read_ply(const std::string& path) {

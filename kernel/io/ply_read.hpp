@@ -48,6 +48,11 @@ struct PlyMesh {
 /// Parses the bytes of a PLY file; `source` names it in errors.
 PlyMesh parse_ply(std::string_view bytes, const std::string& source);
 
+/// As parse_ply, but a file without a face element is accepted: a point cloud (the mesh then
+/// has its vertices, their normals when given, and no faces). A face element, when present, is
+/// read and checked as parse_ply does. The reader of kernel/io/point_cloud_io.hpp.
+PlyMesh parse_ply_points(std::string_view bytes, const std::string& source);
+
 /// Reads and parses the file at path (kernel/io/input_file.hpp's checks).
 PlyMesh read_ply(const std::string& path);
 

@@ -84,6 +84,9 @@ const std::vector<Operation>& operations() {
       {"reconstruct", "", "reconstruct",
        "serve: a point cloud of 10^5 points is not a line of JSON; the command reads point "
        "files, Python takes arrays"},
+      {"normals", "", "",
+       "serve and Python: works on files (a point cloud in, the points with their normals out); "
+       "the library function is estimators/point_normals.hpp"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
   };
