@@ -447,9 +447,9 @@ WindingTree::WindingTree(const PointCloud& cloud, std::span<const double> areas)
       const double dd[3] = {d.x, d.y, d.z}, aa[3] = {a.x, a.y, a.z};
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) nd.mm[3 * r + c] += dd[r] * aa[c];
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          for (int k = 0; k < 3; ++k) nd.t3[9 * i + 3 * j + k] += aa[i] * dd[j] * dd[k];
+      for (int u = 0; u < 3; ++u)
+        for (int v = 0; v < 3; ++v)
+          for (int w = 0; w < 3; ++w) nd.t3[9 * u + 3 * v + w] += aa[u] * dd[v] * dd[w];
       r2 = std::max(r2, dot(d, d));
     }
     nd.r2 = r2;
