@@ -588,9 +588,13 @@ std::vector<Point3<double>> triples_of(const py::object& obj, const char* what) 
   if (!(k == 'i' || k == 'u' || k == 'f'))
     throw InvalidArgument(std::string("reconstruct: ") + what + " must hold numbers, not " +
                           std::string(py::str(a.dtype())));
-  if (a.ndim() != 2 || a.shape(1) != 3)
-    throw InvalidArgument(std::string("reconstruct: ") + what + " has shape " + shape_text(a) +
-                          ", not (n, 3)");
+  if (a.ndim() != 2 || a.shape(1) != 3) {
+    std::string shape = "(";
+    for (py::ssize_t d = 0; d < a.ndim(); ++d)
+      shape += (d ? ", " : "") + std::to_string(a.shape(d));
+    throw InvalidArgument(std::string("reconstruct: ") + what + " has shape " + shape +
+                          (a.ndim() == 1 ? ",)" : ")") + ", not (n, 3)");
+  }
   const auto d = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
   std::vector<Point3<double>> out(static_cast<std::size_t>(d.shape(0)));
   for (std::size_t i = 0; i < out.size(); ++i)
