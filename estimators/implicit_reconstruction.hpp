@@ -144,7 +144,8 @@ private:
 };
 
 /// A reconstruction: the field, the digitization of its negative set (a 3D image over the
-/// grid, 1 inside), its Betti numbers ((6,26)) and the marching-cubes mesh of the set
+/// grid, 1 inside), the Betti numbers of that solid ((6,26): a ball 1, 0, 0, a solid torus
+/// 1, 1, 0) and the marching-cubes mesh of the set
 /// ((6,26), vertices on the zero crossings, physical units).
 struct Reconstruction {
   ImplicitField field;

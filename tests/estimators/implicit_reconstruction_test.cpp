@@ -106,8 +106,10 @@ TEST(WindingNumber, NearOneInsideAndZeroOutsideOfASphere) {
   }
 }
 
-// The tree with every node opened (beta huge) is the exact sum up to rounding; with beta = 2
-// its error stays below 1e-2 on random clouds and queries.
+// The tree with every node opened (beta huge) is the exact sum up to rounding; the expansion's
+// error falls as (1 / beta)^3: below 3e-2 at beta = 2 and 3e-3 at beta = 4 on sparse random
+// clouds (20 to 400 points, where one cluster weighs most); the sphere test above holds the
+// dense case to 1e-2 at beta = 2 (the first-order expansion was off by 0.09 there).
 TEST(WindingNumber, TreeConvergesToTheBruteForceSum) {
   test::check_property([] {
     const auto n = *rc::gen::inRange<std::size_t>(20, 400);
@@ -120,16 +122,17 @@ TEST(WindingNumber, TreeConvergesToTheBruteForceSum) {
                  *rc::gen::inRange(-30, 31) / 10.0};
       const double exact = winding_number_exact(c, a, q);
       RC_ASSERT(std::fabs(wt(q, 1e9) - exact) <= 1e-9);
-      RC_ASSERT(std::fabs(wt(q, 2.0) - exact) <= 1e-2);
+      RC_ASSERT(std::fabs(wt(q, 2.0) - exact) <= 3e-2);
+      RC_ASSERT(std::fabs(wt(q, 4.0) - exact) <= 3e-3);
     }
   });
 }
 
 class Methods : public ::testing::TestWithParam<ReconstructionMethod> {};
 
-// Reconstructions of sphere samples: the digitization of the negative set is one sphere
-// (Betti numbers 1, 0, 1) and the mesh's Hausdorff distance to the sphere is below a bound
-// that falls as the sampling grows (here: 600 then 4000 points, h = 0.1 on r = 1).
+// Reconstructions of sphere samples: the digitization of the negative set is one ball
+// (Betti numbers of the solid 1, 0, 0) and the mesh's Hausdorff distance to the sphere is below a
+// bound that falls as the sampling grows (here: 600 then 4000 points, h = 0.1 on r = 1).
 TEST_P(Methods, SphereHasTheRightTopologyAndDistanceFallsWithN) {
   ReconstructionOptions o;
   o.method = GetParam();
@@ -139,7 +142,7 @@ TEST_P(Methods, SphereHasTheRightTopologyAndDistanceFallsWithN) {
     const auto r = reconstruct(c, 0.1, o);
     EXPECT_EQ(r.betti.b[0], 1) << n;
     EXPECT_EQ(r.betti.b[1], 0) << n;
-    EXPECT_EQ(r.betti.b[2], 1) << n;
+    EXPECT_EQ(r.betti.b[2], 0) << n;
     const double d = max_sphere_distance(r.mesh, 1.0);
     EXPECT_LT(d, 0.12) << n;
     EXPECT_LT(d, previous * 1.05) << n;
@@ -147,7 +150,8 @@ TEST_P(Methods, SphereHasTheRightTopologyAndDistanceFallsWithN) {
   }
 }
 
-// A torus of radii (1, 0.4) sampled by 6000 points at h = 0.08: Betti numbers 1, 2, 1.
+// A torus of radii (1, 0.4) sampled by 6000 points at h = 0.08: a solid torus, Betti numbers
+// 1, 1, 0.
 TEST_P(Methods, TorusHasGenusOne) {
   ReconstructionOptions o;
   o.method = GetParam();
@@ -155,8 +159,8 @@ TEST_P(Methods, TorusHasGenusOne) {
   const auto c = torus_points(6000, 1.0, 0.4, 17);
   const auto r = reconstruct(c, 0.08, o);
   EXPECT_EQ(r.betti.b[0], 1);
-  EXPECT_EQ(r.betti.b[1], 2);
-  EXPECT_EQ(r.betti.b[2], 1);
+  EXPECT_EQ(r.betti.b[1], 1);
+  EXPECT_EQ(r.betti.b[2], 0);
 }
 
 // Results do not depend on the thread count.
