@@ -13,7 +13,8 @@ from . import _zdg
 from ._zdg import (betti_numbers, cf, christoffel, connected_components, contour, converge, hull,
                    hull_disc, hull_ellipse, hull_halfplanes, distance_transform, dsl_subsegment, floor_sum,
                    ii_curvature, mesh_html, power_map, probe_plane, read_volume, recognize_dss,
-                   recognize_plane, reduced_medial_axis, reverse_distance_transform, simple_points, surface,
+                   reconstruct, recognize_plane, reduced_medial_axis, reverse_distance_transform, simple_points,
+                   surface,
                    surfels, tangential_cover, thinning, voronoi_map, write_volume)
 
 __all__ = ["betti_numbers", "cf", "christoffel", "connected_components", "contour", "converge",
@@ -22,7 +23,7 @@ __all__ = ["betti_numbers", "cf", "christoffel", "connected_components", "contou
            "simple_points", "surface",
            "distance_transform", "dsl_subsegment", "floor_sum", "ii_curvature", "mesh_html", "plot",
            "reduced_medial_axis", "reverse_distance_transform", "voronoi_map",
-           "read_volume", "recognize_dss", "surfels", "tangential_cover", "thinning",
+           "read_volume", "reconstruct", "recognize_dss", "surfels", "tangential_cover", "thinning",
            "view", "Viewer", "write_volume"]
 
 

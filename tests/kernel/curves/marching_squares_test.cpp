@@ -28,7 +28,7 @@ TEST(MarchingSquares, BinaryImagesGiveTheLinelMidpoints) {
     const auto c = image_contours(img, k, 12 - k);
     Image<double> grey(img.domain());
     for (std::int64_t i = 0; i < img.domain().size(); ++i)
-      grey.values()[std::size_t(i)] = img.values()[std::size_t(i)];
+      grey.values()[std::size_t(i)] = img.values()[std::size_t(i)] != 0 ? 1.0 : 0.0;
     const GreyLevel2 level{[&](const Pixel& z) { return value_at(grey, z); }, 0.5};
     for (const GreyLevel2* g : {static_cast<const GreyLevel2*>(nullptr), &level}) {
       const auto polys = marching_squares(c, img.domain(), g);
