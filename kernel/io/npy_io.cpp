@@ -52,8 +52,13 @@ const DTypeInfo& info(DType t) {
   return kTypes[0];
 }
 
+// The message quotes header text (a dtype, a key) as it was read: control characters (a line
+// break inside a quoted dtype) become '?', so that the error stays one line.
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
-  throw IoError(path + ": " + what);
+  std::string line = what;
+  for (char& c : line)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  throw IoError(path + ": " + line);
 }
 
 // The header of an npy file: its dict parsed (a Python literal restricted to what numpy
