@@ -28,7 +28,9 @@ std::unique_ptr<Shape3> shape3(const std::string& spec) {
   return std::unique_ptr<Shape3>(p);
 }
 
-double norm(const P3& p) { return std::sqrt(dot(p, p)); }
+double norm(const P3& p) {
+  return std::sqrt(dot(p, p));
+}
 
 // Symmetry: the mean of uniform points of the unit sphere is its centre (each coordinate has
 // variance 1/3: standard deviation of the mean sqrt(1 / (3 N))); Archimedes: the cap z > 1/2
