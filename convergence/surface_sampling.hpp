@@ -27,7 +27,7 @@
 //
 // The area: the closed form when the shape has one (spheres, torus, ellipsoid), else the
 // estimate sum over T of area(T) J(centroid of T) (error O(h_f^2) relative on C^2 surfaces).
-// The shape's Betti numbers are those of the fine digitization ((6,26)), which equal the
+// The Betti numbers of the solid are those of the fine digitization ((6,26)), which equal the
 // shape's for h_f below the reach's bound (Stelldinger, Koethe 2005).
 //
 // Errors (InvalidArgument, one line): a shape that is not 3D, n < 1 or n > 10^8, sigma
@@ -56,7 +56,7 @@ struct SamplingMesh {
   std::vector<double> cumulative; ///< cumulative triangle areas (cumulative.back() = area(M))
   double area = 0;                ///< the surface's area (closed form or estimate, above)
   bool area_exact = false;        ///< the closed form
-  BettiNumbers betti;             ///< of the fine digitization, (6,26)
+  BettiNumbers betti;             ///< of the solid: the fine digitization, (6,26)
 };
 
 /// The fine mesh of `shape` (computed once per shape spec, then shared).

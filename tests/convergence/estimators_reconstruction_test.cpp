@@ -1,6 +1,6 @@
 // The reconstruction estimators (convergence/estimators_reconstruction.cpp) and the samples
 // sweeps of the driver (convergence/experiment.hpp). Oracles: the exact surface (projection),
-// the shapes' Betti numbers (sphere (1, 0, 1), torus (1, 2, 1)), closed-form power laws for
+// the Betti numbers of the solids (ball (1, 0, 0), solid torus (1, 1, 0)), power laws for
 // the rate check in N, and the counts of the sweep syntaxes computed by hand.
 #include <zdg/arith/error.hpp>
 #include <zdg/convergence/estimator.hpp>
