@@ -5,8 +5,12 @@
 //                --estimator bc-curvature:alpha=14/9 --h exp:30:60:3 -o DIR
 //   zdg converge --shape sphere9 --estimator lb-heat --function 'x^2-y^2' --h 2:0.5:3
 //   zdg converge CONFIG.toml -o DIR          (same keys as the flags: shape, estimator, h,
-//                                            k, alpha, translations, seed, box, fit_levels,
-//                                            threads, tolerance, title; convergence/config.hpp)
+//                                            samples, k, alpha, translations, seed, box,
+//                                            fit_levels, threads, tolerance, title;
+//                                            convergence/config.hpp)
+//   zdg converge --shape sphere1 --estimator recon-hausdorff:method=imls
+//                --samples exp:60:90:5 -o DIR   (a samples sweep: N points sampled on the
+//                                               shape, errors against N; sampled estimators)
 //   zdg converge --list
 //
 // Flags and TOML files are read into the same settings and validated by one function
@@ -54,8 +58,8 @@ namespace fs = std::filesystem;
 struct ConvergeOptions {
   std::string config_file;
   std::vector<std::string> shapes, estimators, functions;
-  std::optional<std::string> h, k, alpha, box, title, translations, fit_levels, threads, seed,
-      tolerance;
+  std::optional<std::string> h, samples, k, alpha, box, title, translations, fit_levels, threads,
+      seed, tolerance;
   std::string output;
   bool json = false, quiet = false, list = false, force = false, no_plot = false;
 };
@@ -99,6 +103,7 @@ ExperimentConfig make_config(const ConvergeOptions& o) {
   for (const auto& x : o.functions) s.functions.push_back({x, "--function"});
   const std::pair<const std::optional<std::string>*, std::optional<Setting> ExperimentSettings::*>
       flags[] = {{&o.h, &ExperimentSettings::h},
+                 {&o.samples, &ExperimentSettings::samples},
                  {&o.k, &ExperimentSettings::k},
                  {&o.alpha, &ExperimentSettings::alpha},
                  {&o.box, &ExperimentSettings::box},
@@ -108,9 +113,9 @@ ExperimentConfig make_config(const ConvergeOptions& o) {
                  {&o.fit_levels, &ExperimentSettings::fit_levels},
                  {&o.threads, &ExperimentSettings::threads},
                  {&o.tolerance, &ExperimentSettings::tolerance}};
-  const char* names[] = {
-      "--h",    "--k",          "--alpha",   "--box",      "--title", "--translations",
-      "--seed", "--fit-levels", "--threads", "--tolerance"};
+  const char* names[] = {"--h",        "--samples",      "--k",    "--alpha",      "--box",
+                         "--title",    "--translations", "--seed", "--fit-levels", "--threads",
+                         "--tolerance"};
   for (std::size_t i = 0; i < std::size(flags); ++i) {
     if (*flags[i].first) s.*flags[i].second = Setting{**flags[i].first, names[i]};
   }
@@ -131,23 +136,27 @@ nlohmann::json json_number(double v) {
 nlohmann::json runs_json(const ExperimentResult& r) {
   nlohmann::json runs = nlohmann::json::array();
   for (const auto& x : r.runs) {
-    runs.push_back({{"shape", x.shape},
-                    {"estimator", x.estimator},
-                    {"h", x.h},
-                    {"translation", x.translation},
-                    {"offset", x.offset},
-                    {"k", x.k},
-                    {"alpha", x.alpha},
-                    {"linf", json_number(x.errors.linf)},
-                    {"l2", json_number(x.errors.l2)},
-                    {"mean", json_number(x.errors.mean)},
-                    {"n", x.errors.n},
-                    {"seconds", x.seconds}});
+    nlohmann::json run{{"shape", x.shape},
+                       {"estimator", x.estimator},
+                       {"h", x.samples > 0 ? nlohmann::json() : nlohmann::json(x.h)},
+                       {"translation", x.translation},
+                       {"offset", x.offset},
+                       {"k", x.k},
+                       {"alpha", x.alpha},
+                       {"linf", json_number(x.errors.linf)},
+                       {"l2", json_number(x.errors.l2)},
+                       {"mean", json_number(x.errors.mean)},
+                       {"n", x.errors.n},
+                       {"seconds", x.seconds}};
+    if (x.samples > 0) run["samples"] = x.samples; // a samples sweep (h is then null)
+    runs.push_back(std::move(run));
   }
   return runs;
 }
 
-nlohmann::json fits_json(const ExperimentResult& r) {
+// A samples sweep's fits are against log(N): they give samples_min and samples_max (the
+// counts of the levels used) in place of h_min and h_max, and `variable` "N" (else "h").
+nlohmann::json fits_json(const ExperimentResult& r, bool samples_sweep) {
   nlohmann::json fits = nlohmann::json::array();
   for (const auto& f : r.fits) {
     nlohmann::json j{{"shape", f.shape},
@@ -157,10 +166,16 @@ nlohmann::json fits_json(const ExperimentResult& r) {
                      {"stderr", json_number(f.fit.stderr_slope)},
                      {"intercept", json_number(f.fit.intercept)},
                      {"levels", f.fit.n},
-                     {"h_min", f.hs.empty() ? 0.0 : f.hs.back()},
-                     {"h_max", f.hs.empty() ? 0.0 : f.hs.front()},
                      {"expected", f.expected ? nlohmann::json(*f.expected) : nlohmann::json()},
                      {"pass", f.pass ? nlohmann::json(*f.pass) : nlohmann::json()}};
+    if (samples_sweep) {
+      j["variable"] = "N";
+      j["samples_min"] = f.hs.empty() ? 0 : static_cast<std::int64_t>(f.hs.front());
+      j["samples_max"] = f.hs.empty() ? 0 : static_cast<std::int64_t>(f.hs.back());
+    } else {
+      j["h_min"] = f.hs.empty() ? 0.0 : f.hs.back();
+      j["h_max"] = f.hs.empty() ? 0.0 : f.hs.front();
+    }
     if (!f.reason.empty()) j["reason"] = f.reason;
     if (f.expected) {
       j["theory"] = f.theory;
@@ -185,6 +200,7 @@ nlohmann::json entries_json(const ExperimentResult& r) {
         params[p.name] = p.name == "k"        ? e.parameters.k
                          : p.name == "degree" ? e.parameters.degree
                          : p.name == "n"      ? e.parameters.count
+                         : p.name == "sigma"  ? e.parameters.sigma
                                               : e.parameters.alpha;
       }
     }
@@ -195,23 +211,29 @@ nlohmann::json entries_json(const ExperimentResult& r) {
 
 nlohmann::json config_json(const ExperimentConfig& c, const ExperimentResult& r,
                            const ConvergeOptions& o) {
-  return {{"shapes", c.shapes},
-          {"estimators", c.estimators},
-          {"functions", c.functions},
-          {"entries", entries_json(r)},
-          {"h", c.h_text},
-          {"hs", c.hs},
-          {"k", c.k_text ? nlohmann::json(*c.k_text) : nlohmann::json()},
-          {"alpha", c.alpha_text ? nlohmann::json(*c.alpha_text) : nlohmann::json()},
-          {"translations", c.translations},
-          {"seed", c.seed},
-          {"box", c.box ? nlohmann::json({c.box->first, c.box->second}) : nlohmann::json()},
-          {"fit_levels", c.fit_levels},
-          {"tolerance", c.tolerance},
-          {"threads", r.threads},
-          {"threads_requested", c.threads},
-          {"title", c.title},
-          {"config_file", o.config_file}};
+  nlohmann::json j{
+      {"shapes", c.shapes},
+      {"estimators", c.estimators},
+      {"functions", c.functions},
+      {"entries", entries_json(r)},
+      {"h", c.h_text},
+      {"hs", c.hs},
+      {"k", c.k_text ? nlohmann::json(*c.k_text) : nlohmann::json()},
+      {"alpha", c.alpha_text ? nlohmann::json(*c.alpha_text) : nlohmann::json()},
+      {"translations", c.translations},
+      {"seed", c.seed},
+      {"box", c.box ? nlohmann::json({c.box->first, c.box->second}) : nlohmann::json()},
+      {"fit_levels", c.fit_levels},
+      {"tolerance", c.tolerance},
+      {"threads", r.threads},
+      {"threads_requested", c.threads},
+      {"title", c.title},
+      {"config_file", o.config_file}};
+  if (c.samples_sweep()) { // the counts of a samples sweep (h and hs are then empty)
+    j["samples"] = c.samples_text;
+    j["sample_counts"] = c.samples;
+  }
+  return j;
 }
 
 // Writes text to a staging file of an OutputSet.
@@ -394,9 +416,13 @@ void run_converge(ConvergeOptions o, Context& ctx) {
   ProgressFn progress;
   if (show) {
     progress = [](std::size_t done, std::size_t total, const RunRecord& r) {
-      std::cerr << "\r[" << done << "/" << total << "] " << r.shape << " " << r.estimator
-                << " h=" << std::setprecision(4) << r.h << " t=" << r.translation << "   "
-                << std::flush;
+      std::cerr << "\r[" << done << "/" << total << "] " << r.shape << " " << r.estimator;
+      if (r.samples > 0) {
+        std::cerr << " N=" << r.samples;
+      } else {
+        std::cerr << " h=" << std::setprecision(4) << r.h;
+      }
+      std::cerr << " t=" << r.translation << "   " << std::flush;
       if (done == total) std::cerr << '\n';
     };
   }
@@ -404,7 +430,7 @@ void run_converge(ConvergeOptions o, Context& ctx) {
 
   nlohmann::json summary{
       {"config", config_json(config, result, o)},
-      {"fits", fits_json(result)},
+      {"fits", fits_json(result, config.samples_sweep())},
       {"all_pass", result.all_pass},
       {"provenance",
        {{"commit", git_commit()},
@@ -419,7 +445,7 @@ void run_converge(ConvergeOptions o, Context& ctx) {
     plotted = outputs->write(csv.str(), summary.dump(2) + "\n");
   }
   if (o.json) {
-    print_json({{"runs", runs_json(result)}, {"fits", fits_json(result)}});
+    print_json({{"runs", runs_json(result)}, {"fits", fits_json(result, config.samples_sweep())}});
   } else {
     int width = 6;
     int ewidth = 15;
@@ -581,6 +607,10 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
                     "lb-cotan, lb-combinatorial), e.g. 'x^2-y^2' (repeatable; default: x, "
                     "x^2-y^2, exp(z))");
     add_text_option(cmd, "--h", o->h, "Grid steps: HMAX:HMIN:N, exp:I0:I1[:STEP] or h1,h2,...");
+    add_text_option(cmd, "--samples", o->samples,
+                    "Sample counts N in place of --h (the sampled estimators, recon-*): "
+                    "exp:I0:I1[:STEP] (N = round(exp(i/10))), NMIN:NMAX:COUNT (geometric) or "
+                    "n1,n2,...; the fit is against log(N)");
     add_text_option(
         cmd, "--k", o->k,
         "Default k of every estimator that has one (R = k h^alpha, mask factor); or one "
@@ -607,7 +637,7 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
     cmd->add_option("name", *name,
                     "a folder of papers/: cviu2014-ii2d, cviu2014-compare, gauss-area, "
                     "tangent-2d, cviu2014-ii3d, hausdorff, lb-digital, at-normals, "
-                    "laplacian-comparison (scripts: "
+                    "laplacian-comparison, reconstruction (scripts: "
                     "needs -o DIR)")
         ->required();
     cmd->add_flag("--quick", *quick, "The reduced sweep (papers/NAME/quick.toml)");

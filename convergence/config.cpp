@@ -16,11 +16,11 @@ void ExperimentSettings::fill_from(const ExperimentSettings& file) {
   if (shapes.empty()) shapes = file.shapes;
   if (estimators.empty()) estimators = file.estimators;
   if (functions.empty()) functions = file.functions;
-  for (auto member :
-       {&ExperimentSettings::h, &ExperimentSettings::k, &ExperimentSettings::alpha,
-        &ExperimentSettings::box, &ExperimentSettings::title, &ExperimentSettings::translations,
-        &ExperimentSettings::seed, &ExperimentSettings::fit_levels, &ExperimentSettings::threads,
-        &ExperimentSettings::tolerance}) {
+  for (auto member : {&ExperimentSettings::h, &ExperimentSettings::samples, &ExperimentSettings::k,
+                      &ExperimentSettings::alpha, &ExperimentSettings::box,
+                      &ExperimentSettings::title, &ExperimentSettings::translations,
+                      &ExperimentSettings::seed, &ExperimentSettings::fit_levels,
+                      &ExperimentSettings::threads, &ExperimentSettings::tolerance}) {
     if (!(this->*member)) this->*member = file.*member;
   }
 }
@@ -54,6 +54,8 @@ public:
         s.functions = list(node, key, false);
       } else if (key == "h") {
         s.h = node.is_array() ? joined(node, key, ",") : value(node, key);
+      } else if (key == "samples") {
+        s.samples = node.is_array() ? joined(node, key, ",") : value(node, key);
       } else if (key == "k" && node.is_array()) { // one k per shape
         once(key, "k", s.k.has_value(), node);
         s.k = joined(node, key, ",");
@@ -73,8 +75,8 @@ public:
                                                                : nullptr;
         if (slot == nullptr) {
           fail(node, "unknown key '" + shown(key) +
-                         "' (known: shape, estimator, function, h, k, alpha, box, translations, "
-                         "seed, fit_levels, threads, tolerance, title)");
+                         "' (known: shape, estimator, function, h, samples, k, alpha, box, "
+                         "translations, seed, fit_levels, threads, tolerance, title)");
         }
         *slot = value(node, key);
       }
@@ -199,11 +201,23 @@ ExperimentConfig validate_experiment_settings(const ExperimentSettings& s) {
   if (s.estimators.empty()) {
     throw InvalidArgument("no estimator given (--estimator or key 'estimator')");
   }
-  if (!s.h) throw InvalidArgument("no grid steps given (--h or key 'h')");
+  if (!s.h && !s.samples) {
+    throw InvalidArgument("no grid steps given (--h or key 'h'; --samples or key 'samples' for "
+                          "the sampled estimators)");
+  }
+  if (s.h && s.samples) {
+    throw InvalidArgument(s.h->origin + " and " + s.samples->origin +
+                          " given together: a sweep is over grid steps or over sample counts");
+  }
   for (const auto& x : s.shapes) c.shapes.push_back(x.text);
   for (const auto& x : s.estimators) c.estimators.push_back(x.text);
-  c.hs = parse_grid_steps(s.h->text, s.h->origin);
-  c.h_text = s.h->text;
+  if (s.h) {
+    c.hs = parse_grid_steps(s.h->text, s.h->origin);
+    c.h_text = s.h->text;
+  } else {
+    c.samples = parse_sample_counts(s.samples->text, s.samples->origin);
+    c.samples_text = s.samples->text;
+  }
   if (s.k) {
     // positive and finite, one or one per shape; ranges per entry
     k_texts_per_shape(s.k->text, s.shapes.size(), s.k->origin);

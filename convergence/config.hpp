@@ -13,6 +13,9 @@
 //                           [[estimators]] sections): one entry per element
 //   h                       grid steps: "HMAX:HMIN:N", "exp:I0:I1[:STEP]", "h1,h2,..." or an
 //                           array of numbers
+//   samples                 sample counts of a samples sweep, in place of h (sampled
+//                           estimators): "exp:I0:I1[:STEP]", "NMIN:NMAX:COUNT", "n1,n2,..." or
+//                           an array of integers
 //   k, alpha                defaults of every entry that uses them (numbers or "14/9")
 //   box                     "LO:HI" or [LO, HI]
 //   translations, seed, fit_levels (or fit-levels), threads    integers
@@ -41,7 +44,7 @@ struct Setting {
 
 struct ExperimentSettings {
   std::vector<Setting> shapes, estimators, functions;
-  std::optional<Setting> h, k, alpha, box, title, translations, seed, fit_levels, threads,
+  std::optional<Setting> h, samples, k, alpha, box, title, translations, seed, fit_levels, threads,
       tolerance;
 
   /// Takes every setting not given here from `file` (the command line overrides a file).

@@ -45,6 +45,7 @@ const std::vector<Estimator>& estimators() {
     detail::register_ii_auto_estimators(v);
     detail::register_probing_estimators(v);
     detail::register_spectrum_estimators(v);
+    detail::register_reconstruction_estimators(v);
     return v;
   }();
   return all;
@@ -105,6 +106,14 @@ double checked_value(const Estimator& e, const EstimatorParameter& p, const std:
       throw InvalidArgument(what + ": " + error.what());
     }
     return 0;
+  }
+  if (p.closed_below) {
+    const double v = parse_real(text, what);
+    if (!(v >= p.lo && v <= p.hi)) {
+      throw InvalidArgument(what + " = '" + text + "' must be in [" + real_text(p.lo) + ", " +
+                            real_text(p.hi) + "]");
+    }
+    return v;
   }
   const double v = p.open_above ? parse_real(text, what) : parse_real_in(text, what, p.lo, p.hi);
   if (p.open_above && !(v > p.lo && v < p.hi)) {
@@ -193,6 +202,7 @@ EstimatorParameters resolve_parameters(const EstimatorSpec& spec,
     if (p.name == "alpha") out.alpha = value;
     if (p.name == "degree") out.degree = value;
     if (p.name == "n") out.count = value;
+    if (p.name == "sigma") out.sigma = value;
   }
   return out;
 }

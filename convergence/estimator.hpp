@@ -64,6 +64,7 @@ struct EstimatorParameters {
       {};                  // test function u (text, convergence/scalar_field.hpp); "" where unused
   double count = 0;        // how many (lb-spectrum: eigenvalues, `n`); 0 where unused
   std::string choice = {}; // a named variant (lb-spectrum: `operator`); "" where unused
+  double sigma = 0;        // noise standard deviation of sampled points (recon-*); 0 where unused
 };
 
 /// Everything one run needs.
@@ -78,13 +79,19 @@ struct RunInput {
   std::string function = {};                  // test function u (Laplace-Beltrami estimators)
   double count = 0;                           // how many (lb-spectrum: eigenvalues)
   std::string choice = {};                    // a named variant (lb-spectrum: the operator)
+  // A samples sweep (ExperimentConfig::samples; Estimator::sampled): h is 0 and the run
+  // samples `samples` points of the shape itself (convergence/surface_sampling.hpp) from
+  // `seed` (the experiment's seed and the run's repetition), with noise sigma.
+  std::int64_t samples = 0;
+  std::uint64_t seed = 0;
+  double sigma = 0;
 };
 
-/// One parameter of an estimator: its name (`k`, `alpha`, `degree`, `u`), default (a rational,
-/// as text), the admissible values lo < value <= hi (lo < value < hi when open_above), and what
-/// it means for this estimator. A text parameter (`u`, the test function of the
-/// Laplace-Beltrami estimators) has check_text, which throws InvalidArgument for a value it
-/// refuses; lo, hi do not apply to it.
+/// One parameter of an estimator: its name (`k`, `alpha`, `degree`, `u`, `sigma`), default (a
+/// rational, as text), the admissible values lo < value <= hi (lo < value < hi when open_above,
+/// lo <= value <= hi when closed_below), and what it means for this estimator. A text parameter
+/// (`u`, the test function of the Laplace-Beltrami estimators) has check_text, which throws
+/// InvalidArgument for a value it refuses; lo, hi do not apply to it.
 struct EstimatorParameter {
   std::string name;
   std::string default_text;
@@ -92,9 +99,12 @@ struct EstimatorParameter {
   std::string meaning;
   bool open_above = false;
   std::function<void(const std::string&)> check_text = {};
+  bool closed_below = false;
 };
 
-/// A rate that theory proves: error = O(h^slope) under the hypotheses, from the source.
+/// A rate that theory proves: error = O(h^slope) under the hypotheses, from the source. For a
+/// sampled estimator (Estimator::sampled) the rate is in the number of points N: error =
+/// O(N^slope), slope < 0, checked as fitted slope <= slope + tolerance.
 struct ProvenRate {
   double slope = 0;
   std::string statement;  // "O(h^{1/3})"
@@ -123,6 +133,10 @@ struct Estimator {
   /// run_plan then runs them one after the other on one thread, where the estimators' own
   /// cache serves them all.
   std::string shared_computation = {};
+  /// True when a run samples N points of the shape (RunInput::samples) instead of digitizing
+  /// it at a grid step: such an estimator runs in samples sweeps only (`zdg converge
+  /// --samples`), and the others in grid-step sweeps only.
+  bool sampled = false;
 
   /// The declared parameter `name`, or nullptr.
   const EstimatorParameter* parameter(std::string_view name) const;
@@ -176,7 +190,8 @@ void register_vcm_cnc_estimators(std::vector<Estimator>& out);
 void register_mdca_estimators(std::vector<Estimator>& out); // mdca-curvature (2D)
 void register_ii_auto_estimators(std::vector<Estimator>& out);
 void register_probing_estimators(std::vector<Estimator>& out);
-void register_spectrum_estimators(std::vector<Estimator>& out); // lb-spectrum
+void register_spectrum_estimators(std::vector<Estimator>& out);       // lb-spectrum
+void register_reconstruction_estimators(std::vector<Estimator>& out); // recon-* (sampled)
 } // namespace detail
 
 } // namespace zdg

@@ -75,6 +75,43 @@ std::vector<double> parse_grid_steps(const std::string& text, const std::string&
   return hs;
 }
 
+std::vector<std::int64_t> parse_sample_counts(const std::string& text, const std::string& what) {
+  constexpr std::int64_t max_count = 100000000;
+  std::vector<std::int64_t> ns;
+  auto parts = split(text, ':');
+  if (!parts.empty() && parts[0] == "exp") {
+    if (parts.size() < 3 || parts.size() > 4) {
+      throw InvalidArgument(what + " " + shown(text) + ": expected exp:I0:I1[:STEP]");
+    }
+    const auto i0 = parse_integer_in(parts[1], what + " I0", 0, 180);
+    const auto i1 = parse_integer_in(parts[2], what + " I1", i0, 180);
+    const auto step = parts.size() == 4 ? parse_integer_in(parts[3], what + " STEP", 1, 180) : 1;
+    for (auto i = i0; i <= i1; i += step) {
+      ns.push_back(static_cast<std::int64_t>(std::llround(std::exp(static_cast<double>(i) / 10))));
+    }
+  } else if (parts.size() == 3) {
+    const auto lo = parse_integer_in(parts[0], what + " NMIN", 1, max_count),
+               hi = parse_integer_in(parts[1], what + " NMAX", lo, max_count);
+    const auto n = parse_integer_in(parts[2], what + " COUNT", 1, 10000);
+    for (std::int64_t i = 0; i < n; ++i) {
+      ns.push_back(
+          n == 1 ? lo
+                 : static_cast<std::int64_t>(std::llround(
+                       double(lo) * std::pow(double(hi) / double(lo), double(i) / double(n - 1)))));
+    }
+  } else if (parts.size() == 1) {
+    auto items = split(text, ',');
+    if (items.size() > 10000) throw InvalidArgument(what + ": more than 10000 sample counts");
+    for (const auto& item : items) ns.push_back(parse_integer_in(item, what, 1, max_count));
+  } else {
+    throw InvalidArgument(what + " " + shown(text) +
+                          ": expected exp:I0:I1[:STEP], NMIN:NMAX:COUNT or n1,n2,...");
+  }
+  std::sort(ns.begin(), ns.end());
+  ns.erase(std::unique(ns.begin(), ns.end()), ns.end());
+  return ns;
+}
+
 std::vector<std::string> k_texts_per_shape(const std::string& text, std::size_t shapes,
                                            const std::string& what) {
   std::vector<std::string> ks = split(text, ',');
@@ -111,7 +148,16 @@ std::pair<double, double> parse_box(const std::string& text, const std::string& 
 ExperimentPlan plan_experiment(const ExperimentConfig& config) {
   if (config.shapes.empty()) throw InvalidArgument("no shape given (--shape)");
   if (config.estimators.empty()) throw InvalidArgument("no estimator given (--estimator)");
-  if (config.hs.empty()) throw InvalidArgument("no grid step given (--h)");
+  if (config.hs.empty() && config.samples.empty()) {
+    throw InvalidArgument("no grid step given (--h, or --samples for a sampled estimator)");
+  }
+  if (!config.hs.empty() && !config.samples.empty()) {
+    throw InvalidArgument("grid steps (--h) and sample counts (--samples) given together: a "
+                          "sweep is over one of them");
+  }
+  for (auto n : config.samples) {
+    if (n < 1 || n > 100000000) throw InvalidArgument("sample counts must be in 1..10^8");
+  }
   if (config.translations < 0 || config.translations > 100000) {
     throw InvalidArgument("translations must be in 0..100000");
   }
@@ -196,6 +242,21 @@ ExperimentPlan plan_experiment(const ExperimentConfig& config) {
       }
     }
   }
+  for (const auto& e : plan.entries) {
+    if (e.estimator->sampled && !config.samples_sweep()) {
+      throw InvalidArgument("estimator '" + e.label +
+                            "' samples points: it needs sample counts (--samples), not grid "
+                            "steps (--h)");
+    }
+    if (!e.estimator->sampled && config.samples_sweep()) {
+      throw InvalidArgument("estimator '" + e.label +
+                            "' works on a digitization: it needs grid steps (--h), not sample "
+                            "counts (--samples)");
+    }
+  }
+  plan.samples = config.samples;
+  std::sort(plan.samples.begin(), plan.samples.end());
+  plan.samples.erase(std::unique(plan.samples.begin(), plan.samples.end()), plan.samples.end());
   plan.hs = config.hs;
   std::sort(plan.hs.begin(), plan.hs.end(), std::greater<>());
   plan.hs.erase(std::unique(plan.hs.begin(), plan.hs.end()), plan.hs.end());
@@ -227,10 +288,20 @@ std::vector<std::pair<double, double>> run_box(const ExperimentConfig& config, c
   return box;
 }
 
+// The seed of the sampling of repetition `index` (splitmix64 of the pair): reproducible on
+// every platform.
+std::uint64_t sampling_seed(std::uint64_t seed, int index) {
+  std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (static_cast<std::uint64_t>(index) + 1);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
 bool record_order(const RunRecord& a, const RunRecord& b) {
   if (a.shape_index != b.shape_index) return a.shape_index < b.shape_index;
   if (a.entry_index != b.entry_index) return a.entry_index < b.entry_index;
   if (a.h != b.h) return a.h > b.h;
+  if (a.samples != b.samples) return a.samples < b.samples;
   return a.translation < b.translation;
 }
 
@@ -247,19 +318,25 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
     std::size_t shape;
     std::vector<std::size_t> entries;
     double h;
+    std::int64_t samples;
     int translation;
     std::size_t first; // index of its first record
   };
   std::vector<Job> jobs;
   std::size_t runs = 0;
-  for (auto it = plan.hs.rbegin(); it != plan.hs.rend(); ++it) { // finest first
+  // The levels (h, N), finest first: the smallest h, or the largest N.
+  std::vector<std::pair<double, std::int64_t>> levels;
+  for (auto it = plan.hs.rbegin(); it != plan.hs.rend(); ++it) levels.emplace_back(*it, 0);
+  for (auto it = plan.samples.rbegin(); it != plan.samples.rend(); ++it)
+    levels.emplace_back(0.0, *it);
+  for (auto it = levels.begin(); it != levels.end(); ++it) {
     for (std::size_t s = 0; s < plan.shapes.size(); ++s) {
       std::vector<std::vector<std::size_t>> shared; // entries by tag, in order of appearance
       for (std::size_t e = 0; e < plan.entries.size(); ++e) {
         const std::string& tag = plan.entries[e].estimator->shared_computation;
         if (tag.empty()) {
           for (int t = 0; t < plan.runs_per_level; ++t) {
-            jobs.push_back({s, {e}, *it, t, runs});
+            jobs.push_back({s, {e}, it->first, it->second, t, runs});
             ++runs;
           }
           continue;
@@ -275,7 +352,7 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
       }
       for (const auto& group : shared) {
         for (int t = 0; t < plan.runs_per_level; ++t) {
-          jobs.push_back({s, group, *it, t, runs});
+          jobs.push_back({s, group, it->first, it->second, t, runs});
           runs += group.size();
         }
       }
@@ -297,8 +374,9 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
       r.shape = shape.spec();
       r.estimator = entry.label;
       r.h = job.h;
+      r.samples = job.samples;
       r.translation = job.translation;
-      r.offset = config.translations == 0
+      r.offset = config.translations == 0 || job.samples > 0
                      ? std::vector<double>(static_cast<std::size_t>(shape.dimension()), 0.0)
                      : random_translation(config.seed, job.translation, shape.dimension(), job.h);
       r.k = entry.on_shape(job.shape).k;
@@ -312,14 +390,18 @@ std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConf
                   entry.on_shape(job.shape).degree,
                   entry.on_shape(job.shape).function,
                   entry.on_shape(job.shape).count,
-                  entry.on_shape(job.shape).choice};
+                  entry.on_shape(job.shape).choice,
+                  job.samples,
+                  sampling_seed(config.seed, job.translation),
+                  entry.on_shape(job.shape).sigma};
       auto t0 = std::chrono::steady_clock::now();
       r.errors = entry.estimator->run(in);
       r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (!std::isfinite(r.errors.linf) || !std::isfinite(r.errors.l2)) {
         throw Error("estimator '" + entry.label + "' produced a non-finite error on '" + r.shape +
-                    "' at h = " + std::to_string(job.h) + " (translation " +
-                    std::to_string(job.translation) + ")");
+                    (job.samples > 0 ? "' at N = " + std::to_string(job.samples)
+                                     : "' at h = " + std::to_string(job.h)) +
+                    " (translation " + std::to_string(job.translation) + ")");
       }
       records[i] = std::move(r);
       std::size_t n = done.fetch_add(1) + 1;
@@ -343,11 +425,13 @@ std::vector<LevelErrors> aggregate_levels(std::vector<RunRecord> runs) {
     level.shape_index = runs[i].shape_index;
     level.entry_index = runs[i].entry_index;
     level.h = runs[i].h;
+    level.samples = runs[i].samples;
     double l2 = 0, mean = 0;
     level.elements = runs[i].errors.n;
     std::size_t j = i;
     for (; j < runs.size() && runs[j].shape_index == level.shape_index &&
-           runs[j].entry_index == level.entry_index && runs[j].h == level.h;
+           runs[j].entry_index == level.entry_index && runs[j].h == level.h &&
+           runs[j].samples == level.samples;
          ++j) {
       // The maximum, a NaN included (std::max would drop a NaN that comes second).
       if (!(runs[j].errors.linf <= level.linf)) level.linf = runs[j].errors.linf;
@@ -370,8 +454,8 @@ std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
                                       const std::vector<LevelErrors>& levels, int fit_levels,
                                       double tolerance, bool& all_pass) {
   std::vector<FitRecord> fits;
-  // levels are grouped by (shape, entry) with h decreasing: the finest levels are each
-  // group's tail.
+  // levels are grouped by (shape, entry) with h decreasing (N increasing in a samples sweep):
+  // the finest levels are each group's tail.
   for (std::size_t i = 0; i < levels.size();) {
     std::size_t j = i;
     while (j < levels.size() && levels[j].shape_index == levels[i].shape_index &&
@@ -386,12 +470,14 @@ std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
     const auto rate = entry.estimator->proven_rate(shape, entry.on_shape(levels[i].shape_index));
     std::vector<double> hs, linf, l2, mean;
     std::vector<FitLevel> checked;
+    const bool sampled = levels[i].samples > 0;
     for (std::size_t k = first; k < j; ++k) {
-      hs.push_back(levels[k].h);
+      const double x = sampled ? static_cast<double>(levels[k].samples) : levels[k].h;
+      hs.push_back(x);
       linf.push_back(levels[k].linf);
       l2.push_back(levels[k].l2);
       mean.push_back(levels[k].mean);
-      checked.push_back({levels[k].h, levels[k].linf, levels[k].elements});
+      checked.push_back({x, levels[k].linf, levels[k].elements});
     }
     const std::pair<const char*, const std::vector<double>*> norms[] = {
         {"linf", &linf}, {"l2", &l2}, {"mean", &mean}};
@@ -408,7 +494,8 @@ std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
         f.hypotheses = rate->hypotheses;
         f.source = rate->source;
         if (std::string(name) == "linf") {
-          const RateVerdict v = check_rate(checked, rate->slope, tolerance);
+          const RateVerdict v = sampled ? check_rate_in_samples(checked, rate->slope, tolerance)
+                                        : check_rate(checked, rate->slope, tolerance);
           f.pass = v.pass;
           f.reason = v.reason;
           all_pass = all_pass && v.pass;
@@ -432,16 +519,23 @@ ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn
 }
 
 void write_results_csv(const ExperimentResult& result, std::ostream& out) {
-  out << "shape,estimator,h,translation,offset,k,alpha,linf,l2,mean,n,seconds\n";
+  const bool sampled = std::any_of(result.runs.begin(), result.runs.end(),
+                                   [](const RunRecord& r) { return r.samples > 0; });
+  out << "shape,estimator,h,translation,offset,k,alpha,linf,l2,mean,n,seconds"
+      << (sampled ? ",samples\n" : "\n");
   out.precision(17);
   for (const auto& r : result.runs) {
     std::ostringstream offset;
     offset.precision(17);
     for (std::size_t i = 0; i < r.offset.size(); ++i) offset << (i > 0 ? " " : "") << r.offset[i];
     // Shapes and entry labels may hold commas: quoted (RFC 4180).
-    out << csv_field(r.shape) << ',' << csv_field(r.estimator) << ',' << r.h << ',' << r.translation
-        << ",\"" << offset.str() << "\"," << r.k << ',' << r.alpha << ',' << r.errors.linf << ','
-        << r.errors.l2 << ',' << r.errors.mean << ',' << r.errors.n << ',' << r.seconds << '\n';
+    out << csv_field(r.shape) << ',' << csv_field(r.estimator) << ',';
+    if (!sampled) out << r.h;
+    out << ',' << r.translation << ",\"" << offset.str() << "\"," << r.k << ',' << r.alpha << ','
+        << r.errors.linf << ',' << r.errors.l2 << ',' << r.errors.mean << ',' << r.errors.n << ','
+        << r.seconds;
+    if (sampled) out << ',' << r.samples;
+    out << '\n';
   }
 }
 

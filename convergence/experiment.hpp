@@ -22,6 +22,15 @@
 //   fit_experiment     the fits per norm on the finest levels, and the theory verdicts.
 // Dimension-agnostic: shapes and estimators know their dimension (they must agree); the loop,
 // the norms, the fit and the outputs are the same in 2D and 3D.
+//
+// Samples sweeps. In place of grid steps an experiment may give sample counts N
+// (ExperimentConfig::samples, `zdg converge --samples`): its estimators must all be sampled
+// ones (Estimator::sampled: a run draws N points of the shape and derives its own grid step
+// from N), and the levels are the counts, the largest the finest. A run gets h = 0, N and a
+// seed (the experiment's seed mixed with the repetition index); `translations` R > 0 gives R
+// independent samplings per N (no translation: the offsets are 0). The fit is log(error)
+// against log(N), the rate the estimator proves is an exponent of N (error = O(N^rate),
+// rate < 0) and the verdict is slope <= rate + tolerance (check_rate_in_samples).
 #pragma once
 
 #include <zdg/convergence/estimator.hpp>
@@ -57,12 +66,23 @@ struct ExperimentConfig {
   // each such entry without its own `u=` runs once per function; empty: the defaults
   // (default_test_functions()).
   std::vector<std::string> functions;
+  // A samples sweep (exclusive with hs): the counts N (any order; sorted increasing), as given.
+  std::vector<std::int64_t> samples;
+  std::string samples_text;
+
+  bool samples_sweep() const { return !samples.empty(); }
 };
 
 /// Parses `HMAX:HMIN:N` (N geometric steps), `exp:I0:I1[:STEP]` (h = exp(-i/10)) or a
 /// comma-separated list `h1,h2,...` (rationals allowed), each step in (0, 1e6], at most 10000;
 /// throws InvalidArgument naming `what`.
 std::vector<double> parse_grid_steps(const std::string& text, const std::string& what = "--h");
+/// Parses sample counts: `exp:I0:I1[:STEP]` (N = round(exp(i/10)), i = I0, I0 + STEP, ..., I1
+/// in 0..180), `NMIN:NMAX:COUNT` (COUNT counts geometric from NMIN to NMAX, rounded) or a
+/// comma-separated list of integers; each count in 1..10^8, at most 10000 of them, repeats
+/// (after rounding) dropped; throws InvalidArgument naming `what`.
+std::vector<std::int64_t> parse_sample_counts(const std::string& text,
+                                              const std::string& what = "--samples");
 /// Parses `LO:HI` (finite, LO < HI, |LO|, |HI| <= 1e9).
 std::pair<double, double> parse_box(const std::string& text, const std::string& what = "--box");
 
@@ -93,15 +113,17 @@ struct EstimatorEntry {
 struct ExperimentPlan {
   std::vector<std::unique_ptr<Shape>> shapes;
   std::vector<EstimatorEntry> entries;
-  std::vector<double> hs; // decreasing, no repeats
-  int runs_per_level = 1; // translations per (shape, entry, h): max(1, translations)
+  std::vector<double> hs;            // decreasing, no repeats (empty in a samples sweep)
+  std::vector<std::int64_t> samples; // increasing, no repeats (empty in a grid-step sweep)
+  int runs_per_level = 1;            // translations per (shape, entry, h): max(1, translations)
 };
 
 struct RunRecord {
   std::size_t shape_index = 0, entry_index = 0; // into the plan
   std::string shape, estimator;                 // shape spec and entry label
-  double h = 0;
-  int translation = 0;
+  double h = 0;                                 // 0 in a samples sweep
+  std::int64_t samples = 0;                     // N in a samples sweep, 0 otherwise
+  int translation = 0; // in a samples sweep: the repetition (an independent sampling)
   std::vector<double> offset;
   double k = 0, alpha = 0;
   ErrorStats errors;
@@ -112,6 +134,7 @@ struct RunRecord {
 struct LevelErrors {
   std::size_t shape_index = 0, entry_index = 0;
   double h = 0;
+  std::int64_t samples = 0;
   double linf = 0, l2 = 0, mean = 0; // max of l_inf (NaN if one is), averages of l_2, mean
   int runs = 0;
   std::int64_t elements = 0; // the fewest boundary elements measured by one of its runs
@@ -120,7 +143,7 @@ struct LevelErrors {
 struct FitRecord {
   std::string shape, estimator, norm; // estimator: the entry label
   LogLogFit fit;
-  std::vector<double> hs; // levels used
+  std::vector<double> hs; // levels used (a samples sweep: the counts N, as doubles)
   std::optional<double> expected;
   std::string theory, hypotheses, source;
   std::optional<bool> pass; // the l_inf verdict (check_rate), when theory proves a rate
@@ -161,7 +184,8 @@ std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
 /// plan_experiment, run_plan, aggregate_levels, fit_experiment.
 ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn& progress = {});
 
-/// results.csv: one row per shape, estimator entry, h, translation.
+/// results.csv: one row per shape, estimator entry, h, translation; a samples sweep adds the
+/// column `samples` (N) at the end and leaves h empty.
 void write_results_csv(const ExperimentResult& result, std::ostream& out);
 
 } // namespace zdg

@@ -49,16 +49,21 @@ LogLogFit fit_loglog(const std::vector<double>& h, const std::vector<double>& er
   return f;
 }
 
-RateVerdict check_rate(const std::vector<FitLevel>& levels, double expected, double tolerance) {
+namespace {
+
+// in_samples: the levels are counts N and the error must fall at least like N^expected.
+RateVerdict check(const std::vector<FitLevel>& levels, double expected, double tolerance,
+                  bool in_samples) {
   RateVerdict v;
   std::vector<double> hs, errors;
   bool all_zero = true;
   for (const auto& l : levels) {
     std::ostringstream at;
     at.precision(6);
-    at << "h = " << l.h;
+    at << (in_samples ? "N = " : "h = ") << l.h;
     if (!(std::isfinite(l.h) && l.h > 0)) {
-      v.reason = "no verdict: a level has " + at.str() + " (not a positive grid step)";
+      v.reason = "no verdict: a level has " + at.str() +
+                 (in_samples ? " (not a positive count)" : " (not a positive grid step)");
     } else if (l.elements <= 0) {
       v.reason = "no verdict: no element measured at " + at.str();
     } else if (!(std::isfinite(l.error) && l.error >= 0)) {
@@ -82,18 +87,35 @@ RateVerdict check_rate(const std::vector<FitLevel>& levels, double expected, dou
   }
   if (v.fit.n < 2 || !std::isfinite(v.fit.slope)) {
     v.reason = "no verdict: " + std::to_string(v.fit.n) +
-               " level(s) with a positive error, no slope (a fit needs at least 2 distinct grid "
-               "steps)";
+               (in_samples ? " level(s) with a positive error, no slope (a fit needs at least 2 "
+                             "distinct counts)"
+                           : " level(s) with a positive error, no slope (a fit needs at least 2 "
+                             "distinct grid steps)");
     return v;
   }
-  v.pass = v.fit.slope >= expected - tolerance;
+  v.pass = in_samples ? v.fit.slope <= expected + tolerance : v.fit.slope >= expected - tolerance;
   if (!v.pass) {
     std::ostringstream r;
     r.precision(4);
-    r << "slope " << v.fit.slope << " < expected " << expected << " - tolerance " << tolerance;
+    if (in_samples) {
+      r << "slope " << v.fit.slope << " > expected " << expected << " + tolerance " << tolerance;
+    } else {
+      r << "slope " << v.fit.slope << " < expected " << expected << " - tolerance " << tolerance;
+    }
     v.reason = r.str();
   }
   return v;
+}
+
+} // namespace
+
+RateVerdict check_rate(const std::vector<FitLevel>& levels, double expected, double tolerance) {
+  return check(levels, expected, tolerance, false);
+}
+
+RateVerdict check_rate_in_samples(const std::vector<FitLevel>& levels, double expected,
+                                  double tolerance) {
+  return check(levels, expected, tolerance, true);
 }
 
 } // namespace zdg

@@ -4,7 +4,8 @@
 // n < 2 and a NaN slope.
 //
 // Rate check (check_rate): the verdict "the error decays at least like h^(expected -
-// tolerance)" on a sequence of levels. A level is usable when h is finite and > 0, the level
+// tolerance)" on a sequence of levels (check_rate_in_samples: "like N^(expected + tolerance)",
+// levels indexed by the number of points N). A level is usable when h is finite and > 0, the level
 // measured at least one element and its error is finite and >= 0. The check passes only when
 // every level is usable, there are at least two, and either every error is 0 (an estimator
 // exact at every level) or the fit over the levels with a positive error has n >= 2 and a
@@ -39,5 +40,11 @@ struct RateVerdict {
 
 /// The verdict slope >= expected - tolerance on the levels (see above).
 RateVerdict check_rate(const std::vector<FitLevel>& levels, double expected, double tolerance);
+
+/// The same check for a samples sweep: FitLevel::h holds the number of points N, the fit is
+/// log(error) against log(N), and the verdict is slope <= expected + tolerance (an error
+/// O(N^expected), expected < 0); the reasons name N.
+RateVerdict check_rate_in_samples(const std::vector<FitLevel>& levels, double expected,
+                                  double tolerance);
 
 } // namespace zdg

@@ -25,6 +25,10 @@ translations' min..max and a dot per translation), a tooltip on every point (h, 
 translation), a checkbox per shape, estimator and norm, the slope triangles of the proven
 rates, the verdicts of summary.json's fits, the published bands and a legend.
 
+A samples sweep (results.csv with a `samples` column, `zdg converge --samples`) is drawn the same
+way against the number of points N in place of h (the x axis says N; the proven rates are
+exponents of N, checked as slope <= rate).
+
 Usage: /usr/bin/python3 papers/plot_convergence.py DIR [--published CSV]
        /usr/bin/python3 papers/plot_convergence.py --csv RESULTS --summary SUMMARY \
            --png PNG --svg SVG [--html HTML] [--published CSV]
@@ -51,11 +55,17 @@ import compare_published  # noqa: E402
 
 PAGE_TEMPLATE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "convergence_page.html")
 NORMS = ("linf", "l2", "mean")  # the error columns of results.csv
+VARIABLE = "h"  # the x axis: "N" for a samples sweep (set by main)
 
 
 def main(csv_path, summary_path, outputs, html_path=None, published_path=None):
     with open(csv_path, newline="") as f:
         rows = list(csv.DictReader(f))
+    global VARIABLE
+    VARIABLE = "N" if rows and rows[0].get("samples") else "h"
+    if VARIABLE == "N":  # a samples sweep: the levels are the counts N
+        for r in rows:
+            r["h"] = r["samples"]
     with open(summary_path) as f:
         summary = json.load(f)
     published = published_curves(csv_path, published_path, rows) if published_path else []
@@ -87,8 +97,9 @@ def main(csv_path, summary_path, outputs, html_path=None, published_path=None):
             if fit and fit.get("slope") is not None:
                 label += " (slope %.2f" % fit["slope"]
                 if fit.get("expected") is not None:
-                    label += ", theory >= %.2f: %s" % (
-                        fit["expected"], "pass" if fit.get("pass") else "FAIL")
+                    label += ", theory %s %.2f: %s" % (
+                        ">=" if VARIABLE == "h" else "<=", fit["expected"],
+                        "pass" if fit.get("pass") else "FAIL")
                 label += ")"
             pos = [(h, w, l) for h, w, l in zip(hs, worst, low) if w > 0]
             if not pos:
@@ -121,7 +132,7 @@ def main(csv_path, summary_path, outputs, html_path=None, published_path=None):
             if curve["estimator"] == est:
                 colour = next((colours[s] for s in curve["shapes"] if s in colours), "0.4")
                 draw_published(ax, curve, colour)
-        ax.set_xlabel("h")
+        ax.set_xlabel(VARIABLE)
         ax.set_ylabel("l_inf error")
         ax.set_title(est)
         ax.grid(True, which="both", lw=0.3)
@@ -211,7 +222,8 @@ def page_data(rows, summary, published):
                            "points": points, "runs": runs,
                            "fit": None if fit is None else {
                                k: fit.get(k) for k in ("slope", "stderr", "levels", "h_min",
-                                                       "h_max", "expected", "pass", "reason")}})
+                                                       "h_max", "samples_min", "samples_max",
+                                                       "expected", "pass", "reason")}})
     pages_published = []
     for curve in published:
         colour = next((s["colour"] for s in series if s["shape"] in curve["shapes"]
@@ -222,7 +234,8 @@ def page_data(rows, summary, published):
             "points": [{"h": h, "lo": lo, "hi": hi}
                        for h, lo, hi in zip(curve["h"], curve["lo"], curve["hi"])]})
     config = summary.get("config", {})
-    return {"title": config.get("title") or "", "h": config.get("h"),
+    return {"title": config.get("title") or "", "variable": VARIABLE,
+            "h": config.get("h") if VARIABLE == "h" else config.get("samples"),
             "translations": config.get("translations"), "all_pass": summary.get("all_pass"),
             "commit": summary.get("provenance", {}).get("commit"),
             "shapes": shapes, "estimators": estimators, "norms": list(NORMS),
@@ -248,7 +261,8 @@ def slope_label(name, fit):
     if fit and fit.get("slope") is not None:
         label += " (slope %.2f" % fit["slope"]
         if fit.get("expected") is not None:
-            label += ", theory >= %.2f: %s" % (fit["expected"], "pass" if fit.get("pass") else "FAIL")
+            label += ", theory %s %.2f: %s" % (">=" if VARIABLE == "h" else "<=", fit["expected"],
+                                               "pass" if fit.get("pass") else "FAIL")
         label += ")"
     return label
 
@@ -295,7 +309,7 @@ def draw_comparison(rows, summary, fits, estimators, published):
                 if curve["estimator"] == est and shape in curve["shapes"]:
                     draw_published(err_ax, curve, colour)
         err_ax.set_title(shape)
-        err_ax.set_xlabel("h")
+        err_ax.set_xlabel(VARIABLE)
         err_ax.set_ylabel("l_inf error (each estimator's quantity)")
         err_ax.grid(True, which="both", lw=0.3)
         err_ax.legend(fontsize=7)
@@ -308,7 +322,7 @@ def draw_comparison(rows, summary, fits, estimators, published):
             time_ax.set_title("estimators sharing one computation (%s*) charge it to the first "
                               "of them run" % "*, ".join(p for p, n in families.items() if n > 1),
                               fontsize=8)
-        time_ax.set_xlabel("h")
+        time_ax.set_xlabel(VARIABLE)
         time_ax.set_ylabel("seconds per run")
         time_ax.grid(True, which="both", lw=0.3)
         time_ax.legend(fontsize=7)

@@ -53,13 +53,46 @@ TEST(Converge3dCli, ListAndDimensionErrors) {
 }
 
 TEST(Converge3dCli, PapersExist) {
-  for (const char* name : {"cviu2014-ii3d", "hausdorff"}) {
+  for (const char* name : {"cviu2014-ii3d", "hausdorff", "reconstruction"}) {
     for (const char* file : {"config.toml", "quick.toml", "README.md"}) {
       EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(zdg::test::source_dir()) /
                                           "papers" / name / file))
           << name << "/" << file;
     }
   }
+}
+
+// A samples sweep (--samples): the runs carry N (h null), the fits are against log N with
+// the rate in N, results.csv gains the column `samples` and summary.json the counts.
+TEST(Converge3dCli, SamplesSweepOfAReconstruction) {
+  auto r = run_zdg("converge --shape sphere1 --estimator recon-hausdorff:method=hoppe "
+                   "--estimator recon-betti --samples 200,800,3200 --seed 4 --json --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["runs"].size(), 6u);
+  EXPECT_EQ(j["runs"][0]["samples"], 200);
+  EXPECT_TRUE(j["runs"][0]["h"].is_null());
+  EXPECT_EQ(j["runs"][5]["linf"], 0.0) << "the sphere's topology from 3200 points";
+  EXPECT_EQ(j["fits"][0]["variable"], "N");
+  EXPECT_EQ(j["fits"][0]["samples_min"], 200);
+  EXPECT_EQ(j["fits"][0]["samples_max"], 3200);
+  EXPECT_EQ(j["fits"][0]["expected"].get<double>(), -0.5);
+  EXPECT_LT(j["fits"][0]["slope"].get<double>(), -0.4);
+  EXPECT_TRUE(j["fits"][0]["pass"].get<bool>());
+  const auto dir = zdg::test::scratch_dir("converge-samples");
+  auto out = run_zdg("converge --shape sphere1 --estimator recon-normal:method=imls "
+                     "--samples exp:55:65:5 --quiet --no-plot -o '" +
+                     (dir / "out").string() + "'");
+  ASSERT_EQ(out.status, 0) << out.err;
+  std::ifstream csv(dir / "out" / "results.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "shape,estimator,h,translation,offset,k,alpha,linf,l2,mean,n,seconds,samples");
+  std::ifstream in(dir / "out" / "summary.json");
+  const auto summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["config"]["samples"], "exp:55:65:5");
+  EXPECT_EQ(summary["config"]["sample_counts"], nlohmann::json({245, 403, 665}));
+  std::filesystem::remove_all(dir);
 }
 
 // zdg laplacians (convergence/laplacian_comparison.hpp): the rows asked for, as JSON.

@@ -36,4 +36,32 @@ TEST(PaperSlow, Cviu2014Ii2dFullSweepPassesItsChecks) {
   std::filesystem::remove_all(dir);
 }
 
+// Slow: `zdg paper reconstruction --quick` (about a minute on 2 cores): every method gets the
+// topology of the sphere, the torus and the Goursat surface from the largest N (2981), and the
+// Hausdorff rates of hoppe and imls pass their check in N.
+TEST(PaperSlow, ReconstructionQuickGetsTheTopologyAndTheRates) {
+  auto dir = zdg::test::scratch_dir("paper-reconstruction");
+  auto r = zdg::test::run_zdg("paper reconstruction --quick --json --quiet -o '" +
+                              (dir / "out").string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  int topology = 0, verdicts = 0;
+  for (const auto& run : j["runs"]) {
+    const std::string e = run["estimator"];
+    if (e.rfind("recon-betti", 0) == 0 && run["samples"] == 2981) {
+      EXPECT_EQ(run["linf"], 0.0) << run["shape"] << " " << e;
+      ++topology;
+    }
+  }
+  for (const auto& f : j["fits"]) {
+    if (f["norm"] == "linf" && !f["pass"].is_null()) {
+      EXPECT_TRUE(f["pass"].get<bool>()) << f["shape"] << " " << f["estimator"];
+      ++verdicts;
+    }
+  }
+  EXPECT_EQ(topology, 15);
+  EXPECT_EQ(verdicts, 6) << "hoppe and imls on three shapes";
+  std::filesystem::remove_all(dir);
+}
+
 } // namespace

@@ -35,17 +35,22 @@ TEST(EstimatorRegistry, EveryEntryStatesParametersAndTheory) {
     EXPECT_TRUE(e.run) << e.name;
     for (const auto& p : e.parameters) {
       EXPECT_FALSE(p.meaning.empty());
-      if (p.check_text) { // a text parameter (the test function u, lb-spectrum's operator): its
-                          // default passes its check
-        EXPECT_TRUE(p.name == "u" || p.name == "operator") << e.name;
+      if (p.check_text) { // a text parameter (the test function u, lb-spectrum's operator, the
+                          // reconstructions' method): its default passes its check
+        EXPECT_TRUE(p.name == "u" || p.name == "operator" || p.name == "method") << e.name;
         EXPECT_NO_THROW(p.check_text(p.default_text)) << e.name;
         continue;
       }
       // The names resolve_parameters maps onto EstimatorParameters.
-      EXPECT_TRUE(p.name == "k" || p.name == "alpha" || p.name == "degree" || p.name == "n")
+      EXPECT_TRUE(p.name == "k" || p.name == "alpha" || p.name == "degree" || p.name == "n" ||
+                  p.name == "sigma")
           << e.name << " " << p.name;
       const double v = zdg::parse_real(p.default_text, p.name);
-      EXPECT_GT(v, p.lo) << e.name << " " << p.name;
+      if (p.closed_below) {
+        EXPECT_GE(v, p.lo) << e.name << " " << p.name;
+      } else {
+        EXPECT_GT(v, p.lo) << e.name << " " << p.name;
+      }
       if (p.open_above) {
         EXPECT_LT(v, p.hi) << e.name << " " << p.name;
       } else {
@@ -56,7 +61,12 @@ TEST(EstimatorRegistry, EveryEntryStatesParametersAndTheory) {
     const auto params = zdg::resolve_parameters(zdg::parse_estimator_spec(e.name), {}, {});
     const zdg::ShapeClass all{true, true, true, true, false};
     if (auto r = e.theory.rate ? e.theory.rate(all, params) : std::nullopt) {
-      EXPECT_GT(r->slope, 0) << e.name;
+      // A rate in h is a positive exponent; a rate in N (sampled estimators) a negative one.
+      if (e.sampled) {
+        EXPECT_LT(r->slope, 0) << e.name;
+      } else {
+        EXPECT_GT(r->slope, 0) << e.name;
+      }
       EXPECT_FALSE(r->source.empty()) << e.name;
       EXPECT_FALSE(r->hypotheses.empty()) << e.name;
     }
