@@ -128,6 +128,11 @@ def simple_points(image: npt.ArrayLike, *,
 def contour(image: npt.ArrayLike, *, adjacency: str = "4,8", estimates: Sequence[str] = (),
             radius: str = "5v", spacing: Optional[Sequence[float]] = None,
             threads: int = 0) -> dict[str, Any]: ...
+def reconstruct(points: npt.ArrayLike, normals: Optional[npt.ArrayLike] = None, *, h: float,
+                method: str = "hoppe", k: int = 10, normals_k: int = 10, beta: float = 2.0,
+                exact: bool = False, rbf_centers: int = 1000, rbf_offset: float = 0.0,
+                imls_radius: float = 0.0, margin: int = 3,
+                threads: int = 0) -> dict[str, Any]: ...
 def skeleton(image: npt.ArrayLike, method: str = "critical-kernel", skeleton: str = "curve",
              adjacency: Optional[str] = None, threads: int = 0) -> npt.NDArray[np.uint8]: ...
 def voronoi_map(image: npt.ArrayLike, *, metric: str = "l2",
