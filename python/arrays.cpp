@@ -501,6 +501,17 @@ std::vector<double> spacing_of(const py::object& spacing, int dim, const std::st
 
 // zdg surface's operation (operations/surface_operations.hpp) on the whole object, with its
 // mesh; the estimates at step h and radius R (physical units) when asked.
+// The mesh's vertices as x y z rows (the (n, 3) arrays of surface() and reconstruct()).
+std::vector<double> flat_vertices(const PolygonMesh& m) {
+  std::vector<double> xyz(3 * m.vertices.size());
+  for (std::size_t i = 0; i < m.vertices.size(); ++i) {
+    xyz[3 * i] = m.vertices[i].x;
+    xyz[3 * i + 1] = m.vertices[i].y;
+    xyz[3 * i + 2] = m.vertices[i].z;
+  }
+  return xyz;
+}
+
 py::dict surface_py(const py::object& obj, const std::string& mesh,
                     const std::optional<std::string>& adjacency, const py::object& spacing,
                     const py::object& estimate, double h, const py::object& radius,
@@ -545,13 +556,7 @@ py::dict surface_py(const py::object& obj, const std::string& mesh,
   }();
   PolygonMesh& m = *r.mesh;
   const std::int64_t nv = m.vertex_count(), nf = m.face_count();
-  std::vector<double> xyz(static_cast<std::size_t>(3 * nv));
-  for (std::int64_t i = 0; i < nv; ++i) {
-    const auto& v = m.vertices[static_cast<std::size_t>(i)];
-    xyz[static_cast<std::size_t>(3 * i)] = v.x;
-    xyz[static_cast<std::size_t>(3 * i + 1)] = v.y;
-    xyz[static_cast<std::size_t>(3 * i + 2)] = v.z;
-  }
+  std::vector<double> xyz = flat_vertices(m);
   py::dict d;
   d["vertices"] = owning_array(std::move(xyz), {nv, 3});
   d["faces"] = owning_array(std::move(m.indices), {nf, static_cast<std::int64_t>(m.face_size)});
@@ -628,13 +633,7 @@ py::dict reconstruct_py(const py::object& points, const py::object& normals, dou
   }();
   PolygonMesh& m = r.reconstruction.mesh;
   const std::int64_t nv = m.vertex_count(), nf = m.face_count();
-  std::vector<double> xyz(static_cast<std::size_t>(3 * nv));
-  for (std::int64_t i = 0; i < nv; ++i) {
-    const auto& v = m.vertices[static_cast<std::size_t>(i)];
-    xyz[static_cast<std::size_t>(3 * i)] = v.x;
-    xyz[static_cast<std::size_t>(3 * i + 1)] = v.y;
-    xyz[static_cast<std::size_t>(3 * i + 2)] = v.z;
-  }
+  std::vector<double> xyz = flat_vertices(m);
   const auto& g = r.reconstruction.field.grid;
   py::dict d;
   d["vertices"] = owning_array(std::move(xyz), {nv, 3});

@@ -211,13 +211,9 @@ void put_text(std::string& out, double v) {
   out.append(b, r.ptr);
 }
 
-std::string ply_bytes(const PointCloud& c) {
-  std::string out =
-      "ply\nformat binary_little_endian 1.0\ncomment written by zdg\nelement vertex " +
-      std::to_string(c.size()) + "\nproperty double x\nproperty double y\nproperty double z\n";
-  if (c.has_normals()) out += "property double nx\nproperty double ny\nproperty double nz\n";
-  out += "end_header\n";
-  out.reserve(out.size() + c.size() * (c.has_normals() ? 48 : 24));
+// Each point's x y z, then its normal's when the cloud has normals: little-endian float64, the
+// body of the PLY and npy writers.
+void put_rows(std::string& out, const PointCloud& c) {
   for (std::size_t i = 0; i < c.size(); ++i) {
     put_double(out, c.points[i].x);
     put_double(out, c.points[i].y);
@@ -227,6 +223,16 @@ std::string ply_bytes(const PointCloud& c) {
     put_double(out, c.normals[i].y);
     put_double(out, c.normals[i].z);
   }
+}
+
+std::string ply_bytes(const PointCloud& c) {
+  std::string out =
+      "ply\nformat binary_little_endian 1.0\ncomment written by zdg\nelement vertex " +
+      std::to_string(c.size()) + "\nproperty double x\nproperty double y\nproperty double z\n";
+  if (c.has_normals()) out += "property double nx\nproperty double ny\nproperty double nz\n";
+  out += "end_header\n";
+  out.reserve(out.size() + c.size() * (c.has_normals() ? 48 : 24));
+  put_rows(out, c);
   return out;
 }
 
@@ -257,15 +263,7 @@ std::string npy_bytes(const PointCloud& c) {
   const std::int64_t w = c.has_normals() ? 6 : 3;
   std::string out = npy_header_bytes(DType::F64, {static_cast<std::int64_t>(c.size()), w});
   out.reserve(out.size() + c.size() * static_cast<std::size_t>(w) * 8);
-  for (std::size_t i = 0; i < c.size(); ++i) {
-    put_double(out, c.points[i].x);
-    put_double(out, c.points[i].y);
-    put_double(out, c.points[i].z);
-    if (!c.has_normals()) continue;
-    put_double(out, c.normals[i].x);
-    put_double(out, c.normals[i].y);
-    put_double(out, c.normals[i].z);
-  }
+  put_rows(out, c);
   return out;
 }
 

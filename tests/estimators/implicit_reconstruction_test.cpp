@@ -163,7 +163,8 @@ TEST_P(Methods, TorusHasGenusOne) {
   EXPECT_EQ(r.betti.b[2], 0);
 }
 
-// Results do not depend on the thread count.
+// Results do not depend on the thread count (poisson: estimators/poisson_reconstruction.cpp,
+// sampled in one thread, is the same on any count).
 TEST_P(Methods, IndependentOfTheThreadCount) {
   const auto c = sphere_points(500, 1.0, 23);
   ReconstructionOptions o;
