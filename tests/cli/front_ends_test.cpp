@@ -87,6 +87,9 @@ const std::vector<Operation>& operations() {
       {"normals", "", "",
        "serve and Python: works on files (a point cloud in, the points with their normals out); "
        "the library function is estimators/point_normals.hpp"},
+      {"render volume", "", "",
+       "serve and Python: writes a picture file (a served answer is JSON; Python users have "
+       "matplotlib); the library function is kernel/render/volume_render.hpp"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
   };
