@@ -313,7 +313,9 @@ Camera make_camera(const std::array<std::int64_t, 3>& extent, const std::array<d
       throw InvalidArgument("render volume: the spacing must be positive and finite");
   Camera c;
   c.spacing = spacing;
-  const double a = o.azimuth * std::numbers::pi / 180, e = o.elevation * std::numbers::pi / 180;
+  // Reduced modulo a turn first (exact): a huge angle in degrees would overflow in radians.
+  const double a = std::fmod(o.azimuth, 360.0) * std::numbers::pi / 180,
+               e = std::fmod(o.elevation, 360.0) * std::numbers::pi / 180;
   c.toward = {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
   c.right = {-std::sin(a), std::cos(a), 0.0};
   c.up = cross(c.toward, c.right);

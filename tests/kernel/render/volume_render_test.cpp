@@ -382,6 +382,9 @@ TEST(VolumeRender, BadOptionsAreErrors) {
   EXPECT_THROW(render_volume(vol, tf, o), InvalidArgument);
   o = small(std::nan(""), 0);
   EXPECT_THROW(render_volume(vol, tf, o), InvalidArgument);
+  // A huge angle is taken modulo 360 degrees (exactly), not overflowed into radians.
+  EXPECT_EQ(render_volume(vol, tf, small(1e308, 5)).picture.rgb,
+            render_volume(vol, tf, small(std::fmod(1e308, 360.0), 5)).picture.rgb);
   EXPECT_THROW(render_volume(vol, TransferFunction{}, small(0, 0)), InvalidArgument);
 }
 
