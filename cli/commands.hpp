@@ -23,6 +23,7 @@
 #include <cctype>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace zdg::cli {
 
@@ -57,5 +58,12 @@ inline std::string lower_extension(const std::string& path) {
 
 /// Prints j on stdout (two-space indent), followed by a newline.
 void print_json(const nlohmann::json& j);
+
+/// A finite number in `text`, all of it (InvalidArgument "OPTION: 'TEXT' is not a number").
+double parse_number(const std::string& text, const std::string& option);
+/// --view AZ,EL in degrees, the elevation in [-90, 90].
+std::pair<double, double> parse_view(const std::string& text);
+/// --png-size WIDTHxHEIGHT, a size check_picture_size accepts.
+std::pair<int, int> parse_picture_size(const std::string& text);
 
 } // namespace zdg::cli

@@ -12,10 +12,13 @@
 #include <zdg/arith/integer.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/kernel/io/output_files.hpp>
+#include <zdg/kernel/render/picture.hpp>
 
 #include <fmt/core.h>
 
 #include <cerrno>
+#include <charconv>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <exception>
@@ -25,10 +28,45 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 
 namespace zdg::cli {
 void print_json(const nlohmann::json& j) {
   std::cout << j.dump(2) << '\n';
+}
+
+double parse_number(const std::string& text, const std::string& option) {
+  double v = 0;
+  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v))
+    throw InvalidArgument(option + ": '" + text + "' is not a number");
+  return v;
+}
+
+std::pair<double, double> parse_view(const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos)
+    throw InvalidArgument("--view '" + text + "': expected AZIMUTH,ELEVATION in degrees");
+  const double az = parse_number(text.substr(0, comma), "--view");
+  const double el = parse_number(text.substr(comma + 1), "--view");
+  if (el < -90 || el > 90)
+    throw InvalidArgument("--view '" + text + "': the elevation is between -90 and 90 degrees");
+  return {az, el};
+}
+
+std::pair<int, int> parse_picture_size(const std::string& text) {
+  const auto x = text.find('x');
+  int wh[2] = {0, 0};
+  const std::string parts[2] = {text.substr(0, x),
+                                x == std::string::npos ? "" : text.substr(x + 1)};
+  for (int k = 0; k < 2; ++k) {
+    const char* b = parts[k].data();
+    const auto [q, ec] = std::from_chars(b, b + parts[k].size(), wh[k]);
+    if (parts[k].empty() || ec != std::errc() || q != b + parts[k].size())
+      throw InvalidArgument("--png-size '" + text + "': expected WIDTHxHEIGHT, e.g. 1200x900");
+  }
+  check_picture_size(wh[0], wh[1], "--png-size " + text);
+  return {wh[0], wh[1]};
 }
 } // namespace zdg::cli
 

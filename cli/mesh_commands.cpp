@@ -55,16 +55,8 @@ struct MeshAtArgs {
   bool force = false, json = false;
 };
 
-double parse_real(const std::string& text, const std::string& option) {
-  double v = 0;
-  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v))
-    throw InvalidArgument(option + ": '" + text + "' is not a number");
-  return v;
-}
-
 double parse_positive_real(const std::string& text, const std::string& option) {
-  const double v = parse_real(text, option);
+  const double v = parse_number(text, option);
   if (!(v > 0)) throw InvalidArgument(option + " '" + text + "': a positive number is needed");
   return v;
 }
@@ -102,7 +94,7 @@ void run_mesh_at(const MeshAtArgs& a) {
   ATMeshOptions o;
   o.threads = a.threads;
   if (!a.threshold.empty()) {
-    o.threshold = parse_real(a.threshold, "--threshold");
+    o.threshold = parse_number(a.threshold, "--threshold");
     if (!(o.threshold >= 0 && o.threshold <= 1))
       throw InvalidArgument("--threshold '" + a.threshold + "': a number in [0, 1] is needed");
   }

@@ -20,13 +20,13 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 #include <memory>
 #include <string>
+#include <tuple>
 
 namespace zdg::cli {
 
@@ -40,14 +40,6 @@ struct RenderVolumeArgs {
   unsigned threads = 0;
 };
 
-double number_of(const std::string& text, const std::string& option) {
-  double v = 0;
-  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v))
-    throw InvalidArgument(option + ": '" + text + "' is not a number");
-  return v;
-}
-
 void run_render_volume(const RenderVolumeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   // Options and names first: nothing is read when one is wrong.
@@ -57,39 +49,19 @@ void run_render_volume(const RenderVolumeArgs& a) {
   o.early_termination = a.early;
   o.shading = !a.no_shading;
   o.threads = a.threads;
-  if (!a.view.empty()) {
-    const auto comma = a.view.find(',');
-    if (comma == std::string::npos)
-      throw InvalidArgument("--view '" + a.view + "': expected AZ,EL in degrees, e.g. -60,30");
-    o.azimuth = number_of(a.view.substr(0, comma), "--view");
-    o.elevation = number_of(a.view.substr(comma + 1), "--view");
-  }
-  if (!a.size.empty()) {
-    const auto x = a.size.find('x');
-    int wh[2] = {0, 0};
-    const std::string parts[2] = {a.size.substr(0, x),
-                                  x == std::string::npos ? "" : a.size.substr(x + 1)};
-    for (int k = 0; k < 2; ++k) {
-      const char* b = parts[k].data();
-      const auto [q, ec] = std::from_chars(b, b + parts[k].size(), wh[k]);
-      if (parts[k].empty() || ec != std::errc() || q != b + parts[k].size())
-        throw InvalidArgument("--png-size '" + a.size + "': expected WIDTHxHEIGHT, e.g. 800x800");
-    }
-    check_picture_size(wh[0], wh[1], "--png-size " + a.size);
-    o.width = wh[0];
-    o.height = wh[1];
-  }
-  if (!(o.step >= 0.01 && o.step <= 8))
-    throw InvalidArgument("--step " + fmt::format("{}", o.step) + ": must lie in [0.01, 8] voxels");
-  if (!(o.early_termination > 0 && o.early_termination <= 1))
-    throw InvalidArgument("--early-termination " + fmt::format("{}", o.early_termination) +
-                          ": must lie in (0, 1]");
+  if (!a.view.empty()) std::tie(o.azimuth, o.elevation) = parse_view(a.view);
+  if (!a.size.empty()) std::tie(o.width, o.height) = parse_picture_size(a.size);
+  o.validate();
   const auto presets = transfer_function_presets();
   const bool preset = std::find(presets.begin(), presets.end(), a.tf) != presets.end();
   TransferFunction tf;
   if (!preset) {
     std::error_code ec;
-    if (!std::filesystem::exists(a.tf, ec)) (void)transfer_function_preset(a.tf, 0, 1); // throws
+    if (!std::filesystem::exists(a.tf, ec)) {
+      std::string names;
+      for (const auto& n : presets) names += (names.empty() ? "" : ", ") + n;
+      throw InvalidArgument("--tf '" + a.tf + "': neither a file nor a preset (" + names + ")");
+    }
     tf = read_transfer_function(a.tf);
   }
   if (lower_extension(a.output) != ".png")

@@ -90,14 +90,6 @@ void check_viewer_options(const std::string& html, std::int64_t max_faces) {
   if (max_faces < 1) throw InvalidArgument("--max-faces must be at least 1");
 }
 
-double parse_number(const std::string& text, const std::string& option) {
-  double v = 0;
-  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v))
-    throw InvalidArgument(option + ": '" + text + "' is not a number");
-  return v;
-}
-
 // Checks the picture options (before any work) and returns the size: "WxH" (default
 // default_w x default_h), the PNG extension, and that --color / --view / --png-size come
 // with --png.
@@ -113,18 +105,7 @@ std::pair<int, int> picture_size(const PictureArgs& p, int default_w, int defaul
   if (lower_extension(p.png) != ".png")
     throw IoError(p.png + ": the picture is a .png file (got '" + lower_extension(p.png) + "')");
   if (p.size.empty()) return {default_w, default_h};
-  const auto x = p.size.find('x');
-  int wh[2] = {0, 0};
-  const std::string parts[2] = {p.size.substr(0, x),
-                                x == std::string::npos ? "" : p.size.substr(x + 1)};
-  for (int k = 0; k < 2; ++k) {
-    const char* b = parts[k].data();
-    const auto [q, ec] = std::from_chars(b, b + parts[k].size(), wh[k]);
-    if (parts[k].empty() || ec != std::errc() || q != b + parts[k].size())
-      throw InvalidArgument("--png-size '" + p.size + "': expected WIDTHxHEIGHT, e.g. 1200x900");
-  }
-  check_picture_size(wh[0], wh[1], "--png-size " + p.size);
-  return {wh[0], wh[1]};
+  return parse_picture_size(p.size);
 }
 
 // --color-range LO:HI (LO < HI), or none when empty.
@@ -137,18 +118,6 @@ std::optional<std::pair<double, double>> parse_color_range(const std::string& te
   const double hi = parse_number(text.substr(colon + 1), "--color-range");
   if (!(lo < hi)) throw InvalidArgument("--color-range '" + text + "': LO must be below HI");
   return std::pair{lo, hi};
-}
-
-// --view AZ,EL in degrees (elevation in [-90, 90]).
-std::pair<double, double> parse_view(const std::string& text) {
-  const auto comma = text.find(',');
-  if (comma == std::string::npos)
-    throw InvalidArgument("--view '" + text + "': expected AZIMUTH,ELEVATION in degrees");
-  const double az = parse_number(text.substr(0, comma), "--view");
-  const double el = parse_number(text.substr(comma + 1), "--view");
-  if (el < -90 || el > 90)
-    throw InvalidArgument("--view '" + text + "': the elevation is between -90 and 90 degrees");
-  return {az, el};
 }
 
 nlohmann::json picture_json(const std::string& path, const std::string& field, int w, int h,

@@ -16,7 +16,9 @@ namespace zdg::cli {
 
 namespace {
 
-double parse_number(const std::string& text, const std::string& option) {
+// The volume options' numbers ("--threshold 'nan' is not a finite decimal number", the
+// wording their contract rows hold).
+double parse_finite(const std::string& text, const std::string& option) {
   double v = 0.0;
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, v);
@@ -101,17 +103,17 @@ ObjectSelection object_selection(const VolumeInputArgs& a) {
   s.invert = a.invert;
   if (!a.threshold.empty()) {
     s.rule = ObjectSelection::Rule::at_least;
-    s.low = parse_number(a.threshold, "--threshold");
+    s.low = parse_finite(a.threshold, "--threshold");
   } else if (!a.label.empty()) {
     s.rule = ObjectSelection::Rule::equal;
-    s.low = parse_number(a.label, "--label");
+    s.low = parse_finite(a.label, "--label");
   } else if (!a.range.empty()) {
     // The separator is the first ':' (numbers never contain one).
     const auto colon = a.range.find(':');
     if (colon == std::string::npos) throw InvalidArgument("--range '" + a.range + "' is not LO:HI");
     s.rule = ObjectSelection::Rule::range;
-    s.low = parse_number(a.range.substr(0, colon), "--range LO");
-    s.high = parse_number(a.range.substr(colon + 1), "--range HI");
+    s.low = parse_finite(a.range.substr(0, colon), "--range LO");
+    s.high = parse_finite(a.range.substr(colon + 1), "--range HI");
     if (s.low > s.high) throw InvalidArgument("--range '" + a.range + "' is empty (LO > HI)");
   }
   return s;
@@ -124,7 +126,7 @@ std::vector<double> parse_spacing(const std::string& text, int dim) {
     const auto comma = text.find(',', pos);
     const std::string part =
         text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
-    const double v = parse_number(part, "--spacing");
+    const double v = parse_finite(part, "--spacing");
     if (v <= 0.0) throw InvalidArgument("--spacing '" + text + "': " + part + " is not positive");
     out.push_back(v);
     if (comma == std::string::npos) break;

@@ -1,4 +1,5 @@
 #include <zdg/arith/error.hpp>
+#include <zdg/arith/point.hpp>
 #include <zdg/kernel/io/input_file.hpp>
 #include <zdg/kernel/parallel/parallel_for.hpp>
 #include <zdg/kernel/render/volume_render.hpp>
@@ -14,16 +15,6 @@
 
 namespace zdg {
 
-namespace {
-
-std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
-} // namespace
-
 // ---- transfer functions ----------------------------------------------------------------------
 
 void TransferFunction::validate(const std::string& where) const {
@@ -33,11 +24,13 @@ void TransferFunction::validate(const std::string& where) const {
     const std::string at = where + ": control point " + std::to_string(i + 1);
     if (!std::isfinite(p.value)) throw InvalidArgument(at + ": the value is not finite");
     if (i > 0 && !(p.value > points[i - 1].value))
-      throw InvalidArgument(at + ": value " + num(p.value) + " does not increase (previous " +
-                            num(points[i - 1].value) + ")");
+      throw InvalidArgument(at + ": value " + short_number(p.value, 10) +
+                            " does not increase (previous " +
+                            short_number(points[i - 1].value, 10) + ")");
     for (double c : {p.r, p.g, p.b, p.alpha})
       if (!(c >= 0.0 && c <= 1.0))
-        throw InvalidArgument(at + ": colour and opacity must lie in [0, 1] (got " + num(c) + ")");
+        throw InvalidArgument(at + ": colour and opacity must lie in [0, 1] (got " +
+                              short_number(c, 10) + ")");
   }
 }
 
@@ -147,8 +140,7 @@ TransferFunction transfer_function_preset(const std::string& name, double lo, do
   } else {
     std::string names;
     for (const auto& n : transfer_function_presets()) names += (names.empty() ? "" : ", ") + n;
-    throw InvalidArgument("transfer function '" + name + "': not a file or a preset (" + names +
-                          ")");
+    throw InvalidArgument("transfer function '" + name + "': no such preset (" + names + ")");
   }
   return tf;
 }
@@ -278,24 +270,7 @@ digital_ray_voxels(const DigitalRay& ray, const std::array<std::int64_t, 3>& ext
 
 namespace {
 
-struct V3 {
-  double x = 0, y = 0, z = 0;
-};
-V3 operator+(V3 a, V3 b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-V3 operator-(V3 a, V3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-V3 operator*(double s, V3 a) {
-  return {s * a.x, s * a.y, s * a.z};
-}
-double dot(V3 a, V3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-V3 cross(V3 a, V3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
+using V3 = Point3<double>;
 
 struct Camera {
   V3 centre, right, up, toward;     // physical coordinates; toward: from the centre to the camera
@@ -306,8 +281,6 @@ struct Camera {
 
 Camera make_camera(const std::array<std::int64_t, 3>& extent, const std::array<double, 3>& spacing,
                    const VolumeRenderOptions& o) {
-  if (!std::isfinite(o.azimuth) || !std::isfinite(o.elevation))
-    throw InvalidArgument("render volume: the view angles must be finite");
   for (double s : spacing)
     if (!(s > 0) || !std::isfinite(s))
       throw InvalidArgument("render volume: the spacing must be positive and finite");
@@ -365,7 +338,8 @@ DigitalRay camera_ray(const Camera& c, const VolumeRenderOptions& o, int px, int
   return r;
 }
 
-// The volume's values in place, as doubles (physical: slope and intercept applied).
+// The volume's values in place, as doubles (physical: slope and intercept applied), inlined
+// on the samples' hot path rather than called through ScalarVolume::value (bench/README.md).
 struct Values {
   const unsigned char* bytes = nullptr;
   DType type = DType::U8;
@@ -449,10 +423,22 @@ double trilinear(const Values& vol, const double p[3], double grad[3]) {
 
 } // namespace
 
+void VolumeRenderOptions::validate() const {
+  check_picture_size(width, height, "render volume");
+  if (!std::isfinite(azimuth) || !std::isfinite(elevation))
+    throw InvalidArgument("render volume: the view angles must be finite");
+  if (!(step >= 0.01 && step <= 8))
+    throw InvalidArgument("render volume: the step must lie in [0.01, 8] voxels (got " +
+                          short_number(step, 10) + ")");
+  if (!(early_termination > 0 && early_termination <= 1))
+    throw InvalidArgument("render volume: the early termination opacity must lie in (0, 1] (got " +
+                          short_number(early_termination, 10) + ")");
+}
+
 DigitalRay volume_camera_ray(const std::array<std::int64_t, 3>& extent,
                              const std::array<double, 3>& spacing,
                              const VolumeRenderOptions& options, int px, int py) {
-  check_picture_size(options.width, options.height, "render volume");
+  options.validate();
   return camera_ray(make_camera(extent, spacing, options), options, px, py);
 }
 
@@ -460,13 +446,7 @@ VolumeRendering render_volume(const ScalarVolume& volume, const TransferFunction
                               const VolumeRenderOptions& o) {
   volume.validate();
   tf.validate("transfer function");
-  check_picture_size(o.width, o.height, "render volume");
-  if (!(o.step >= 0.01 && o.step <= 8))
-    throw InvalidArgument("render volume: the step must lie in [0.01, 8] voxels (got " +
-                          num(o.step) + ")");
-  if (!(o.early_termination > 0 && o.early_termination <= 1))
-    throw InvalidArgument("render volume: the early termination opacity must lie in (0, 1] (got " +
-                          num(o.early_termination) + ")");
+  o.validate();
   const auto& sh = volume.array.shape;
   const bool flat = sh.size() == 2;
   Values vol;

@@ -1,43 +1,28 @@
 // Direct volume rendering of a scalar volume: front-to-back compositing through a transfer
 // function, and maximum intensity projection (MIP) over exact digital rays.
 //
-// Transfer function: piecewise-linear control points value -> (r, g, b, alpha), r, g, b and
-// alpha in [0, 1], values strictly increasing; clamped to the first and last point outside
-// their range. alpha is the opacity of one voxel length of material (voxel coordinates);
-// a step of length s composites 1 - (1 - alpha)^s (opacity correction, Max 1995, "Optical
-// models for direct volume rendering", IEEE TVCG 1(2)), so the picture does not depend on
-// the step for a constant material. Text form: one "value r g b alpha" per line ('#' starts
-// a comment); JSON form: {"points": [[value, r, g, b, alpha], ...]}. Presets: "grey" (a
-// ramp from transparent black at the volume's minimum to opaque white at its maximum),
-// "ct-bone" and "ct-soft-tissue" (Hounsfield units).
+// Transfer function: piecewise-linear points value -> (r, g, b, alpha) in [0, 1], values
+// strictly increasing, clamped outside them; alpha is the opacity of one voxel length, a step
+// of length s composites 1 - (1 - alpha)^s (Max 1995, "Optical models for direct volume
+// rendering", IEEE TVCG 1(2)). Forms: "value r g b alpha" lines ('#' comments), or
+// {"points": [[value, r, g, b, alpha], ...]}.
 //
-// Digital rays (kernel of the MIP): the line (O + t D) / den with integer O, D and den > 0 in
-// voxel coordinates (voxel (x, y, z) is the cube of side 1 centred on it), clipped to the
-// volume's box. The voxels visited are those the line crosses over a positive length, in the
-// order of t (a plane of voxel faces containing the line belongs to the voxel above it:
-// half-open cubes); consecutive voxels differ by one step on each axis whose face plane is
-// crossed at that parameter (two or three at once through an edge or a corner). Computed
-// incrementally (Amanatides & Woo 1987, "A fast voxel traversal algorithm for ray tracing")
-// with every comparison of crossing parameters exact in 128-bit integers: |O|, |D| and den
-// at most 2^40, extents at most 2^20 (InvalidArgument otherwise). O(visited voxels).
+// Digital ray: the line (O + t D) / den (integers, den > 0) in voxel coordinates (voxel x is
+// the unit cube centred on x), clipped to the box. Its voxels are those the line crosses over
+// a positive length, in the order of t (half-open cubes decide a line in a face plane; a step
+// crosses one, two or three faces at once). Amanatides & Woo 1987, "A fast voxel traversal
+// algorithm for ray tracing", every comparison exact in 128-bit integers: |O|, |D|, den at
+// most 2^42, extents at most 2^20 (InvalidArgument otherwise). O(visited voxels).
 //
-// Camera: orthographic, looking at the centre of the volume's physical box from the direction
-// (cos e cos a, cos e sin a, sin e) (azimuth a around +z, elevation e; x, y, z the volume's
-// axes, spacing applied), +z up in the picture, the box's projection framed in the picture.
-// Each pixel's ray is the rational ray nearest the exact one with den = 2^20 (within 2^-21
-// voxel in each coordinate of its origin and direction).
-//   compositing  trilinear samples (the volume extended by its boundary values) at equal
-//                steps of at most `step` voxel lengths over the ray's chord, shaded by
-//                Lambert's cosine of the trilinear interpolant's gradient (physical
-//                coordinates, two-sided, 30% ambient, a headlight; no shading where the
-//                gradient vanishes), composited front to back over a black background; the
-//                ray stops once its opacity reaches `early_termination` (1 = never)
-//   MIP          the maximum physical value over the voxels of the pixel's digital ray, exact
-//                (the voxel values as read), coloured by the transfer function's colour
-// Cost: O(pixels x samples) (compositing) or O(pixels x visited voxels) (MIP), on `threads`
-// threads (0: all cores), bands of rows; the result does not depend on the thread count.
-// Memory: the picture and the values image; the volume is read in place (any dtype).
-// 2D volumes are rendered as volumes of one slice.
+// Camera: orthographic, render_mesh.hpp's view convention (azimuth around +z, elevation, +z
+// up), the box's projection framed; each pixel's ray rounded to den = 2^20.
+//   compositing  trilinear samples (boundary values extended) at equal steps <= `step`, Lambert
+//                shading by the interpolant's gradient (30% ambient, headlight; none where the
+//                gradient vanishes), over black; a ray stops at opacity `early_termination`
+//   MIP          the exact maximum over the pixel's digital ray, coloured by the function
+// Cost: O(pixels x samples) or O(pixels x visited voxels) on `threads` threads (0: all
+// cores); the result does not depend on the thread count. The volume is read in place.
+// 2D volumes are volumes of one slice.
 #pragma once
 
 #include <zdg/kernel/images/scalar_volume.hpp>
@@ -75,7 +60,8 @@ struct TransferFunction {
 TransferFunction parse_transfer_function(std::string_view text, const std::string& where);
 /// Reads a file (IoError naming it; at most 1 MiB) and parses it.
 TransferFunction read_transfer_function(const std::string& path);
-/// The preset of that name over the values [lo, hi] of the volume (used by "grey");
+/// The preset of that name over the values [lo, hi] of the volume ("grey": transparent black
+/// at lo to opaque white at hi; "ct-bone", "ct-soft-tissue": Hounsfield units);
 /// InvalidArgument listing the names for another.
 TransferFunction transfer_function_preset(const std::string& name, double lo, double hi);
 /// "grey", "ct-bone", "ct-soft-tissue".
@@ -100,6 +86,10 @@ struct VolumeRenderOptions {
   double early_termination = 0.99;          ///< in (0, 1]
   bool shading = true;
   unsigned threads = 0;
+
+  /// InvalidArgument for a picture size check_picture_size refuses, an angle that is not
+  /// finite, a step outside [0.01, 8] or an early termination outside (0, 1].
+  void validate() const;
 };
 
 struct VolumeRendering {
@@ -117,8 +107,7 @@ DigitalRay volume_camera_ray(const std::array<std::int64_t, 3>& extent,
                              const std::array<double, 3>& spacing,
                              const VolumeRenderOptions& options, int px, int py);
 
-/// Renders the volume (validated; picture size as check_picture_size; step and
-/// early_termination in range: InvalidArgument otherwise).
+/// Renders the volume (the volume, the function and the options validated first).
 VolumeRendering render_volume(const ScalarVolume& volume, const TransferFunction& tf,
                               const VolumeRenderOptions& options = {});
 
