@@ -1,7 +1,8 @@
-// zdg transform dt|voronoi|power|rdt|rma: the separable exact l_p transforms on images read by
-// the volume loader (cli/volume_input.hpp: every format and selection option; an .npy of any
-// dimension); the result is written through an OutputSet (checked before any work, staged,
-// renamed at the end), never over the input and never over an existing file unless --force.
+// zdg transform dt|voronoi|power|rdt|rma|chamfer: the separable exact l_p transforms and the
+// chamfer transform on images read by the volume loader (cli/volume_input.hpp: every format and
+// selection option; an .npy of any dimension); the result is written through an OutputSet (checked
+// before any work, staged, renamed at the end), never over the input and never over an existing
+// file unless --force.
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/cli/mpi_session.hpp>
@@ -12,6 +13,7 @@
 #include <zdg/kernel/io/pgm_io.hpp>
 #include <zdg/kernel/io/vol_io.hpp>
 #include <zdg/kernel/io/volume_io.hpp>
+#include <zdg/kernel/transforms/chamfer_transform.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/distributed_transform.hpp>
 #include <zdg/kernel/transforms/out_of_core_transform.hpp>
@@ -45,7 +47,7 @@ namespace {
 
 struct TransformArgs {
   VolumeInputArgs in;
-  std::string output, metric = "l2", torus, lower, memory;
+  std::string output, metric = "l2", torus, lower, memory, mask;
   unsigned threads = 0;
   bool json = false, force = false, out_of_core = false, quiet = false, mpi = false;
   // The file the result is written to before it is moved onto `output` (set by check_paths).
@@ -220,7 +222,7 @@ void report(const TransformArgs& a, const std::string& cmd, const Domain& dom,
     return;
   }
   std::cout << "zdg transform " << cmd << ": " << a.output << " (" << dtype << ", "
-            << opt.metric.name();
+            << (extra.contains("metric") ? extra["metric"].get<std::string>() : opt.metric.name());
   if (!max_value.empty()) std::cout << ", max " << max_value;
   std::cout << ") in " << seconds << " s\n";
 }
@@ -442,6 +444,65 @@ void run_rma(TransformArgs& a) {
   commit(a);
   report(a, "rma", mask.domain(), opt, "int64", std::to_string(mx), secs,
          {{"balls", balls.size()}});
+}
+
+// zdg transform chamfer: the exact chamfer transform of a 2D or 3D object with a weighted mask
+// (kernel/transforms/chamfer_transform.hpp); the output's dtype is the narrowest unsigned one
+// that holds the largest possible value; the JSON gives the mask's error bound against l2.
+void run_chamfer(TransformArgs& a) {
+  check_paths(a);
+  // The weights' syntax and signs fail before the input is read (the classes need its dimension).
+  if (!a.mask.empty()) ChamferMask::parse(2, a.mask);
+  auto shape = read_mask(a);
+  const int d = shape.dim();
+  if (d != 2 && d != 3) {
+    throw InvalidArgument("chamfer: " + a.in.path + " is a " + std::to_string(d) +
+                          "-D image (the masks are 2D or 3D)");
+  }
+  const ChamferMask mask =
+      a.mask.empty() ? ChamferMask::borgefors(d) : ChamferMask::parse(d, a.mask);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Domain& dom = shape.domain();
+  const BigInt bound = chamfer_transform_max_value(dom, mask);
+  const BigInt need = bound + mask.max_weight();
+  std::vector<std::uint64_t> v;
+  if (need <= BigInt(std::numeric_limits<std::uint32_t>::max())) {
+    const auto r = chamfer_transform<std::uint32_t>(shape, mask);
+    v.assign(r.values().begin(), r.values().end());
+  } else if (need <= BigInt(std::numeric_limits<std::uint64_t>::max())) {
+    v = chamfer_transform<std::uint64_t>(shape, mask).values();
+  } else {
+    const auto r = chamfer_transform<BigInt>(shape, mask);
+    v.reserve(r.values().size());
+    for (const auto& x : r.values()) {
+      if (x > BigInt(std::numeric_limits<std::uint64_t>::max())) {
+        throw OverflowError("chamfer transform: the value " + x.str() + " (mask " + mask.name() +
+                            ") does not fit uint64, the widest npy type");
+      }
+      v.push_back(x.convert_to<std::uint64_t>());
+    }
+  }
+  const double secs = since(t0);
+  std::uint64_t mx = 0;
+  for (auto x : v) mx = std::max(mx, x);
+  const DType dtype = narrowest_unsigned(bound).value_or(DType::U64);
+  write_unsigned(a, dom, v, dtype);
+  commit(a);
+  const auto e = chamfer_error_bound(mask);
+  nlohmann::json extra = {{"metric", "chamfer " + mask.name()},
+                          {"mask", mask.weights()},
+                          {"error_bound",
+                           {{"rho_min_squared", e.rho_min_squared.str()},
+                            {"rho_max_squared", e.rho_max_squared.str()},
+                            {"rho_min", e.rho_min},
+                            {"rho_max", e.rho_max},
+                            {"scale", mask.axis_weight()},
+                            {"relative_error_below", e.error_below},
+                            {"relative_error_above", e.error_above},
+                            {"optimal_scale", e.optimal_scale},
+                            {"optimal_relative_error", e.optimal_error}}},
+                          {"threads", 1}};
+  report(a, "chamfer", dom, TransformOptions{}, dtype_name(dtype), std::to_string(mx), secs, extra);
 }
 
 // A failure on some ranks only: its line, the staged output removed (MPI_Abort kills rank 0
@@ -728,6 +789,20 @@ void add_transform_commands(CLI::App& app, Context& ctx) {
         run(*args);
       }
     });
+  }
+  {
+    auto args = std::make_shared<TransformArgs>();
+    auto* sub = tr->add_subcommand(
+        "chamfer", "chamfer distance transform of a 2D/3D object with a weighted mask (exact "
+                   "shortest paths of mask moves); output the narrowest unsigned dtype");
+    add_volume_input_options(*sub, args->in, {.selection = true, .spacing = false});
+    sub->add_option("-o,--output", args->output, "output file (written atomically)")->required();
+    sub->add_option("--mask", args->mask,
+                    "weights as a comma list: 2D a[,b[,c]] (axis, diagonal, knight: 3,4 or "
+                    "5,7,11), 3D a[,b[,c]] (face, edge, vertex: 3,4,5); default 3,4 / 3,4,5");
+    sub->add_flag("--force", args->force, "replace the output file if it exists");
+    sub->add_flag("--json", args->json, "print a JSON summary on stdout");
+    sub->callback([args] { run_chamfer(*args); });
   }
 }
 

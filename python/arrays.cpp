@@ -32,6 +32,7 @@
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
 #include <zdg/kernel/topology/simple_points.hpp>
 #include <zdg/kernel/topology/skeleton_constraints.hpp>
+#include <zdg/kernel/transforms/chamfer_transform.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/power_map.hpp>
 #include <zdg/kernel/transforms/reduced_medial_axis.hpp>
@@ -873,6 +874,33 @@ void write_volume_py(const py::object& path_arg, const py::object& obj, bool for
   write_volume(path, v);
 }
 
+// The chamfer transform of a 2D or 3D mask (kernel/transforms/chamfer_transform.hpp): uint64
+// values (the classes of moves are symmetric under permuting the axes, so an F-ordered input is
+// transformed as the C-ordered image of its reversed axes).
+py::array chamfer_transform_py(const py::object& obj, const py::object& weights) {
+  MaskView in = mask_view(obj, true, "chamfer_transform");
+  const int d = static_cast<int>(in.shape.size());
+  if (d != 2 && d != 3) {
+    throw InvalidArgument("chamfer_transform: a " + std::to_string(d) +
+                          "-D array (the masks are 2D or 3D)");
+  }
+  const ChamferMask mask = weights.is_none()
+                               ? ChamferMask::borgefors(d)
+                               : ChamferMask(d, weights.cast<std::vector<std::int64_t>>());
+  Domain dom(in.shape);
+  Image<std::uint8_t> img{dom};
+  for (std::int64_t i = 0; i < in.size(); ++i) img.values()[std::size_t(i)] = in.object(i) ? 1 : 0;
+  Image<std::uint64_t> r = [&] {
+    py::gil_scoped_release release;
+    return chamfer_transform<std::uint64_t>(img, mask);
+  }();
+  py::module_ np = py::module_::import("numpy");
+  py::array_t<std::uint64_t> out = np.attr("empty")(shape_of(in), py::arg("dtype") = "uint64",
+                                                    py::arg("order") = in.fortran ? "F" : "C");
+  std::copy(r.values().begin(), r.values().end(), out.mutable_data());
+  return out;
+}
+
 } // namespace
 
 void bind_arrays(py::module_& m) {
@@ -888,6 +916,13 @@ void bind_arrays(py::module_& m) {
         "the narrowest type the proven bound on every intermediate allows, else an object "
         "array of exact Python ints). The GIL is "
         "released during the work.");
+  m.def("chamfer_transform", &chamfer_transform_py, py::arg("image"), py::kw_only(),
+        py::arg("mask") = py::none(),
+        "Exact chamfer distance transform of a 2D or 3D binary image (nonzero = object): at "
+        "every point the least total weight of a path of mask moves to a zero point "
+        "(Borgefors 1986). mask: the weights of the classes of moves, 2D [axis, diagonal, "
+        "knight] ([3, 4], [5, 7, 11]), 3D [face, edge, vertex] ([3, 4, 5]); default [3, 4] / "
+        "[3, 4, 5]. Returns a uint64 array.");
   m.def("voronoi_map", &voronoi_map_py, py::arg("image"), py::kw_only(), py::arg("metric") = "l2",
         py::arg("torus") = py::none(), py::arg("threads") = 0,
         "Voronoi map of the zero points of a binary image: at every point the C-order linear "

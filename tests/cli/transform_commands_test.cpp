@@ -1,12 +1,15 @@
 // zdg transform: JSON summaries, outputs checked against the kernel, error exits.
 #include "tests/support/cli.hpp"
 #include <zdg/kernel/io/npy_io.hpp>
+#include <zdg/kernel/transforms/chamfer_transform.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/reverse_distance_transform.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include <sstream>
 #include <tuple>
 
 namespace zdg {
@@ -211,6 +214,80 @@ TEST(TransformCommands, ErrorsExitTwoAndLeaveNoOutput) {
   auto r = test::run_zdg("transform dt --help");
   EXPECT_EQ(r.status, 0);
   EXPECT_NE(r.out.find("--metric"), std::string::npos);
+}
+
+// zdg transform chamfer: the values of the kernel's transform, the mask's error bound in the
+// JSON (Borgefors' <5,7,11>: rho_max^2 = 26), the default mask by dimension, and one-line errors.
+TEST(TransformCommands, ChamferWritesTheChamferTransform) {
+  Files f;
+  auto shape = small_shape();
+  write_npy(f.path("in.npy"), make_npy<std::uint8_t>({4, 5}, shape.values()));
+  auto r = test::run_zdg("transform chamfer " + f("in.npy") + " -o " + f("out.npy") +
+                         " --mask 5,7,11 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["command"], "chamfer");
+  EXPECT_EQ(j["metric"], "chamfer <5,7,11>");
+  EXPECT_EQ(j["mask"], nlohmann::json::array({5, 7, 11}));
+  EXPECT_EQ(j["error_bound"]["rho_max_squared"], "26");
+  EXPECT_EQ(j["error_bound"]["rho_min_squared"], "121/5");
+  EXPECT_EQ(j["dtype"], "uint8");
+  const auto expect = chamfer_transform<std::uint64_t>(shape, ChamferMask(2, {5, 7, 11}));
+  const auto got = npy_to_int64(read_npy(f.path("out.npy"))).values();
+  ASSERT_EQ(got.size(), expect.values().size());
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    EXPECT_EQ(static_cast<std::uint64_t>(got[i]), expect.values()[i]);
+  }
+  EXPECT_EQ(j["max_value"],
+            std::to_string(*std::max_element(expect.values().begin(), expect.values().end())));
+
+  // 3D, default <3,4,5>: one background voxel at a corner of a 3 x 3 x 3 cube; the far corner
+  // is 2 vertex moves away.
+  std::vector<std::uint8_t> cube(27, 1);
+  cube[0] = 0;
+  write_npy(f.path("cube.npy"), make_npy<std::uint8_t>({3, 3, 3}, cube));
+  r = test::run_zdg("transform chamfer " + f("cube.npy") + " -o " + f("cube_out.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["metric"], "chamfer <3,4,5>");
+  EXPECT_EQ(j["max_value"], "10");
+
+  // Errors: one line, exit 2, no output.
+  for (const std::string bad : {" --mask 3,0", " --mask 3,4,5,6", " --mask x", " --mask 3,,4"}) {
+    r = test::run_zdg("transform chamfer " + f("in.npy") + " -o " + f("bad.npy") + bad);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(f.path("bad.npy")));
+  }
+  write_npy(f.path("line.npy"), make_npy<std::uint8_t>({4}, {1, 0, 1, 1}));
+  r = test::run_zdg("transform chamfer " + f("line.npy") + " -o " + f("bad.npy"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("1-D image"), std::string::npos) << r.err;
+  r = test::run_zdg("transform chamfer " + f("in.npy") + " -o " + f("out.npy"));
+  EXPECT_EQ(r.status, 2) << "an existing output without --force";
+}
+
+// zdg serve transform chamfer answers the command's values (the 3 x 3 image with its centre as
+// background: axis 3, diagonal 4 with <3,4>).
+TEST(TransformCommands, ChamferIsServed) {
+  Files f;
+  {
+    std::ofstream(f.path("request")) << "{\"image\": [[1,1,1],[1,0,1],[1,1,1]], \"mask\": [3, 4]}\n"
+                                     << "{\"image\": [[1,0]], \"mask\": [3, 0]}\n";
+  }
+  const std::string cmd = "'" + std::string(test::cli_path()) + "' serve transform chamfer <" +
+                          f("request") + " >" + f("out") + " 2>" + f("err");
+  const int status = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << test::read_file(f.path("err"));
+  std::istringstream lines(test::read_file(f.path("out")));
+  std::string line;
+  ASSERT_TRUE(std::getline(lines, line));
+  auto j = nlohmann::json::parse(line);
+  EXPECT_EQ(j["distances"], nlohmann::json::parse("[[4,3,4],[3,0,3],[4,3,4]]")) << line;
+  EXPECT_EQ(j["metric"], "chamfer <3,4>");
+  ASSERT_TRUE(std::getline(lines, line));
+  EXPECT_NE(line.find("\"error\""), std::string::npos) << line;
 }
 
 } // namespace

@@ -2,9 +2,10 @@
 // line-JSON protocol of zdg check --against). The first byte picks the operation among those
 // whose work is bounded by the size of the request; the rest is the line. Expected outcome:
 // one line of JSON, an object (the answer or {"error": ...}), never an exception. The
-// operations left out (christoffel, hull disc, hull ellipse, hull halfplanes, plane probe) do
-// work that grows with the values asked for (a word of p + q letters, a disc of radius r, the
-// lattice rows of a polygon, up to ||N||_1 probing steps).
+// operations left out (christoffel, hull disc, hull ellipse, hull halfplanes, plane probe,
+// sturmian) do work that grows with the values asked for (a word of p + q letters, a disc of
+// radius r, the lattice rows of a polygon, up to ||N||_1 probing steps, a period of up to
+// O(sqrt(D) log D) terms and a word of `length` letters).
 // hull disc and plane probe are bounded for every front end by the library, before the work
 // (kHullMaxVertices vertices, kPlaneProbingMaxSteps steps), but a request may raise the bound
 // (its max_vertices, max_steps fields) and the default bounds allow seconds of work, more than a
@@ -26,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                     "topology betti",  "topology skeleton",
                                     "surface",         "contour",
                                     "plane recognize", "topology components",
-                                    "topology simple"};
+                                    "topology simple", "transform chamfer"};
   if (size == 0) return 0;
   const char* op = ops[data[0] % (sizeof ops / sizeof ops[0])];
   const std::string line(reinterpret_cast<const char*>(data + 1), size - 1);

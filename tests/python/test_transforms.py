@@ -338,3 +338,31 @@ def test_integer_masks_of_any_width_are_read_in_place(dtype):
     _, peak = tracemalloc.get_traced_memory()
     tracemalloc.stop()
     assert peak < out.nbytes * 1.05 + 65536  # the result only: the input is not reduced
+
+
+two_or_three_d = st.integers(2, 3).flatmap(
+    lambda d: arrays(np.uint8, st.tuples(*[st.integers(1, 9 if d == 2 else 5)] * d),
+                     elements=st.integers(0, 1)))
+
+
+@given(two_or_three_d)
+def test_chamfer_unit_masks_equal_scipy_cdt(image):
+    """Peer oracle: the chamfer masks <1> and <1,1> (<1,1,1> in 3D) are scipy's taxicab and
+    chessboard chamfer transforms."""
+    if image.all():
+        return
+    full = [1, 1] if image.ndim == 2 else [1, 1, 1]
+    assert np.array_equal(zdg.chamfer_transform(image, mask=[1]),
+                          ndimage.distance_transform_cdt(image, metric="taxicab"))
+    assert np.array_equal(zdg.chamfer_transform(image, mask=full),
+                          ndimage.distance_transform_cdt(image, metric="chessboard"))
+    # Fortran order gives the same values (the masks are symmetric under axis permutations).
+    assert np.array_equal(zdg.chamfer_transform(np.asfortranarray(image)),
+                          zdg.chamfer_transform(image))
+
+
+def test_chamfer_errors():
+    with pytest.raises(ValueError, match="1-D array"):
+        zdg.chamfer_transform(np.array([1, 0, 1], dtype=np.uint8))
+    with pytest.raises(ValueError, match="positive"):
+        zdg.chamfer_transform(np.array([[1, 0]], dtype=np.uint8), mask=[3, 0])

@@ -1,0 +1,94 @@
+// Chamfer transforms (kernel/transforms/chamfer_transform.hpp) beside the exact l2 transform on
+// the same inputs: a disc of radius 0.45 n in n^2 (masks <3,4> and <5,7,11>) and a ball of
+// radius 0.45 n in n^3 (<3,4,5>). Arguments: n, mask (0: <3,4> / <3,4,5>; 1: <5,7,11>, 2D only).
+// The chamfer transform runs on one thread; the l2 transform (Dt*L2) is given 1 thread too, so
+// the counter "ns_per_voxel" compares the algorithms, not the thread counts.
+//
+//   build/bin/chamfer_bench --benchmark_filter='3d'
+#include <zdg/kernel/transforms/chamfer_transform.hpp>
+#include <zdg/kernel/transforms/distance_transform.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace {
+
+using zdg::Domain;
+using zdg::Image;
+
+Image<std::uint8_t> ball(int dim, std::int64_t n) {
+  std::vector<std::int64_t> ext(static_cast<std::size_t>(dim), n);
+  Domain dom(ext);
+  Image<std::uint8_t> img(dom);
+  const std::int64_t c = n / 2, r2 = (45 * n / 100) * (45 * n / 100);
+  std::vector<std::int64_t> p(static_cast<std::size_t>(dim));
+  for (std::int64_t i = 0; i < dom.size(); ++i) {
+    dom.point(i, p);
+    std::int64_t s = 0;
+    for (auto x : p) s += (x - c) * (x - c);
+    img[i] = s <= r2 ? 1 : 0;
+  }
+  return img;
+}
+
+void Chamfer2d(benchmark::State& state) {
+  const auto n = state.range(0);
+  const auto img = ball(2, n);
+  const zdg::ChamferMask mask =
+      state.range(1) == 1 ? zdg::ChamferMask(2, {5, 7, 11}) : zdg::ChamferMask(2, {3, 4});
+  for (auto _ : state) {
+    auto dt = zdg::chamfer_transform<std::uint32_t>(img, mask);
+    benchmark::DoNotOptimize(dt.values().data());
+  }
+  state.SetLabel(mask.name());
+  state.counters["ns_per_voxel"] = benchmark::Counter(
+      static_cast<double>(img.size()) * 1e-9,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void Chamfer3d(benchmark::State& state) {
+  const auto n = state.range(0);
+  const auto img = ball(3, n);
+  const zdg::ChamferMask mask = zdg::ChamferMask::borgefors(3);
+  for (auto _ : state) {
+    auto dt = zdg::chamfer_transform<std::uint32_t>(img, mask);
+    benchmark::DoNotOptimize(dt.values().data());
+  }
+  state.SetLabel(mask.name());
+  state.counters["ns_per_voxel"] = benchmark::Counter(
+      static_cast<double>(img.size()) * 1e-9,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void DtL2(benchmark::State& state, int dim) {
+  const auto n = state.range(0);
+  const auto img = ball(dim, n);
+  zdg::TransformOptions opt;
+  opt.threads = 1;
+  for (auto _ : state) {
+    auto dt = zdg::distance_transform<std::uint32_t>(img, opt);
+    benchmark::DoNotOptimize(dt.values().data());
+  }
+  state.SetLabel("l2, 1 thread");
+  state.counters["ns_per_voxel"] = benchmark::Counter(
+      static_cast<double>(img.size()) * 1e-9,
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void Dt2dL2(benchmark::State& state) {
+  DtL2(state, 2);
+}
+void Dt3dL2(benchmark::State& state) {
+  DtL2(state, 3);
+}
+
+BENCHMARK(Chamfer2d)->Args({4096, 0})->Args({4096, 1})->Unit(benchmark::kMillisecond);
+BENCHMARK(Dt2dL2)->Arg(4096)->Unit(benchmark::kMillisecond);
+BENCHMARK(Chamfer3d)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(Dt3dL2)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+} // namespace
+
+BENCHMARK_MAIN();
