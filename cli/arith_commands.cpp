@@ -1,9 +1,10 @@
-// zdg cf, zdg christoffel, zdg floor-sum: the arithmetic operations
+// zdg cf, zdg christoffel, zdg floor-sum, zdg sturmian: the arithmetic operations
 // (operations/arith_operations.hpp) on the command line: parse, call, print.
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/operations/arith_operations.hpp>
 
+#include <cstdint>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -58,6 +59,24 @@ void run_floor_sum(const std::vector<std::string>& args, bool json) {
   std::cout << r.value << '\n';
 }
 
+void run_sturmian(const std::vector<std::string>& args, std::uint64_t length, bool json) {
+  const SturmianResult r =
+      sturmian_operation({parse_big(args[0], "A"), parse_big(args[1], "B"), parse_big(args[2], "D"),
+                          parse_big(args[3], "C"), length});
+  if (json) return print_json(to_json(r));
+  std::cout << "(" << r.P << " + sqrt(" << r.D << "))/" << r.Q << " = [";
+  for (std::size_t i = 0; i < r.preperiod.size(); ++i) {
+    std::cout << (i == 0 ? "" : (i == 1 ? "; " : ", ")) << r.preperiod[i];
+  }
+  std::cout << (r.preperiod.empty() ? "(" : (r.preperiod.size() == 1 ? "; (" : ", ("));
+  for (std::size_t i = 0; i < r.period.size(); ++i) std::cout << (i ? ", " : "") << r.period[i];
+  std::cout << ")]\ncharacteristic word of the fractional part (" << r.alpha_P << " + sqrt(" << r.D
+            << "))/" << r.Q << ":\n"
+            << r.word << "\nChristoffel convergents:";
+  for (const auto& [p, q] : r.christoffel) std::cout << ' ' << p << '/' << q;
+  std::cout << "\n(computed on " << to_string(r.served) << ")\n";
+}
+
 } // namespace
 
 void add_arith_commands(CLI::App& app, Context& /*ctx*/) {
@@ -89,6 +108,21 @@ void add_arith_commands(CLI::App& app, Context& /*ctx*/) {
     cmd->add_option("N M A B", *args, "N >= 0, M != 0, any A and B")->required()->expected(4);
     cmd->add_flag("--json", *json, "Machine-readable output");
     cmd->callback([=] { run_floor_sum(*args, *json); });
+  }
+  {
+    auto* cmd = app.add_subcommand(
+        "sturmian", "Periodic continued fraction of (A + B sqrt D)/C and the Sturmian word of its "
+                    "fractional part, exact");
+    auto args = std::make_shared<std::vector<std::string>>();
+    auto length = std::make_shared<std::uint64_t>(64);
+    auto json = std::make_shared<bool>(false);
+    cmd->add_option("A B D C", *args, "B != 0, C != 0, D > 0 not a square")
+        ->required()
+        ->expected(4);
+    cmd->add_option("--length", *length, "letters of the characteristic word (0 .. 10^8)")
+        ->capture_default_str();
+    cmd->add_flag("--json", *json, "Machine-readable output");
+    cmd->callback([=] { run_sturmian(*args, *length, *json); });
   }
 }
 

@@ -29,6 +29,7 @@
 #include <zdg/kernel/topology/connected_components.hpp>
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
 #include <zdg/kernel/topology/simple_points.hpp>
+#include <zdg/kernel/transforms/chamfer_transform.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/voronoi_map.hpp>
 #include <zdg/operations/arith_operations.hpp>
@@ -37,6 +38,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <new>
@@ -200,6 +202,14 @@ json serve_christoffel(const json& j) {
       christoffel_operation({{p, q}, flag_field(j, "upper", false), flag_field(j, "word", true)}));
 }
 
+// sturmian: {"a": A, "b": B, "d": D, "c": C, "length": N} (length optional, default 64).
+json serve_sturmian(const json& j) {
+  SturmianOptions o{integer_field(j, "a"), integer_field(j, "b"), integer_field(j, "d"),
+                    integer_field(j, "c")};
+  o.length = bound_field(j, "length", o.length);
+  return to_json(sturmian_operation(o));
+}
+
 // The path of a dss request: its points and the asked connectivity (0 when absent).
 DssPathOptions path_field(const json& j) {
   DssPathOptions o;
@@ -256,6 +266,41 @@ json serve_transform_dt(const json& j) {
     }
   }
   return {{"distances", nested(flat, img.domain())}, {"metric", opt.metric.name()}};
+}
+
+// transform chamfer: {"image": [[...]], "mask": [5, 7, 11]} (mask optional: <3,4> / <3,4,5>).
+json serve_transform_chamfer(const json& j) {
+  const auto img = image_field(j);
+  if (img.dim() != 2 && img.dim() != 3) {
+    throw InvalidArgument("transform chamfer: a " + std::to_string(img.dim()) +
+                          "-D image (the masks are 2D or 3D)");
+  }
+  std::vector<std::int64_t> w;
+  if (j.contains("mask")) {
+    const json& m = j.at("mask");
+    if (!m.is_array()) throw InvalidArgument("request: 'mask' is a list of weights");
+    for (const auto& e : m) {
+      const auto v = json_integer(e);
+      if (!v || *v < 1 || *v > BigInt(std::numeric_limits<std::int64_t>::max())) {
+        throw InvalidArgument("request: a 'mask' weight is not an integer in 1..2^63-1");
+      }
+      w.push_back(v->convert_to<std::int64_t>());
+    }
+  }
+  const ChamferMask mask =
+      w.empty() ? ChamferMask::borgefors(img.dim()) : ChamferMask(img.dim(), w);
+  const auto dt = chamfer_transform<BigInt>(img, mask);
+  std::vector<json> flat;
+  for (const auto& v : dt.values()) {
+    if (v <= BigInt(std::int64_t{1} << 53)) {
+      flat.push_back(v.convert_to<std::int64_t>());
+    } else {
+      flat.push_back(v.str());
+    }
+  }
+  return {{"distances", nested(flat, img.domain())},
+          {"mask", mask.weights()},
+          {"metric", "chamfer " + mask.name()}};
 }
 
 json serve_topology_betti(const json& j) {
@@ -485,11 +530,13 @@ const std::map<std::string, Handler>& handlers() {
       {"floor-sum", serve_floor_sum},
       {"cf", serve_cf},
       {"christoffel", serve_christoffel},
+      {"sturmian", serve_sturmian},
       {"dss recognize", serve_dss_recognize},
       {"dss subsegment", serve_dss_subsegment},
       {"hull points", serve_hull_points},
       {"hull disc", serve_hull_disc},
       {"transform dt", serve_transform_dt},
+      {"transform chamfer", serve_transform_chamfer},
       {"topology betti", serve_topology_betti},
       {"dss cover", serve_dss_cover},
       {"transform voronoi", serve_transform_voronoi},

@@ -5,6 +5,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/arith/floor_sum.hpp>
 #include <zdg/arith/stern_brocot.hpp>
+#include <zdg/arith/sturmian.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -142,6 +143,65 @@ FloorSumResult floor_sum_operation(const FloorSumOptions& o) {
 
 nlohmann::json to_json(const FloorSumResult& r) {
   return {{"value", r.value.str()}, {"integer_type", std::string(to_string(r.served))}};
+}
+
+SturmianResult sturmian_operation(const SturmianOptions& o) {
+  if (o.length > 100'000'000) {
+    throw InvalidArgument("sturmian: length " + std::to_string(o.length) +
+                          " is past the 10^8 letters a word may have here");
+  }
+  auto r = escalate([&]<class I>(std::type_identity<I>) {
+    const auto x =
+        make_surd(int_cast<I>(o.a), int_cast<I>(o.b), int_cast<I>(o.d), int_cast<I>(o.c));
+    const auto cf = periodic_continued_fraction(x, static_cast<std::size_t>(o.max_terms));
+    const I f = floor_multiple(x, I(1));
+    const QuadraticSurd<I> alpha{I(x.P - f * x.Q), x.D, x.Q};
+    const auto acf = periodic_continued_fraction(alpha, static_cast<std::size_t>(o.max_terms));
+    SturmianResult w;
+    w.P = to_bigint(x.P);
+    w.D = to_bigint(x.D);
+    w.Q = to_bigint(x.Q);
+    for (const auto& t : cf.preperiod) w.preperiod.push_back(to_bigint(t));
+    for (const auto& t : cf.period) w.period.push_back(to_bigint(t));
+    w.floor = to_bigint(f);
+    w.alpha_P = to_bigint(alpha.P);
+    w.word = standard_word_prefix(acf, static_cast<std::size_t>(o.length));
+    // The convergents p/q of alpha with 2 <= q <= length + 2: the lower Christoffel words of
+    // slopes p/(q - p) are 0 w 1 with w the word's prefix of length q - 2.
+    const BigInt limit = BigInt(o.length) + 2;
+    I p2 = 0, q2 = 1, p1 = 1, q1 = 0;
+    for (std::size_t k = 0;; ++k) {
+      const I& a = acf.term(k);
+      I p = a * p1 + p2, q = a * q1 + q2;
+      if (to_bigint(q) > limit) break;
+      if (q >= 2 && p >= 1) w.christoffel.emplace_back(to_bigint(p), to_bigint(q) - to_bigint(p));
+      p2 = std::move(p1);
+      q2 = std::move(q1);
+      p1 = std::move(p);
+      q1 = std::move(q);
+    }
+    return w;
+  });
+  r.value.served = r.served;
+  return r.value;
+}
+
+nlohmann::json to_json(const SturmianResult& r) {
+  nlohmann::json conv = nlohmann::json::array();
+  for (const auto& [p, q] : r.christoffel) conv.push_back(pair_json(p, q));
+  auto surd = [&](const BigInt& p) {
+    std::string t = "(";
+    t.append(p.str()).append(" + sqrt(").append(r.D.str()).append("))/").append(r.Q.str());
+    return t;
+  };
+  return {{"surd", surd(r.P)},
+          {"preperiod", strings(r.preperiod)},
+          {"period", strings(r.period)},
+          {"floor", r.floor.str()},
+          {"slope", surd(r.alpha_P)},
+          {"word", r.word},
+          {"christoffel_convergents", conv},
+          {"integer_type", std::string(to_string(r.served))}};
 }
 
 } // namespace zdg

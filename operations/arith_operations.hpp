@@ -11,6 +11,11 @@
 //                                  has P + Q letters: ask for it only where that fits
 //   floor_sum_operation            sum_{i=0}^{N-1} floor((A i + B) / M) in O(log M)
 //                                  (arith/floor_sum.hpp)
+//   sturmian_operation             the periodic continued fraction of x = (A + B sqrt D) / C,
+//                                  and the characteristic (Sturmian) word of its fractional
+//                                  part with its Christoffel convergents (arith/sturmian.hpp);
+//                                  the work grows with the period (O(sqrt(D) log D) terms, at
+//                                  most max_terms) and the word's length (at most 10^8)
 //
 // Errors: InvalidArgument for a zero denominator, a slope with P < 0 or Q <= 0, N < 0, M = 0,
 // and for text that is not a decimal integer (parse_fraction).
@@ -22,6 +27,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -70,5 +76,24 @@ struct FloorSumResult {
 FloorSumResult floor_sum_operation(const FloorSumOptions& o);
 /// {"value","integer_type"}.
 nlohmann::json to_json(const FloorSumResult& r);
+
+struct SturmianOptions {
+  BigInt a, b, d, c;                 // x = (a + b sqrt d) / c: b != 0, c != 0, d > 0 not a square
+  std::uint64_t length = 64;         // letters of the characteristic word (at most 10^8)
+  std::uint64_t max_terms = 1000000; // bound on the preperiod and period together
+};
+struct SturmianResult {
+  BigInt P, D, Q;                        // x = (P + sqrt D) / Q, Q | D - P^2
+  std::vector<BigInt> preperiod, period; // x = [preperiod; (period)]
+  BigInt floor;                          // floor(x)
+  BigInt alpha_P;                        // alpha = x - floor(x) = (alpha_P + sqrt D) / Q
+  std::string word;                      // the first `length` letters of c_alpha
+  std::vector<std::pair<BigInt, BigInt>> christoffel; // slopes p/(q - p), q <= length + 2
+  IntKind served = IntKind::int64;
+};
+SturmianResult sturmian_operation(const SturmianOptions& o);
+/// {"surd","preperiod","period","floor","slope","word","christoffel_convergents":[[p,q],...],
+/// "integer_type"} (integers as decimal strings; "slope" the text of alpha).
+nlohmann::json to_json(const SturmianResult& r);
 
 } // namespace zdg

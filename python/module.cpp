@@ -84,6 +84,33 @@ py::dict christoffel(py::handle p_obj, py::handle q_obj, bool upper, bool word) 
   return d;
 }
 
+py::dict sturmian_py(py::handle a, py::handle b, py::handle d, py::handle c, std::uint64_t length) {
+  SturmianOptions o{py_to_bigint(a, "sturmian: a"), py_to_bigint(b, "sturmian: b"),
+                    py_to_bigint(d, "sturmian: d"), py_to_bigint(c, "sturmian: c")};
+  o.length = length;
+  const auto r = [&] {
+    py::gil_scoped_release release;
+    return sturmian_operation(o);
+  }();
+  auto ints = [](const std::vector<BigInt>& v) {
+    py::list l;
+    for (const auto& x : v) l.append(bigint_to_py(x));
+    return l;
+  };
+  py::dict dd;
+  dd["surd"] = py::make_tuple(bigint_to_py(r.P), bigint_to_py(r.D), bigint_to_py(r.Q));
+  dd["preperiod"] = ints(r.preperiod);
+  dd["period"] = ints(r.period);
+  dd["floor"] = bigint_to_py(r.floor);
+  dd["word"] = r.word;
+  py::list conv;
+  for (const auto& [p, q] : r.christoffel)
+    conv.append(py::make_tuple(bigint_to_py(p), bigint_to_py(q)));
+  dd["christoffel_convergents"] = conv;
+  dd["integer_type"] = served(r.served);
+  return dd;
+}
+
 py::dict floor_sum_py(py::handle n_obj, py::handle m_obj, py::handle a_obj, py::handle b_obj) {
   const FloorSumOptions o{py_to_bigint(n_obj, "floor_sum: n"), py_to_bigint(m_obj, "floor_sum: m"),
                           py_to_bigint(a_obj, "floor_sum: a"), py_to_bigint(b_obj, "floor_sum: b")};
@@ -482,6 +509,15 @@ PYBIND11_MODULE(_zdg, m) {
         "(Borel-Laubie 1993). O(p + q) for the word (at most 2^30 letters; word=False for "
         "huge slopes), O(log q) for the parents. Returns {'p', 'q', 'word', "
         "'standard_factorization', 'parents', 'integer_type'}.");
+  m.def("sturmian", &sturmian_py, py::arg("a"), py::arg("b"), py::arg("d"), py::arg("c"),
+        py::kw_only(), py::arg("length") = 64,
+        "The quadratic surd x = (a + b sqrt d) / c (b, c != 0, d > 0 not a square) as "
+        "(P + sqrt D) / Q, its eventually periodic continued fraction (Lagrange), and the first "
+        "`length` letters of the characteristic Sturmian word of its fractional part alpha "
+        "(floor((n + 1) alpha) - floor(n alpha)) with the Christoffel convergents p/q whose "
+        "words are 0 w 1, w a prefix of it. Exact; escalates int64 -> int128 -> BigInt. "
+        "Returns {'surd': (P, D, Q), 'preperiod', 'period', 'floor', 'word', "
+        "'christoffel_convergents', 'integer_type'}.");
   m.def("floor_sum", &floor_sum_py, py::arg("n"), py::arg("m"), py::arg("a"), py::arg("b"),
         "sum_{i=0}^{n-1} floor((a i + b) / m) for n >= 0, m != 0, exact, O(log m) (the "
         "Euclidean-like reduction). Returns {'value', 'integer_type'}.");

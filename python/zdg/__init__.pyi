@@ -26,6 +26,15 @@ class FloorSum(TypedDict):
     value: int
     integer_type: IntegerType
 
+class Sturmian(TypedDict):
+    surd: tuple[int, int, int]
+    preperiod: list[int]
+    period: list[int]
+    floor: int
+    word: str
+    christoffel_convergents: list[tuple[int, int]]
+    integer_type: IntegerType
+
 class DssRecognition(TypedDict):
     is_dss: bool
     longest_prefix: int
@@ -99,6 +108,7 @@ Point = tuple[int, int]
 def cf(p: int, q: int) -> ContinuedFraction: ...
 def christoffel(p: int, q: int, *, upper: bool = False, word: bool = True) -> ChristoffelWord: ...
 def floor_sum(n: int, m: int, a: int, b: int) -> FloorSum: ...
+def sturmian(a: int, b: int, d: int, c: int, *, length: int = 64) -> Sturmian: ...
 def recognize_dss(points: Sequence[Point], connectivity: int = 0) -> DssRecognition: ...
 def tangential_cover(points: Sequence[Point], closed: bool = True,
                      connectivity: int = 0) -> list[MaximalSegment]: ...
@@ -144,6 +154,8 @@ def reverse_distance_transform(values: npt.ArrayLike, *, metric: str = "l2",
 def reduced_medial_axis(image: npt.ArrayLike, *, metric: str = "l2",
                         torus: Union[None, bool, Sequence[bool]] = None, threads: int = 0
                         ) -> tuple[npt.NDArray[np.int64], npt.NDArray[np.int64]]: ...
+def chamfer_transform(image: npt.ArrayLike, *, mask: Optional[Sequence[int]] = None
+                      ) -> npt.NDArray[np.uint64]: ...
 def distance_transform(image: npt.ArrayLike, *, metric: str = "l2",
                        torus: Union[None, bool, Sequence[bool]] = None,
                        threads: int = 0) -> np.ndarray: ...

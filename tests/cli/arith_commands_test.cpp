@@ -73,6 +73,32 @@ TEST(CliFloorSum, ValueAndEscalation) {
   EXPECT_EQ(big["integer_type"], "int128");
 }
 
+// zdg sturmian: 1/phi^2 = (3 - sqrt 5)/2 = [0; 2, (1)], whose characteristic word is the
+// Fibonacci word; its Christoffel convergents are the slopes F_n / F_{n+1}; a surd past int64
+// escalates.
+TEST(CliSturmian, FibonacciWordAndEscalation) {
+  auto r = run_zdg("sturmian 3 -1 5 2 --length 20 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = json::parse(r.out);
+  EXPECT_EQ(j["surd"], "(-3 + sqrt(5))/-2");
+  EXPECT_EQ(j["preperiod"], json::array({"0", "2"}));
+  EXPECT_EQ(j["period"], json::array({"1"}));
+  EXPECT_EQ(j["floor"], "0");
+  EXPECT_EQ(j["word"], "01001010010010100101");
+  EXPECT_EQ(j["christoffel_convergents"],
+            pairs({{"1", "1"}, {"1", "2"}, {"2", "3"}, {"3", "5"}, {"5", "8"}, {"8", "13"}}));
+  EXPECT_EQ(j["integer_type"], "int64");
+  r = run_zdg("sturmian 0 4 1152921504606846977 1 --length 0 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  j = json::parse(r.out);
+  EXPECT_EQ(j["period"], json::array({"536870912", "8589934592"}));
+  EXPECT_EQ(j["integer_type"], "int128");
+  r = run_zdg("sturmian 0 1 2 1 --length 8");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("(0 + sqrt(2))/1 = [1; (2)]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("01010010"), std::string::npos) << r.out; // sqrt 2 - 1
+}
+
 TEST(CliErrors, BadInputExitsTwoWithOneLineNamingTheValue) {
   for (const char* args :
        {"cf 5/0", "cf x/3", "christoffel -- -1/2", "christoffel 1/-2", "floor-sum 1 0 2 3",

@@ -188,3 +188,25 @@ def test_gmp_out_of_memory_is_memory_error():
     assert r.returncode == 0, (r.returncode, r.stderr)
     assert "GNU MP" not in r.stderr
     assert r.stdout.split() == ["memory", "error", "alive"], r.stdout
+
+
+@given(st.integers(-40, 40), st.integers(-5, 5).filter(lambda b: b != 0),
+       st.integers(2, 300).filter(lambda d: int(d**0.5) ** 2 != d and (int(d**0.5) + 1) ** 2 != d),
+       st.integers(-30, 30).filter(lambda c: c != 0))
+def test_sturmian_word_is_the_floor_difference(a, b, d, c):
+    """The characteristic word of frac(x) letter by letter from floor((n+1) alpha) - floor(n
+    alpha), computed here with Python's exact integer square root."""
+    from math import isqrt
+    r = zdg.sturmian(a, b, d, c, length=60)
+    P, D, Q = r["surd"]
+
+    def floor_k(k):  # floor(k (P + sqrt D) / Q) for k >= 1, exact
+        s = isqrt(k * k * D)
+        return (k * P + s) // Q if Q > 0 else (k * P + s + 1) // Q
+
+    f = floor_k(1)
+    assert f == r["floor"]
+    word = "".join(str((floor_k(n + 1) - (n + 1) * f) - (floor_k(n) - n * f)) for n in range(1, 61))
+    assert r["word"] == word
+    for p, q in r["christoffel_convergents"]:
+        assert zdg.christoffel(p, q)["word"] == "0" + word[: p + q - 2] + "1"
