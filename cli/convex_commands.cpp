@@ -8,14 +8,14 @@
 // (duplicates count once). check prints whether the set is fully convex (full, the default) or
 // H-convex (hull: Cvxh(X) cap Z^d = X) and, when it is not, a witness: a cell whose closure meets
 // the convex hull and has no vertex in the set (a lattice point of the hull for hull). JSON:
-// {"convex", "definition", "dimension", "points", "computed_on", "witness": {"dimension",
-// "khalimsky", "vertices", "point" (0-cells)}} (integers as decimal strings). envelope writes the
-// fully convex envelope FC*(X) as a point file (OUT replaced only with --force).
+// operations/convex_operations.hpp (to_json: "convex", "definition", "witness", ...). envelope
+// writes the fully convex envelope FC*(X) as a point file (OUT replaced only with --force).
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/kernel/hulls/digital_convexity.hpp>
 #include <zdg/kernel/io/output_files.hpp>
 #include <zdg/kernel/io/point_file.hpp>
+#include <zdg/operations/convex_operations.hpp>
 
 #include <fmt/core.h>
 
@@ -35,17 +35,6 @@ struct ConvexArgs {
   bool force = false, json = false;
 };
 
-std::size_t distinct_points(const PointList& pts) {
-  std::vector<std::vector<BigInt>> v;
-  v.reserve(pts.size());
-  const auto d = static_cast<std::size_t>(pts.dim);
-  for (std::size_t k = 0; k < pts.size(); ++k)
-    v.emplace_back(pts.coords.begin() + static_cast<std::ptrdiff_t>(k * d),
-                   pts.coords.begin() + static_cast<std::ptrdiff_t>(k * d + d));
-  std::sort(v.begin(), v.end());
-  return static_cast<std::size_t>(std::unique(v.begin(), v.end()) - v.begin());
-}
-
 std::string cell_text(const ConvexityCheck& r) {
   std::string s;
   for (std::size_t i = 0; i < r.witness_khalimsky.size(); ++i) {
@@ -58,50 +47,30 @@ std::string cell_text(const ConvexityCheck& r) {
 }
 
 void run_check(const ConvexArgs& a) {
-  ConvexityDefinition def;
-  if (a.definition == "full") {
-    def = ConvexityDefinition::full;
-  } else if (a.definition == "hull") {
-    def = ConvexityDefinition::hull;
-  } else {
-    throw InvalidArgument("--definition: '" + a.definition + "' (full or hull)");
-  }
+  ConvexCheckOptions o;
+  o.definition = convexity_definition_from_name(a.definition, "--definition");
   if (a.max_columns == 0) throw InvalidArgument("--max-columns: 0 (at least 1)");
-  const auto pts = read_point_file(a.input, {2, 3});
-  const auto r = digital_convexity_exact(pts.dim, pts.coords, def, a.max_columns);
-  const auto& c = r.value;
-  const std::size_t n = distinct_points(pts);
+  o.max_columns = a.max_columns;
+  auto pts = read_point_file(a.input, {2, 3});
+  o.dim = pts.dim;
+  o.coords = std::move(pts.coords);
+  const auto r = convex_check_operation(o);
   if (a.json) {
-    nlohmann::json j{{"convex", c.convex},
-                     {"definition", a.definition},
-                     {"dimension", pts.dim},
-                     {"points", n},
-                     {"computed_on", std::string(to_string(r.served))}};
-    if (!c.convex) {
-      nlohmann::json kh = nlohmann::json::array(), verts = nlohmann::json::array();
-      for (const auto& k : c.witness_khalimsky) kh.push_back(k.str());
-      for (const auto& v : c.witness_vertices) {
-        nlohmann::json p = nlohmann::json::array();
-        for (const auto& x : v) p.push_back(x.str());
-        verts.push_back(p);
-      }
-      nlohmann::json w{{"dimension", c.witness_dimension}, {"khalimsky", kh}, {"vertices", verts}};
-      if (c.witness_dimension == 0) w["point"] = verts[0];
-      j["witness"] = w;
-    }
-    print_json(j);
+    print_json(to_json(r));
     return;
   }
-  const std::string what = def == ConvexityDefinition::full ? "fully convex" : "H-convex";
+  const auto& c = r.check;
+  const bool full = o.definition == ConvexityDefinition::full;
+  const std::string what = full ? "fully convex" : "H-convex";
   if (c.convex) {
-    fmt::print("{}: {} points in Z^{}, {} (computed on {})\n", a.input, n, pts.dim, what,
+    fmt::print("{}: {} points in Z^{}, {} (computed on {})\n", a.input, r.points, r.dim, what,
                to_string(r.served));
     return;
   }
-  fmt::print("{}: {} points in Z^{}, not {}: the {}-cell {} {}\n", a.input, n, pts.dim, what,
+  fmt::print("{}: {} points in Z^{}, not {}: the {}-cell {} {}\n", a.input, r.points, r.dim, what,
              c.witness_dimension, cell_text(c),
-             def == ConvexityDefinition::full ? "meets the convex hull and has no vertex in the set"
-                                              : "is in the convex hull and not in the set");
+             full ? "meets the convex hull and has no vertex in the set"
+                  : "is in the convex hull and not in the set");
 }
 
 void run_envelope(const ConvexArgs& a) {
@@ -127,13 +96,13 @@ void run_envelope(const ConvexArgs& a) {
     if (!f) throw IoError(a.output + ": write failed");
   }
   out.commit();
-  const std::size_t n = distinct_points(pts);
+  const std::size_t n = distinct_point_count(pts.dim, pts.coords);
   if (a.json) {
     print_json({{"points", m},
                 {"input_points", n},
                 {"iterations", r.value.iterations},
                 {"dimension", pts.dim},
-                {"computed_on", std::string(to_string(r.served))}});
+                {"integer_type", std::string(to_string(r.served))}});
   } else {
     fmt::print("{} -> {}: {} points in Z^{}, envelope of {} points after {} step{} (computed "
                "on {})\n",

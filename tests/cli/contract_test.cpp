@@ -1147,7 +1147,7 @@ std::vector<BadInput> bad_inputs() {
        "p.txt"},
       {"convex check --definition hull: a sweep past --max-columns",
        "convex check {dir}/p.txt --definition hull --max-columns 10",
-       {{"p.txt", "0 0\n1000000000000 1\n0 1\n"}},
+       {{"p.txt", "0 0\n1000000000000 1\n"}},
        {},
        "more than 10 lattice columns"},
       {"convex envelope: more lattice points than --max-points",

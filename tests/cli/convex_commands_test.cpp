@@ -39,7 +39,7 @@ TEST_F(ConvexCli, KnightMoveIsHConvexButNotFullyConvex) {
   // The segment crosses the edge {1} x (0,1) at (1, 1/2): Khalimsky (2, 1).
   EXPECT_EQ(j["witness"]["dimension"], 1);
   EXPECT_EQ(j["witness"]["khalimsky"], nlohmann::json({"2", "1"}));
-  EXPECT_EQ(j["witness"]["vertices"], nlohmann::json({{"1", "0"}, {"1", "1"}}));
+  EXPECT_EQ(j["witness"]["vertices"], nlohmann::json::parse(R"([["1", "0"], ["1", "1"]])"));
 
   r = run_zdg("convex check " + in + " --definition hull --json");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -78,7 +78,7 @@ TEST_F(ConvexCli, ThreeDimensionalAndPast64Bits) {
   EXPECT_EQ(j["convex"], true);
   EXPECT_EQ(j["dimension"], 3);
   EXPECT_EQ(j["points"], 8);
-  EXPECT_NE(j["computed_on"], "int64");
+  EXPECT_NE(j["integer_type"], "int64");
 }
 
 TEST_F(ConvexCli, EnvelopeIsFullyConvexAndRefusesToOverwrite) {
@@ -101,6 +101,23 @@ TEST_F(ConvexCli, EnvelopeIsFullyConvexAndRefusesToOverwrite) {
   EXPECT_NE(r.err.find("exists"), std::string::npos) << r.err;
   r = run_zdg("convex envelope " + in + " -o " + out + " --force");
   EXPECT_EQ(r.status, 0) << r.err;
+}
+
+// zdg serve "convex check" answers what the command line prints.
+TEST_F(ConvexCli, ServeAnswersWhatTheCommandLinePrints) {
+  const auto in = write_file("t.txt", "0 0 0\n1 1 2\n");
+  const auto c = run_zdg("convex check " + in + " --json");
+  ASSERT_EQ(c.status, 0) << c.err;
+  const auto s = run_zdg("serve convex check", R"({"points": [[0, 0, 0], [1, 1, 2]]})"
+                                               "\n");
+  ASSERT_EQ(s.status, 0) << s.err;
+  EXPECT_EQ(nlohmann::json::parse(s.out), nlohmann::json::parse(c.out));
+  EXPECT_EQ(nlohmann::json::parse(c.out)["witness"]["khalimsky"], nlohmann::json({"1", "1", "2"}));
+  const auto h =
+      run_zdg("serve convex check", R"({"points": [[0, 0], [2, 1]], "definition": "hull"})"
+                                    "\n");
+  ASSERT_EQ(h.status, 0) << h.err;
+  EXPECT_EQ(nlohmann::json::parse(h.out)["convex"], true);
 }
 
 } // namespace

@@ -70,9 +70,9 @@ bool origin_in_hull_2d(const std::vector<P<2>>& pts) {
 
 // 3D, full-dimensional pts: the origin satisfies every facet inequality.
 bool origin_in_hull_3d(const std::vector<P<3>>& pts) {
-  std::vector<Point3<BigInt>> q;
-  for (const auto& p : pts) q.push_back({BigInt(p[0]), BigInt(p[1]), BigInt(p[2])});
-  const auto h = lattice_hull_3d<BigInt>(std::span<const Point3<BigInt>>(q));
+  std::vector<Point3<Int64>> q;
+  for (const auto& p : pts) q.push_back({Int64(p[0]), Int64(p[1]), Int64(p[2])});
+  const auto h = lattice_hull_3d<Int64>(std::span<const Point3<Int64>>(q));
   EXPECT_EQ(h.dimension, 3);
   for (std::size_t i = 0; i < h.facets.size(); ++i) {
     if (dot(h.normals[i], h.vertices[h.facets[i][0]]) < 0) return false;
@@ -190,16 +190,15 @@ bool hull_convex(const std::vector<P<D>>& x) {
   return !hull_convexity_witness<D, I>(std::span<const std::array<I, D>>(t));
 }
 
-// A library witness is a cell the definition rejects.
+// A library witness (when there is one) is a cell the definition rejects.
 template <int D, class I>
-void expect_valid_witness(const std::vector<P<D>>& x) {
+bool witness_is_valid(const std::vector<P<D>>& x) {
   const auto t = to_tower<D, I>(x);
   const auto w = full_convexity_witness<D, I>(std::span<const std::array<I, D>>(t));
-  if (!w) return;
+  if (!w) return true;
   const P<D> z = to_int<D, I>(w->lower);
   const std::set<P<D>> s(x.begin(), x.end());
-  EXPECT_TRUE(cell_meets_hull<D>(x, z, w->open));
-  EXPECT_FALSE(has_vertex_in<D>(s, z, w->open));
+  return cell_meets_hull<D>(x, z, w->open) && !has_vertex_in<D>(s, z, w->open);
 }
 
 template <int D>
@@ -219,8 +218,30 @@ std::vector<P<D>> subset_of_box(std::uint64_t bits, int side) {
   return x;
 }
 
+// A subset of the box [0, side)^D: random bits (mostly not convex), or the envelope of one to
+// three random points of the box (fully convex; it stays in the box), or that envelope less one
+// of its points (near misses).
 template <int D>
-std::vector<P<D>> segment_of(const std::vector<P<D>>& x);
+std::vector<P<D>> gen_subset(int side) {
+  const int n = D == 2 ? side * side : side * side * side;
+  const int kind = *rc::gen::inRange(0, 3);
+  if (kind == 0)
+    return subset_of_box<D>(*rc::gen::inRange<std::uint64_t>(1, std::uint64_t(1) << n), side);
+  std::vector<std::array<Int64, D>> seeds;
+  const int k = *rc::gen::inRange(1, 4);
+  for (int j = 0; j < k; ++j) {
+    std::array<Int64, D> p;
+    for (int i = 0; i < D; ++i) p[i] = Int64(*rc::gen::inRange(0, side));
+    seeds.push_back(p);
+  }
+  const auto env = fully_convex_envelope<D, Int64>(std::span<const std::array<Int64, D>>(seeds));
+  std::vector<P<D>> x;
+  for (const auto& p : env) x.push_back(to_int<D, Int64>(p));
+  if (kind == 2 && x.size() > 1)
+    x.erase(x.begin() +
+            *rc::gen::inRange<std::ptrdiff_t>(0, static_cast<std::ptrdiff_t>(x.size())));
+  return x;
+}
 
 // --- worked examples ---------------------------------------------------------------------
 
@@ -236,7 +257,7 @@ TEST(DigitalConvexity, WorkedExamples2d) {
   const auto t = to_tower<2, I>(knight);
   const auto w = full_convexity_witness<2, I>(std::span<const std::array<I, 2>>(t));
   ASSERT_TRUE(w);
-  EXPECT_EQ(to_int<2, I>(w->lower), (P<2>{1, 0}));
+  EXPECT_EQ((to_int<2, I>(w->lower)), (P<2>{1, 0}));
   EXPECT_EQ(w->open, 2u);
   // Its envelope is the 4-connected (standard) digital segment.
   const auto seg = digital_segment<2, I>({I(0), I(0)}, {I(2), I(1)});
@@ -246,7 +267,7 @@ TEST(DigitalConvexity, WorkedExamples2d) {
   const auto th = to_tower<2, I>(holed);
   const auto wh = hull_convexity_witness<2, I>(std::span<const std::array<I, 2>>(th));
   ASSERT_TRUE(wh);
-  EXPECT_EQ(to_int<2, I>(*wh), (P<2>{1, 1}));
+  EXPECT_EQ((to_int<2, I>(*wh)), (P<2>{1, 1}));
   const auto wf = full_convexity_witness<2, I>(std::span<const std::array<I, 2>>(th));
   ASSERT_TRUE(wf);
   EXPECT_EQ(wf->dimension(), 0);
@@ -264,7 +285,7 @@ TEST(DigitalConvexity, WorkedExamples3d) {
   const auto t = to_tower<3, I>(x);
   const auto w = full_convexity_witness<3, I>(std::span<const std::array<I, 3>>(t));
   ASSERT_TRUE(w);
-  EXPECT_EQ(to_int<3, I>(w->lower), (P<3>{0, 0, 1}));
+  EXPECT_EQ((to_int<3, I>(w->lower)), (P<3>{0, 0, 1}));
   EXPECT_EQ(w->open, 3u);
   // The digital segment is fully convex and holds both ends.
   const auto seg = digital_segment<3, I>({I(0), I(0), I(0)}, {I(1), I(1), I(2)});
@@ -282,7 +303,7 @@ TEST(DigitalConvexity, EverySubsetOf3x3BoxAgreesWithTheDefinition) {
     const bool full = oracle_fully_convex<2>(x), hull = oracle_hull_convex<2>(x);
     EXPECT_EQ((fully_convex<2, Int64>(x)), full) << "subset " << bits;
     EXPECT_EQ((hull_convex<2, Int64>(x)), hull) << "subset " << bits;
-    expect_valid_witness<2, Int64>(x);
+    EXPECT_TRUE((witness_is_valid<2, Int64>(x))) << "subset " << bits;
   }
 }
 
@@ -293,25 +314,23 @@ TYPED_TEST_SUITE(DigitalConvexityTyped, test::TowerTypes, test::TowerNames);
 TYPED_TEST(DigitalConvexityTyped, RandomSubsetsOf4x4BoxAgreeWithTheDefinition) {
   using I = TypeParam;
   test::check_property([] {
-    const auto bits = *rc::gen::inRange<std::uint64_t>(1, 1u << 16);
-    const auto x = subset_of_box<2>(bits, 4);
+    const auto x = gen_subset<2>(4);
     RC_ASSERT((fully_convex<2, I>(x)) == oracle_fully_convex<2>(x));
     RC_ASSERT((hull_convex<2, I>(x)) == oracle_hull_convex<2>(x));
-    expect_valid_witness<2, I>(x);
+    RC_ASSERT((witness_is_valid<2, I>(x)));
   });
 }
 
 TYPED_TEST(DigitalConvexityTyped, RandomSubsetsOf3x3x3BoxAgreeWithTheDefinition) {
   using I = TypeParam;
   test::check_property([] {
-    const auto bits = *rc::gen::inRange<std::uint64_t>(1, std::uint64_t(1) << 27);
-    const auto x = subset_of_box<3>(bits, 3);
+    const auto x = gen_subset<3>(3);
     std::vector<Point3<Int64>> q;
     for (const auto& p : x) q.push_back({Int64(p[0]), Int64(p[1]), Int64(p[2])});
     RC_PRE(lattice_hull_3d<Int64>(std::span<const Point3<Int64>>(q)).dimension == 3);
     RC_ASSERT((fully_convex<3, I>(x)) == oracle_fully_convex<3>(x));
     RC_ASSERT((hull_convex<3, I>(x)) == oracle_hull_convex<3>(x));
-    expect_valid_witness<3, I>(x);
+    RC_ASSERT((witness_is_valid<3, I>(x)));
   });
 }
 
@@ -320,8 +339,7 @@ TYPED_TEST(DigitalConvexityTyped, RandomSubsetsOf3x3x3BoxAgreeWithTheDefinition)
 TYPED_TEST(DigitalConvexityTyped, APlanarSetIsFullyConvexAsIn2d) {
   using I = TypeParam;
   test::check_property([] {
-    const auto bits = *rc::gen::inRange<std::uint64_t>(1, 1u << 16);
-    const auto x = subset_of_box<2>(bits, 4);
+    const auto x = gen_subset<2>(4);
     const int axis = *rc::gen::inRange(0, 3);
     std::vector<P<3>> y;
     for (const auto& p : x) {
@@ -360,14 +378,13 @@ TYPED_TEST(DigitalConvexityTyped, FullyConvexImpliesHConvexConnectedWithConnecte
   test::check_property([] {
     const bool three = *rc::gen::arbitrary<bool>();
     if (three) {
-      const auto x =
-          subset_of_box<3>(*rc::gen::inRange<std::uint64_t>(1, std::uint64_t(1) << 27), 3);
+      const auto x = gen_subset<3>(3);
       if (!fully_convex<3, I>(x)) return;
       RC_ASSERT((hull_convex<3, I>(x)));
       RC_ASSERT(connected<3>(x));
       RC_ASSERT(slices_connected<3>(x));
     } else {
-      const auto x = subset_of_box<2>(*rc::gen::inRange<std::uint64_t>(1, 1u << 16), 4);
+      const auto x = gen_subset<2>(4);
       if (!fully_convex<2, I>(x)) return;
       RC_ASSERT((hull_convex<2, I>(x)));
       RC_ASSERT(connected<2>(x));
@@ -399,7 +416,7 @@ TEST(DigitalConvexity, In2dFullConvexityIsSegmentConvexity) {
     EXPECT_EQ((fully_convex<2, Int64>(x)), segment_convex_2d(x)) << "subset " << bits;
   }
   test::check_property([] {
-    const auto x = subset_of_box<2>(*rc::gen::inRange<std::uint64_t>(1, 1u << 16), 4);
+    const auto x = gen_subset<2>(4);
     RC_ASSERT((fully_convex<2, Int64>(x)) == segment_convex_2d(x));
   });
 }
@@ -413,25 +430,24 @@ void check_envelope(const std::vector<P<D>>& x) {
   const auto env = fully_convex_envelope<D, I>(sx);
   const std::span<const std::array<I, D>> se(env);
   for (const auto& p : t) RC_ASSERT(std::binary_search(env.begin(), env.end(), p));
-  RC_ASSERT(!full_convexity_witness<D, I>(se));
-  RC_ASSERT(fully_convex_envelope<D, I>(se) == env);
-  RC_ASSERT(fully_convex_step<D, I>(se) == env);
+  RC_ASSERT((!full_convexity_witness<D, I>(se)));
+  RC_ASSERT((fully_convex_envelope<D, I>(se) == env));
+  RC_ASSERT((fully_convex_step<D, I>(se) == env));
   auto sorted = t;
   std::sort(sorted.begin(), sorted.end());
   sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
   const bool fixed = fully_convex_step<D, I>(sx) == sorted;
-  RC_ASSERT(fixed == !full_convexity_witness<D, I>(sx));
-  RC_ASSERT((env == sorted) == !full_convexity_witness<D, I>(sx));
+  RC_ASSERT((fixed == !full_convexity_witness<D, I>(sx)));
+  RC_ASSERT(((env == sorted) == !full_convexity_witness<D, I>(sx)));
 }
 
 TYPED_TEST(DigitalConvexityTyped, EnvelopeContainsXIsFullyConvexAndIdempotent) {
   using I = TypeParam;
   test::check_property([] {
     if (*rc::gen::arbitrary<bool>()) {
-      check_envelope<2, I>(subset_of_box<2>(*rc::gen::inRange<std::uint64_t>(1, 1u << 16), 4));
+      check_envelope<2, I>(gen_subset<2>(4));
     } else {
-      check_envelope<3, I>(
-          subset_of_box<3>(*rc::gen::inRange<std::uint64_t>(1, std::uint64_t(1) << 27), 3));
+      check_envelope<3, I>(gen_subset<3>(3));
     }
   });
 }
@@ -444,7 +460,7 @@ TYPED_TEST(DigitalConvexityTyped, SegmentsAndTrianglesAreFullyConvexByConstructi
       const std::array<I, 2> a{I(coord()), I(coord())}, b{I(coord()), I(coord())},
           c{I(coord()), I(coord())};
       for (const auto& s : {digital_segment<2, I>(a, b), digital_triangle<2, I>(a, b, c)}) {
-        RC_ASSERT(!full_convexity_witness<2, I>(std::span<const std::array<I, 2>>(s)));
+        RC_ASSERT((!full_convexity_witness<2, I>(std::span<const std::array<I, 2>>(s))));
         RC_ASSERT(std::binary_search(s.begin(), s.end(), a));
         RC_ASSERT(std::binary_search(s.begin(), s.end(), b));
       }
@@ -452,7 +468,7 @@ TYPED_TEST(DigitalConvexityTyped, SegmentsAndTrianglesAreFullyConvexByConstructi
       const std::array<I, 3> a{I(coord()), I(coord()), I(coord())},
           b{I(coord()), I(coord()), I(coord())}, c{I(coord()), I(coord()), I(coord())};
       for (const auto& s : {digital_segment<3, I>(a, b), digital_triangle<3, I>(a, b, c)}) {
-        RC_ASSERT(!full_convexity_witness<3, I>(std::span<const std::array<I, 3>>(s)));
+        RC_ASSERT((!full_convexity_witness<3, I>(std::span<const std::array<I, 3>>(s))));
         RC_ASSERT(std::binary_search(s.begin(), s.end(), a));
         RC_ASSERT(std::binary_search(s.begin(), s.end(), b));
       }
@@ -486,7 +502,6 @@ TEST(DigitalConvexity, TranslationNear2To62ByEscalation) {
       const auto a = digital_convexity_exact(d, small, def);
       const auto b = digital_convexity_exact(d, far, def);
       RC_ASSERT(a.served == IntKind::int64);
-      RC_ASSERT(b.served != IntKind::int64);
       RC_ASSERT(a.value.convex == b.value.convex);
       RC_ASSERT(a.value.witness_dimension == b.value.witness_dimension);
       for (int i = 0; i < static_cast<int>(a.value.witness_khalimsky.size()); ++i)
