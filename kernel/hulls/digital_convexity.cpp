@@ -36,7 +36,7 @@ I dot_(const Pt<D, I>& u, const Pt<D, I>& v) {
 
 template <int D, TowerInt I>
 void sort_unique(std::vector<Pt<D, I>>& v) {
-  std::sort(v.begin(), v.end());
+  if (!std::is_sorted(v.begin(), v.end())) std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
 }
 
@@ -119,6 +119,47 @@ HalfSpaces<3, I> half_spaces(std::span<const Pt<3, I>> pts) {
     }
   }
   return h;
+}
+
+// The vertices of Cvxh(pts) (a subset of pts with the same hull).
+template <TowerInt I>
+std::vector<Pt<2, I>> hull_vertices(std::span<const Pt<2, I>> pts) {
+  std::vector<Point2<I>> q;
+  q.reserve(pts.size());
+  for (const auto& p : pts) q.push_back({p[0], p[1]});
+  std::vector<Pt<2, I>> out;
+  for (const auto& v : lattice_hull_2d<I>(std::span<const Point2<I>>(q))) out.push_back({v.x, v.y});
+  return out;
+}
+
+template <TowerInt I>
+std::vector<Pt<3, I>> hull_vertices(std::span<const Pt<3, I>> pts) {
+  std::vector<Point3<I>> q;
+  q.reserve(pts.size());
+  for (const auto& p : pts) q.push_back({p[0], p[1], p[2]});
+  std::vector<Pt<3, I>> out;
+  for (const auto& v : lattice_hull_3d<I>(std::span<const Point3<I>>(q)).vertices)
+    out.push_back(arr(v));
+  return out;
+}
+
+// Cvxh(X + U_mask) = Cvxh(V + U_mask) for V the vertices of Cvxh(X): the half-spaces from the
+// few points of V + U_mask.
+template <int D, TowerInt I>
+HalfSpaces<D, I> dilated_half_spaces(const std::vector<Pt<D, I>>& v, unsigned mask) {
+  std::vector<Pt<D, I>> pts;
+  for (const auto& p : v) {
+    for (unsigned u = 0; u < (1u << D); ++u) {
+      if ((u & mask) != u) continue;
+      auto q = p;
+      for (int i = 0; i < D; ++i) {
+        if (u & (1u << i)) q[i] += 1;
+      }
+      pts.push_back(q);
+    }
+  }
+  sort_unique<D, I>(pts);
+  return half_spaces<I>(std::span<const Pt<D, I>>(pts));
 }
 
 // The index of a half-space that p violates (the hint first), or -1 when p is in the hull.
@@ -216,8 +257,7 @@ void for_each_column(const std::vector<Pt<D, I>>& s, std::uint64_t& budget, std:
 // A lattice point of Cvxh(s) \ s, s sorted without duplicates.
 template <int D, TowerInt I>
 std::optional<Pt<D, I>> hull_witness_sorted(const std::vector<Pt<D, I>>& s,
-                                            std::uint64_t max_columns) {
-  const auto h = half_spaces<I>(std::span<const Pt<D, I>>(s));
+                                            const HalfSpaces<D, I>& h, std::uint64_t max_columns) {
   std::optional<Pt<D, I>> found;
   std::size_t k = 0, hint_lo = 0, hint_hi = 0;
   std::uint64_t budget = max_columns;
@@ -305,21 +345,49 @@ std::vector<unsigned> masks_by_dimension() {
 // Cvxh(x) on x_i = g between a (below) and b (above) lies in a cell whose vertices all have
 // x_i = g.
 template <int D, TowerInt I>
+std::optional<GridCell<D, I>> gap_cell(const Pt<D, I>& a, const Pt<D, I>& b, int axis) {
+  const I g = a[axis] + 1, den = b[axis] - a[axis], t = g - a[axis];
+  Pt<D, I> num;
+  for (int j = 0; j < D; ++j) num[j] = a[j] * den + t * (b[j] - a[j]);
+  return cell_of<D, I>(num, den);
+}
+
+template <int D, TowerInt I>
 std::optional<GridCell<D, I>> axis_gap_witness(const std::vector<Pt<D, I>>& x) {
+  const std::size_t n = x.size();
   for (int axis = 0; axis < D; ++axis) {
-    std::vector<std::size_t> order(x.size());
-    for (std::size_t i = 0; i < x.size(); ++i) order[i] = i;
+    std::size_t lo = 0, hi = 0; // the points of least and greatest coordinate
+    for (std::size_t i = 1; i < n; ++i) {
+      if (x[i][axis] < x[lo][axis]) lo = i;
+      if (x[i][axis] > x[hi][axis]) hi = i;
+    }
+    const I span = x[hi][axis] - x[lo][axis];
+    if (span < I(static_cast<std::int64_t>(n))) {
+      // At most n values: mark them, and at a gap take the nearest points on both sides.
+      const I base = x[lo][axis];
+      const auto index = [&](const Pt<D, I>& p) {
+        return static_cast<std::size_t>(int_cast<Int64>(I(p[axis] - base)).value());
+      };
+      const std::size_t m = index(x[hi]) + 1;
+      std::vector<std::size_t> any(m, n);
+      for (std::size_t i = 0; i < n; ++i) any[index(x[i])] = i;
+      for (std::size_t k = 1; k < m; ++k) {
+        if (any[k] != n) continue;
+        std::size_t b = k;
+        while (any[b] == n) ++b;
+        return gap_cell<D, I>(x[any[k - 1]], x[any[b]], axis);
+      }
+      continue;
+    }
+    // More than n values apart: there is a gap; sort to find one.
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
     std::sort(order.begin(), order.end(),
               [&](std::size_t u, std::size_t v) { return x[u][axis] < x[v][axis]; });
-    for (std::size_t i = 1; i < order.size(); ++i) {
+    for (std::size_t i = 1; i < n; ++i) {
       const auto& a = x[order[i - 1]];
       const auto& b = x[order[i]];
-      if (b[axis] > a[axis] + 1) {
-        const I g = a[axis] + 1, den = b[axis] - a[axis], t = g - a[axis];
-        Pt<D, I> num;
-        for (int j = 0; j < D; ++j) num[j] = a[j] * den + t * (b[j] - a[j]);
-        return cell_of<D, I>(num, den);
-      }
+      if (b[axis] > a[axis] + 1) return gap_cell<D, I>(a, b, axis);
     }
   }
   return std::nullopt;
@@ -396,7 +464,7 @@ std::optional<std::array<I, D>> hull_convexity_witness(std::span<const std::arra
   if (x.empty()) throw InvalidArgument("digital convexity: an empty set of points");
   std::vector<Pt<D, I>> s(x.begin(), x.end());
   sort_unique<D, I>(s);
-  return hull_witness_sorted<D, I>(s, max_columns);
+  return hull_witness_sorted<D, I>(s, half_spaces<I>(std::span<const Pt<D, I>>(s)), max_columns);
 }
 
 template <int D, TowerInt I>
@@ -410,8 +478,10 @@ std::optional<GridCell<D, I>> full_convexity_witness(std::span<const std::array<
   }
   // Now every lattice column of each sweep has a point: the sweeps are bounded by the input.
   const auto sets = dilations<D, I>(s);
+  const auto hull_v = hull_vertices<I>(std::span<const Pt<D, I>>(s));
   for (unsigned mask : masks_by_dimension<D>()) {
-    if (auto w = hull_witness_sorted<D, I>(sets[mask], UINT64_MAX)) {
+    const auto h = dilated_half_spaces<D, I>(hull_v, mask);
+    if (auto w = hull_witness_sorted<D, I>(sets[mask], h, UINT64_MAX)) {
       GridCell<D, I> c{*w, mask};
       for (int i = 0; i < D; ++i) {
         if (mask & (1u << i)) c.lower[i] -= 1;
@@ -432,8 +502,9 @@ std::vector<std::array<I, D>> fully_convex_step(std::span<const std::array<I, D>
   // star[mask]: the lowest vertices of the cells of Star(Cvxh(Z)) open along mask, sorted.
   std::vector<std::vector<Pt<D, I>>> star(1u << D);
   std::uint64_t budget = max_points;
+  const auto hull_v = hull_vertices<I>(std::span<const Pt<D, I>>(s));
   for (unsigned mask = 0; mask < (1u << D); ++mask) {
-    const auto h = half_spaces<I>(std::span<const Pt<D, I>>(sets[mask]));
+    const auto h = dilated_half_spaces<D, I>(hull_v, mask);
     auto& out = star[mask];
     for_each_column<D, I>(sets[mask], budget, max_points, [&](const std::array<I, D - 1>& q) {
       const auto iv = column_interval<D, I>(h, q);
