@@ -247,7 +247,8 @@ std::vector<P<D>> gen_subset(int side) {
 
 TEST(DigitalConvexity, WorkedExamples2d) {
   using I = Int64;
-  // Two diagonal neighbours: fully convex (the open square has both as vertices).
+  // Two diagonal neighbours: fully convex (the open square has both as vertices), though not
+  // 4-connected: in 2D full convexity is not "H-convex and 4-connected".
   EXPECT_TRUE((fully_convex<2, I>({{0, 0}, {1, 1}})));
   // {(0,0), (2,1)}: H-convex (no lattice point inside the segment) but the segment crosses the
   // vertical edge {1} x (0,1) at (1, 1/2), whose vertices (1,0), (1,1) are not in the set.
@@ -305,6 +306,22 @@ TEST(DigitalConvexity, EverySubsetOf3x3BoxAgreesWithTheDefinition) {
     EXPECT_EQ((hull_convex<2, Int64>(x)), hull) << "subset " << bits;
     EXPECT_TRUE((witness_is_valid<2, Int64>(x))) << "subset " << bits;
   }
+}
+
+// All 65536 subsets of the 4x4 box: among them the 40 that fail only at the 1-cells along x
+// (X + U_x is the only dilation that is not H-convex, {(1,0), (0,2)} for one) and their
+// transposes.
+TEST(DigitalConvexity, EverySubsetOf4x4BoxAgreesWithTheDefinition) {
+  int fully = 0;
+  for (std::uint64_t bits = 1; bits < (1u << 16); ++bits) {
+    const auto x = subset_of_box<2>(bits, 4);
+    const bool full = fully_convex<2, Int64>(x);
+    fully += full;
+    EXPECT_EQ(full, oracle_fully_convex<2>(x)) << "subset " << bits;
+    EXPECT_EQ((hull_convex<2, Int64>(x)), oracle_hull_convex<2>(x)) << "subset " << bits;
+    EXPECT_TRUE((witness_is_valid<2, Int64>(x))) << "subset " << bits;
+  }
+  EXPECT_GT(fully, 0);
 }
 
 template <class I>
