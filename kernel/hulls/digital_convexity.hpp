@@ -26,20 +26,21 @@
 //   A digital segment [a, b] = FC*({a, b}) and triangle FC*({a, b, c}) are fully convex by
 //   construction.
 //
-// Algorithm. The hull of each X + U_I (lattice_hull_2d, lattice_hull_3d: any dimension,
-//   degenerate ones included) as integer half-spaces a . p <= b; the lattice columns of its
-//   projection along the last axis (3D: the lattice points of the 2D hull of the projected
-//   points); in each column the points of the set must be an interval [lo, hi] with lo - 1 and
-//   hi + 1 outside the hull (a column without points: the exact integer interval of the hull
-//   there must be empty). Before that, full convexity checks what bounds the sweep: the
-//   projection of X on each axis is an interval (a gap g gives the witness cell of the point of
-//   Cvxh(X) on x_i = g), and in 3D every lattice point of the hull of the projection on (x, y)
-//   has a point of X above it (else the witness is the cell above it containing a point of
-//   Cvxh(X)). Then every column has a point of X and the cost is O(2^d (n log n + hull)) for n
-//   points; the H-convexity test alone sweeps the columns of its bounding projection and stops
-//   past `max_columns` (InvalidArgument): {(0, 0), (10^12, 1)} is H-convex with 10^12 columns.
-//   The envelope enumerates the lattice points of each Cvxh(Z + U_I) (O(points + columns)
-//   each) and stops past `max_points` (InvalidArgument).
+// Algorithm. The vertices V of Cvxh(X) once (lattice_hull_2d, lattice_hull_3d: any dimension,
+//   degenerate ones included); Cvxh(X + U_I) = Cvxh(V + U_I) as integer half-spaces a . p <= b;
+//   X + U_I by merging sorted lists; the lattice columns of its projection along the last axis
+//   (3D: the lattice points of the 2D hull of the projected points); in each column the points
+//   of the set must be an interval [lo, hi] with lo - 1 and hi + 1 outside the hull (the
+//   half-space that excluded the previous column's point tried first; in a column without
+//   points the exact integer interval of the hull must be empty). Before that, full convexity
+//   checks what bounds the sweep: the projection of X on each axis is an interval (a gap g gives
+//   the witness cell of the point of Cvxh(X) on x_i = g), and in 3D every lattice point of the
+//   hull of the projection on (x, y) has a point of X above it (else the witness is the cell
+//   above it containing a point of Cvxh(X)). Then the columns are O(n) and the cost is
+//   O(2^d n + n log n + hull) for n points. The H-convexity test alone sweeps the columns of its
+//   projection and stops past `max_columns` (InvalidArgument): {(0, 0), (10^12, 1)} is H-convex
+//   with 10^12 columns. The envelope enumerates the lattice points of each Cvxh(Z + U_I)
+//   (O(points + columns) each) and stops past `max_points` (InvalidArgument).
 // Width: half-spaces a . p <= b with a from cross products of coordinate differences:
 //   about 3 b + 6 bits for b-bit coordinates in 3D (2 b + 3 in 2D); f<D, I> throws OverflowError
 //   past I, the _exact functions escalate Int64 -> Int128 -> BigInt (arith/escalate.hpp).
