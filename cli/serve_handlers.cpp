@@ -33,6 +33,7 @@
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/voronoi_map.hpp>
 #include <zdg/operations/arith_operations.hpp>
+#include <zdg/operations/convex_operations.hpp>
 #include <zdg/operations/dss_operations.hpp>
 #include <zdg/operations/surface_operations.hpp>
 
@@ -523,6 +524,33 @@ json serve_topology_simple(const json& j) {
           {"count", std::to_string(count)}};
 }
 
+// "convex check": {"points": [[x, y] or [x, y, z], ...], "definition": "full" | "hull",
+// "max_columns": N}, answered with the --json form of zdg convex check.
+json serve_convex_check(const json& j) {
+  if (!j.contains("points") || !j.at("points").is_array() || j.at("points").empty()) {
+    throw InvalidArgument("request: 'points' is not a non-empty list of [x, y] or [x, y, z]");
+  }
+  ConvexCheckOptions o;
+  o.dim = 0;
+  for (const auto& e : j.at("points")) {
+    if (!e.is_array() || (e.size() != 2 && e.size() != 3) ||
+        (o.dim != 0 && static_cast<int>(e.size()) != o.dim)) {
+      throw InvalidArgument("request: a point is not [x, y] or [x, y, z] like the first");
+    }
+    o.dim = static_cast<int>(e.size());
+    for (const auto& c : e) {
+      auto v = json_integer(c);
+      if (!v) throw InvalidArgument("request: a coordinate is not an integer");
+      o.coords.push_back(*v);
+    }
+  }
+  if (j.contains("definition"))
+    o.definition =
+        convexity_definition_from_name(text_field(j, "definition"), "request: definition");
+  o.max_columns = bound_field(j, "max_columns", kConvexityMaxColumns);
+  return to_json(convex_check_operation(o));
+}
+
 using Handler = json (*)(const json&);
 
 const std::map<std::string, Handler>& handlers() {
@@ -548,7 +576,8 @@ const std::map<std::string, Handler>& handlers() {
       {"hull halfplanes", serve_hull_halfplanes},
       {"topology simple", serve_topology_simple},
       {"plane recognize", serve_plane_recognize},
-      {"topology components", serve_topology_components}};
+      {"topology components", serve_topology_components},
+      {"convex check", serve_convex_check}};
   return h;
 }
 

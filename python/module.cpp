@@ -24,6 +24,7 @@
 #include <zdg/kernel/surfaces/digital_plane_recognition.hpp>
 #include <zdg/kernel/surfaces/plane_probing.hpp>
 #include <zdg/operations/arith_operations.hpp>
+#include <zdg/operations/convex_operations.hpp>
 #include <zdg/operations/dss_operations.hpp>
 
 #include <pybind11/stl.h>
@@ -231,6 +232,42 @@ PointsIn points_nd(py::handle seq, const char* what, std::initializer_list<int> 
 
 py::tuple tuple3(const Point3<BigInt>& p) {
   return py::make_tuple(bigint_to_py(p.x), bigint_to_py(p.y), bigint_to_py(p.z));
+}
+
+py::dict convex_check_py(py::handle points, const std::string& definition,
+                         std::uint64_t max_columns) {
+  auto in = points_nd(points, "convex_check", {2, 3});
+  ConvexCheckOptions o;
+  o.dim = in.dim;
+  o.coords = in.coords;
+  o.definition = convexity_definition_from_name(definition, "convex_check: definition");
+  o.max_columns = max_columns;
+  const auto r = [&] {
+    py::gil_scoped_release release;
+    return convex_check_operation(o);
+  }();
+  py::dict d;
+  d["convex"] = r.check.convex;
+  d["definition"] = convexity_definition_name(r.definition);
+  d["dimension"] = r.dim;
+  d["points"] = r.points;
+  d["integer_type"] = served(r.served);
+  if (!r.check.convex) {
+    py::dict w;
+    py::list khalimsky, vertices;
+    for (const auto& k : r.check.witness_khalimsky) khalimsky.append(bigint_to_py(k));
+    for (const auto& v : r.check.witness_vertices) {
+      py::list p;
+      for (const auto& x : v) p.append(bigint_to_py(x));
+      vertices.append(py::tuple(p));
+    }
+    w["dimension"] = r.check.witness_dimension;
+    w["khalimsky"] = khalimsky;
+    w["vertices"] = vertices;
+    if (r.check.witness_dimension == 0) w["point"] = vertices[0];
+    d["witness"] = w;
+  }
+  return d;
 }
 
 py::dict hull_py(py::handle points) {
@@ -540,6 +577,13 @@ PYBIND11_MODULE(_zdg, m) {
         "digital straight line mu <= a x - b y < mu + b (0 <= a < b): reversed smart DSS "
         "(Said and Lachaud 2011), O(log(x1 - x0)), exact by escalation. Returns {'a', 'b', "
         "'mu', 'integer_type'}.");
+  m.def("convex_check", &convex_check_py, py::arg("points"), py::arg("definition") = "full",
+        py::arg("max_columns") = zdg::kConvexityMaxColumns,
+        "Is a set of 2D or 3D integer points fully convex (definition 'full', Lachaud 2022: every "
+        "cell of the grid whose closure meets the convex hull has a vertex in the set) or "
+        "H-convex ('hull': Cvxh(X) cap Z^d = X)? Exact. Returns {'convex', 'definition', "
+        "'dimension', 'points', 'integer_type'} and, when not, 'witness': {'dimension', "
+        "'khalimsky', 'vertices', 'point' (a 0-cell)}, as zdg convex check --json.");
   m.def("hull", &hull_py, py::arg("points"),
         "Convex hull of 2D or 3D integer points (Python ints of any size), exact by "
         "escalation. 2D: its vertices counter-clockwise, without collinear points (Andrew's "

@@ -10,14 +10,14 @@ import os as _os
 from collections.abc import Mapping as _Mapping
 
 from . import _zdg
-from ._zdg import (betti_numbers, cf, chamfer_transform, christoffel, connected_components, contour, converge, hull,
+from ._zdg import (betti_numbers, cf, chamfer_transform, christoffel, connected_components, contour, converge, convex_check, hull,
                    hull_disc, hull_ellipse, hull_halfplanes, distance_transform, dsl_subsegment, floor_sum,
                    ii_curvature, mesh_html, power_map, probe_plane, read_volume, recognize_dss,
                    reconstruct, recognize_plane, reduced_medial_axis, reverse_distance_transform, simple_points, sturmian,
                    surface,
                    surfels, tangential_cover, thinning, voronoi_map, write_volume)
 
-__all__ = ["betti_numbers", "cf", "chamfer_transform", "christoffel", "connected_components", "contour", "converge",
+__all__ = ["betti_numbers", "cf", "chamfer_transform", "christoffel", "connected_components", "contour", "converge", "convex_check",
            "hull",
            "hull_disc", "hull_ellipse", "hull_halfplanes", "power_map", "probe_plane", "recognize_plane", "skeleton",
            "simple_points", "sturmian", "surface",

@@ -101,6 +101,10 @@ const std::vector<Operation>& operations() {
        "matplotlib); the library function is kernel/render/volume_render.hpp"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
+      {"convex check", "convex check", "convex_check", ""},
+      {"convex envelope", "", "",
+       "serve and Python: works on files (a point file in, a point file out); the library "
+       "function is fully_convex_envelope_exact (kernel/hulls/digital_convexity.hpp)"},
   };
   return ops;
 }
