@@ -92,6 +92,12 @@ const std::vector<Operation>& operations() {
        "matplotlib); the library function is kernel/render/volume_render.hpp"},
       {"check", "", "", "the client of zdg serve; Python implementations are checked by it"},
       {"serve", "", "", "the server itself"},
+      {"transform thickness", "", "",
+       "serve and Python: not bound yet (issue #39 names the command line); the library "
+       "function is kernel/transforms/local_thickness.hpp"},
+      {"topology graph", "", "",
+       "serve and Python: not bound yet (issue #39 names the command line); the library "
+       "function is kernel/topology/skeleton_graph.hpp"},
   };
   return ops;
 }
