@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <queue>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -18,6 +19,7 @@ namespace zdg {
 namespace {
 
 __extension__ typedef unsigned __int128 U128;
+__extension__ typedef __int128 I128;
 
 // The largest dimension: the selection looks at 3^d - 1 neighbours.
 constexpr int kMaxDim = 6;
@@ -126,7 +128,17 @@ template <class T>
 struct Centre {
   std::int64_t index = 0;
   T value = 0;
+  // 3-D: the neighbour c + e of largest DT(c + e) > DT(c), whose ball's lines this one need not
+  // paint (guide_value 0 when there is none).
+  T guide_value = 0;
+  std::array<std::int8_t, 3> guide{};
 };
+
+// The painting order: larger values first, then smaller linear indices.
+template <class T>
+bool first(const Centre<T>& a, const Centre<T>& b) {
+  return a.value > b.value || (a.value == b.value && a.index < b.index);
+}
 
 // The layout seen by the painting: at least 2 axes (a 1-D image is one slice of one line).
 struct Layout {
@@ -152,9 +164,9 @@ Layout layout_of(const Domain& dom) {
   return L;
 }
 
-// The kept centres of each slice of axis 0 (see the header: a centre is dropped when the ball
-// of a point c + e with a value as large contains its ball; e in {-1, 0, 1}^d, and with exact
-// tables also {-2 .. 2}^3).
+// The kept centres of each slice of axis 0, sorted in painting order (see the header: a centre
+// is dropped when the ball of a point c + e, e in {-1, 0, 1}^d, with a value as large contains
+// its ball; vectors of {-2 .. 2}^3 dropped only 3% more on foams, for 2.3 times the time).
 template <class T>
 std::vector<std::vector<Centre<T>>> kept_centres(const Domain& dom, const Layout& L,
                                                  const std::vector<T>& v, unsigned threads) {
@@ -162,7 +174,7 @@ std::vector<std::vector<Centre<T>>> kept_centres(const Domain& dom, const Layout
   T maxw = 0;
   for (auto x : v) maxw = std::max(maxw, x);
   const bool exact = d <= 3 && static_cast<std::uint64_t>(maxw) < kTableMaxValue;
-  const int reach = exact ? 2 : 1;
+  const int reach = 1;
   std::vector<std::vector<int>> patterns;
   std::vector<Neighbour> nbrs;
   {
@@ -191,13 +203,6 @@ std::vector<std::vector<Centre<T>>> kept_centres(const Domain& dom, const Layout
       if (k < 0) break;
       ++e[static_cast<std::size_t>(k)];
     }
-    // The first shell first (most points are dropped there).
-    std::stable_sort(nbrs.begin(), nbrs.end(), [](const Neighbour& a, const Neighbour& b) {
-      int fa = 0, fb = 0;
-      for (int x : a.step) fa = std::max(fa, std::abs(x));
-      for (int x : b.step) fb = std::max(fb, std::abs(x));
-      return fa < fb;
-    });
   }
   std::unique_ptr<ContainmentTables> tables;
   if (exact) {
@@ -252,13 +257,28 @@ std::vector<std::vector<Centre<T>>> kept_centres(const Domain& dom, const Layout
             dropped = inside(nbrs[j]) && contains(nbrs[j]);
           }
         }
-        if (!dropped) mine.push_back({i, w});
+        if (!dropped) {
+          Centre<T> ce{i, w, 0, {}};
+          if (d == 3) {
+            for (const auto& n : nbrs) {
+              if (!interior && !inside(n)) continue;
+              const T w2 = v[static_cast<std::size_t>(i + n.offset)];
+              if (w2 > w && w2 > ce.guide_value) {
+                ce.guide_value = w2;
+                for (std::size_t k = 0; k < 3; ++k)
+                  ce.guide[k] = static_cast<std::int8_t>(n.step[k]);
+              }
+            }
+          }
+          mine.push_back(ce);
+        }
       }
       for (int k = d - 1; k >= 0; --k) { // next point in C order
         if (++p[static_cast<std::size_t>(k)] < dom.extent(k)) break;
         p[static_cast<std::size_t>(k)] = 0;
       }
     }
+    std::sort(mine.begin(), mine.end(), first<T>);
   });
   return out;
 }
@@ -289,17 +309,28 @@ void paint(const Layout& L, const std::vector<std::vector<Centre<T>>>& centres, 
   parallel_for(groups, threads, [&](std::int64_t g) {
     const std::int64_t g0 = g * kGroup, g1 = std::min(L.slices, g0 + kGroup);
     // The centres whose ball meets a slice of the group, in decreasing value.
+    // (Each slice's list is sorted already: a merge of the slices' lists.)
     std::vector<Centre<T>> mine;
+    using Head = std::pair<std::int64_t, std::size_t>; // (slice, position in its list)
+    auto later = [&](const Head& a, const Head& b) {
+      return first(centres[static_cast<std::size_t>(b.first)][b.second],
+                   centres[static_cast<std::size_t>(a.first)][a.second]);
+    };
+    std::priority_queue<Head, std::vector<Head>, decltype(later)> heads(later);
     for (std::int64_t s = std::max<std::int64_t>(0, g0 - R); s < std::min(L.slices, g1 + R); ++s) {
-      const std::int64_t gap = s < g0 ? g0 - s : (s >= g1 ? s - (g1 - 1) : 0);
-      for (const auto& c : centres[static_cast<std::size_t>(s)]) {
-        if (static_cast<std::uint64_t>(gap * gap) < static_cast<std::uint64_t>(c.value))
-          mine.push_back(c);
-      }
+      if (!centres[static_cast<std::size_t>(s)].empty()) heads.push({s, 0});
     }
-    std::sort(mine.begin(), mine.end(), [](const Centre<T>& a, const Centre<T>& b) {
-      return a.value > b.value || (a.value == b.value && a.index < b.index);
-    });
+    while (!heads.empty()) {
+      auto [s, k] = heads.top();
+      heads.pop();
+      const auto& list = centres[static_cast<std::size_t>(s)];
+      // The balls of slice s that reach the group are a prefix of its list (value > gap^2).
+      const std::int64_t gap = s < g0 ? g0 - s : (s >= g1 ? s - (g1 - 1) : 0);
+      if (static_cast<std::uint64_t>(gap * gap) >= static_cast<std::uint64_t>(list[k].value))
+        continue;
+      mine.push_back(list[k]);
+      if (k + 1 < list.size()) heads.push({s, k + 1});
+    }
     std::vector<std::array<std::int64_t, kMaxDim>> coords(mine.size());
     for (std::size_t j = 0; j < mine.size(); ++j) {
       std::int64_t i = mine[j].index;
@@ -312,6 +343,8 @@ void paint(const Layout& L, const std::vector<std::vector<Centre<T>>>& centres, 
     std::vector<std::int32_t> next(static_cast<std::size_t>(L.rows * line));
     Painter pt{next.data(), L.nx};
     const std::array<std::int64_t, kMaxDim>* c = nullptr;
+    I128 gb = -1;                     // the guide's budget in the current slice
+    std::array<std::int64_t, 3> ge{}; // the guide's offset
     // Paints line `row` of slice z over [c_x - h, c_x + h] (clipped) with w.
     auto paint_line = [&](std::int64_t z, std::int64_t row, std::int64_t h, T w) {
       const std::int64_t x0 = std::max<std::int64_t>(0, (*c)[D - 1] - h);
@@ -336,13 +369,24 @@ void paint(const Layout& L, const std::vector<std::vector<Centre<T>>>& centres, 
       }
       const auto h = static_cast<std::int64_t>(isqrt(b));
       if (k == D - 2) {
+        // A line whose interval lies in the guide's ball is left to the others: each of its
+        // points y has R2(y) >= DT(guide) > w, and the kept ball of value R2(y) containing y
+        // does not leave y (its own guide would have a value > R2(y) and contain y).
+        auto guided = [&](std::int64_t t, std::int64_t hh) {
+          if (gb < 0) return false;
+          const std::int64_t dy = t - ge[1];
+          const I128 rest = gb - static_cast<I128>(dy) * dy;
+          const I128 need = hh + (ge[2] < 0 ? -ge[2] : ge[2]);
+          return rest >= need * need;
+        };
         auto hx = static_cast<std::uint64_t>(h);
         for (std::int64_t t = 0; t <= h; ++t) {
           const std::uint64_t rest = b - static_cast<std::uint64_t>(t * t);
           while (hx * hx > rest) --hx;
           const auto hh = static_cast<std::int64_t>(hx);
-          if ((*c)[k] + t < L.ext[k]) paint_line(z, row + ((*c)[k] + t) * L.row_stride[k], hh, w);
-          if (t > 0 && (*c)[k] - t >= 0)
+          if ((*c)[k] + t < L.ext[k] && !guided(t, hh))
+            paint_line(z, row + ((*c)[k] + t) * L.row_stride[k], hh, w);
+          if (t > 0 && (*c)[k] - t >= 0 && !guided(-t, hh))
             paint_line(z, row + ((*c)[k] - t) * L.row_stride[k], hh, w);
         }
         return;
@@ -363,6 +407,13 @@ void paint(const Layout& L, const std::vector<std::vector<Centre<T>>>& centres, 
         const auto m = static_cast<std::uint64_t>(mine[j].value) - 1;
         const auto dz = static_cast<std::uint64_t>(z > (*c)[0] ? z - (*c)[0] : (*c)[0] - z);
         if (dz * dz > m) continue;
+        // The guide's budget in this slice (3-D only; < 0: its ball misses the slice).
+        gb = -1;
+        if (D == 3 && mine[j].guide_value != 0) {
+          for (std::size_t k = 0; k < 3; ++k) ge[k] = mine[j].guide[k];
+          const std::int64_t gz = z - (*c)[0] - ge[0];
+          gb = static_cast<I128>(mine[j].guide_value) - 1 - static_cast<I128>(gz) * gz;
+        }
         rows_of(rows_of, 1, m - dz * dz, 0, z, mine[j].value);
       }
     }

@@ -18,23 +18,24 @@
 // background layers R2 = floor((w + 1) / 2)^2 everywhere (thickness w + 1 for odd w, w for
 // even w: the centres are lattice points).
 //
-// Algorithm: the distance transform; then a centre c is dropped when the ball of a point c + e
-// with DT(c + e) >= DT(c) contains its ball; dropping changes no maximum, since containment of
-// distinct lattice balls is a strict order. Containment is decided exactly: B(c) lies in
-// B(c + e) iff DT(c + e) > M(DT(c), e) = max { |p - e|^2 : |p|^2 < DT(c) }, read from tables
-// built for e in {-2 .. 2}^d when d <= 3 and DT < 2^16 (M depends on the sorted |e_i| only;
-// the tables enumerate the lattice points p_1 >= ... >= p_d >= 0); otherwise, for e in
-// {-1, 0, 1}^d, by the sufficient test sqrt(DT(c + e)) > sqrt(DT(c) - 1) + |e|, in integers.
-// The kept balls (the discrete medial axis, about a fifth of a foam's solid) are painted in
-// decreasing DT, slice by slice of axis 0 and line by line of the last axis: each ball covers
-// an interval of each line it meets, and a union-find of the unpainted points of the line gives
-// every point the first (largest) value that covers it.
-// Cost: O(N 5^d) for the selection (O(N 3^d) without tables; the tables O(sqrt(max DT)^d / d!)),
-// then O(sum over kept balls of the lines they meet), about pi r^2 per ball of radius r in
-// 3D, plus O(N alpha): Theta(N r) on shapes of inscribed radius r (bench/README.md). Threads:
-// the selection by slices, the painting by groups of 8 slices of axis 0; the result does not
-// depend on the thread count. Memory: the values (4 or 8 bytes a point, the narrowest
-// unsigned type holding the largest possible DT), the kept centres (16 bytes each), one
+// Algorithm: the distance transform; then a centre c is dropped when the ball of a neighbour
+// c + e (e in {-1, 0, 1}^d) with DT(c + e) >= DT(c) contains its ball; dropping changes no
+// maximum, since containment of distinct lattice balls is a strict order. Containment is
+// decided exactly: B(c) lies in B(c + e) iff DT(c + e) > M(DT(c), e) = max { |p - e|^2 :
+// |p|^2 < DT(c) }, read from tables when d <= 3 and DT < 2^16 (M depends on the sorted |e_i|
+// only; the tables enumerate the lattice points p_1 >= ... >= p_d >= 0), otherwise by the
+// sufficient test sqrt(DT(c + e)) > sqrt(DT(c) - 1) + |e|, in integers. The kept balls (about
+// a quarter of a foam's solid) are painted in decreasing DT, slice by slice of axis 0 and line
+// by line of the last axis: each ball covers an interval of each line it meets, and a
+// union-find of the unpainted points of the line gives every point the first (largest) value
+// that covers it. In 3D a ball skips the lines that lie in the ball of its neighbour of
+// largest DT > its own (those points have a larger R2, painted by the ball that realises it).
+// Cost: O(N 3^d) for the selection (the tables O(sqrt(max DT)^d / d!)), then O(1) per line
+// of each kept ball, about pi r^2 per ball of radius r in 3D, plus one union-find step per
+// line painted and O(N alpha): Theta(N r) on shapes of inscribed radius r (bench/README.md).
+// Threads: the selection by slices, the painting by groups of 8 slices of axis 0; the result
+// does not depend on the thread count. Memory: the values (4 or 8 bytes a point, the narrowest
+// unsigned type holding the largest possible DT), the kept centres (24 to 32 bytes each), one
 // union-find line set of one slice per thread.
 //
 // Width: values are squared distances, at most sum_k (n_k - 1)^2 (the distance transform's
