@@ -1,4 +1,4 @@
-// zdg topology components|betti|simple|thin|skeleton: digital topology of binary images read
+// zdg topology components|betti|simple|thin|skeleton|graph: digital topology of binary images read
 // by the volume loader (cli/volume_input.hpp: every format, the selection options): connected
 // components, Euler characteristic and Betti numbers, simple points, homotopic thinning and
 // skeletons (kernel/topology/adjacency.hpp, connected_components.hpp, betti_numbers.hpp,
@@ -21,8 +21,11 @@
 #include <zdg/kernel/topology/critical_kernel_thinning.hpp>
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
 #include <zdg/kernel/topology/simple_points.hpp>
+#include <zdg/kernel/topology/skeleton_graph.hpp>
+#include <zdg/kernel/transforms/distance_transform.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -280,6 +283,86 @@ void run_thin(const TopologyArgs& a, SkeletonKind default_kind) {
           {"passes", std::to_string(r.passes)}});
 }
 
+// zdg topology graph: the curve skeleton of the object (homotopic thinning, --skeleton curve),
+// then its graph (kernel/topology/skeleton_graph.hpp) with the radius profiles of its branches
+// from the object's squared distance transform.
+void run_graph(const TopologyArgs& a) {
+  if (!a.output.empty()) throw InvalidArgument("topology graph writes no file (drop -o)");
+  const auto mask = read_object(a);
+  ThinningOptions opt;
+  opt.pair = pair_of(a, mask.dim());
+  if (!(opt.pair == default_adjacency_pair(mask.dim()))) {
+    throw InvalidArgument("topology graph joins skeleton points by " +
+                          std::string(mask.dim() == 3 ? "26,6" : "8,4") +
+                          " adjacency (got --adjacency " + opt.pair.name() + ")");
+  }
+  opt.skeleton = SkeletonKind::curve;
+  opt.threads = a.threads;
+  const bool critical = a.method == "critical-kernel";
+  if (!critical && a.method != "sequential") {
+    throw InvalidArgument("--method '" + a.method + "' is not sequential or critical-kernel");
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  TransformOptions dto;
+  dto.threads = a.threads;
+  const auto dt = distance_transform<std::int64_t>(mask, dto);
+  const ThinningResult r =
+      critical ? critical_kernel_thinning(mask, opt) : homotopic_thinning(mask, opt);
+  const SkeletonGraph g = skeleton_graph(r.skeleton, &dt);
+  const double secs = since(t0);
+  const Domain& dom = mask.domain();
+  nlohmann::json nodes = nlohmann::json::array(), branches = nlohmann::json::array();
+  std::int64_t junctions = 0, ends = 0;
+  for (std::size_t k = 0; k < g.nodes.size(); ++k) {
+    const auto& n = g.nodes[k];
+    junctions += n.kind == SkeletonNodeKind::junction;
+    ends += n.kind == SkeletonNodeKind::end;
+    std::vector<double> centre(static_cast<std::size_t>(dom.dim()), 0.0);
+    for (auto i : n.points) {
+      const auto p = dom.point(i);
+      for (std::size_t c = 0; c < p.size(); ++c) centre[c] += static_cast<double>(p[c]);
+    }
+    for (auto& c : centre) c /= static_cast<double>(n.points.size());
+    nodes.push_back({{"id", k},
+                     {"kind", skeleton_node_kind_name(n.kind)},
+                     {"degree", n.degree},
+                     {"loops", n.loops},
+                     {"voxels", n.points.size()},
+                     {"position", centre}});
+  }
+  double total = 0;
+  for (std::size_t k = 0; k < g.branches.size(); ++k) {
+    const auto& b = g.branches[k];
+    total += b.length;
+    std::vector<double> radii;
+    for (auto s : b.squared_radii) radii.push_back(std::sqrt(static_cast<double>(s)));
+    branches.push_back({{"id", k},
+                        {"from", b.from},
+                        {"to", b.to},
+                        {"voxels", b.points.size()},
+                        {"length", b.length},
+                        {"radii", radii}});
+  }
+  if (a.json) {
+    report(a, opt.pair, r.skeleton, secs,
+           {{"method", a.method},
+            {"junctions", junctions},
+            {"ends", ends},
+            {"loops", g.loops},
+            {"total_length", total},
+            {"nodes", nodes},
+            {"branches", branches}});
+    return;
+  }
+  report(a, opt.pair, r.skeleton, secs,
+         {{"nodes", g.nodes.size()},
+          {"junctions", junctions},
+          {"ends", ends},
+          {"branches", g.branches.size()},
+          {"loops", g.loops},
+          {"total_length", total}});
+}
+
 } // namespace
 
 void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
@@ -297,6 +380,7 @@ void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
       {"simple", "simple points of the object (uint8 mask in -o)"},
       {"thin", "homotopic thinning (default --skeleton ultimate): same topology, fewer points"},
       {"skeleton", "skeleton by homotopic thinning (default --skeleton curve)"},
+      {"graph", "graph of the curve skeleton: junctions, ends, branches (lengths, radii), loops"},
   };
   for (const auto& s : specs) {
     auto args = std::make_shared<TopologyArgs>();
@@ -313,6 +397,11 @@ void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
     sub->add_flag("--force", args->force, "replace an existing output file");
     sub->add_flag("--quiet", args->quiet, "no progress on stderr");
     const std::string name = s.name;
+    if (name == "graph") {
+      sub->add_option("--method", args->method,
+                      "thinning: sequential or critical-kernel (parallel)")
+          ->capture_default_str();
+    }
     if (name == "thin" || name == "skeleton") {
       sub->add_option("--method", args->method, "sequential or critical-kernel (parallel)")
           ->capture_default_str();
@@ -332,6 +421,7 @@ void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
       if (name == "simple") run_simple(*args);
       if (name == "thin") run_thin(*args, SkeletonKind::ultimate);
       if (name == "skeleton") run_thin(*args, SkeletonKind::curve);
+      if (name == "graph") run_graph(*args);
     });
   }
 }

@@ -1,8 +1,8 @@
-// zdg transform dt|voronoi|power|rdt|rma|chamfer: the separable exact l_p transforms and the
-// chamfer transform on images read by the volume loader (cli/volume_input.hpp: every format and
-// selection option; an .npy of any dimension); the result is written through an OutputSet (checked
-// before any work, staged, renamed at the end), never over the input and never over an existing
-// file unless --force.
+// zdg transform dt|voronoi|power|rdt|rma|chamfer|thickness: the separable exact l_p transforms,
+// the chamfer transform and the local thickness on images read by the volume loader
+// (cli/volume_input.hpp: every format and selection option; an .npy of any dimension); the result
+// is written through an OutputSet (checked before any work, staged, renamed at the end), never
+// over the input and never over an existing file unless --force.
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/cli/mpi_session.hpp>
@@ -16,6 +16,7 @@
 #include <zdg/kernel/transforms/chamfer_transform.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
 #include <zdg/kernel/transforms/distributed_transform.hpp>
+#include <zdg/kernel/transforms/local_thickness.hpp>
 #include <zdg/kernel/transforms/out_of_core_transform.hpp>
 #include <zdg/kernel/transforms/power_map.hpp>
 #include <zdg/kernel/transforms/reduced_medial_axis.hpp>
@@ -505,6 +506,35 @@ void run_chamfer(TransformArgs& a) {
   report(a, "chamfer", dom, TransformOptions{}, dtype_name(dtype), std::to_string(mx), secs, extra);
 }
 
+// zdg transform thickness: the local thickness (kernel/transforms/local_thickness.hpp), float32
+// diameters in voxel units, 0 off the object; l2 without torus axes (no --metric, --torus).
+void run_thickness(TransformArgs& a) {
+  check_paths(a);
+  require_npy(a.output, "the local thickness");
+  auto mask = read_mask(a);
+  TransformOptions opt;
+  opt.threads = a.threads;
+  auto t0 = std::chrono::steady_clock::now();
+  auto t = local_thickness(mask, opt);
+  double secs = since(t0);
+  float mx = 0;
+  double sum = 0;
+  std::int64_t voxels = 0;
+  for (std::int64_t i = 0; i < t.size(); ++i) {
+    if (mask[i] == 0) continue;
+    mx = std::max(mx, t[i]);
+    sum += t[i];
+    ++voxels;
+  }
+  write_npy(a.staged, make_npy<float>(shape_of(t.domain()), t.values()));
+  commit(a);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", static_cast<double>(mx));
+  report(a, "thickness", t.domain(), opt, "float32", text, secs,
+         {{"voxels", std::to_string(voxels)},
+          {"mean_thickness", voxels > 0 ? sum / static_cast<double>(voxels) : 0.0}});
+}
+
 // A failure on some ranks only: its line, the staged output removed (MPI_Abort kills rank 0
 // wherever it is, before its OutputSet could remove it; the ranks share the output's folder;
 // empty: nothing staged on this rank), then the whole job ends with status 2.
@@ -803,6 +833,21 @@ void add_transform_commands(CLI::App& app, Context& ctx) {
     sub->add_flag("--force", args->force, "replace the output file if it exists");
     sub->add_flag("--json", args->json, "print a JSON summary on stdout");
     sub->callback([args] { run_chamfer(*args); });
+  }
+  {
+    auto args = std::make_shared<TransformArgs>();
+    auto* sub = tr->add_subcommand(
+        "thickness", "local thickness (Hildebrand-Ruegsegger): float32 diameter of the largest "
+                     "inscribed Euclidean ball containing each object point, 0 off the object");
+    add_volume_input_options(*sub, args->in, {.selection = true, .spacing = false});
+    sub->add_option("-o,--output", args->output, "output .npy file (written atomically)")
+        ->required();
+    sub->add_option("--threads", args->threads, "worker threads, 0..1024 (0 = all cores)")
+        ->check(CLI::Range(0u, 1024u))
+        ->capture_default_str();
+    sub->add_flag("--force", args->force, "replace the output file if it exists");
+    sub->add_flag("--json", args->json, "print a JSON summary on stdout");
+    sub->callback([args] { run_thickness(*args); });
   }
 }
 

@@ -105,6 +105,12 @@ const std::vector<Operation>& operations() {
       {"convex envelope", "", "",
        "serve and Python: works on files (a point file in, a point file out); the library "
        "function is fully_convex_envelope_exact (kernel/hulls/digital_convexity.hpp)"},
+      {"transform thickness", "", "",
+       "serve and Python: not bound yet (issue #39 names the command line); the library "
+       "function is kernel/transforms/local_thickness.hpp"},
+      {"topology graph", "", "",
+       "serve and Python: not bound yet (issue #39 names the command line); the library "
+       "function is kernel/topology/skeleton_graph.hpp"},
   };
   return ops;
 }

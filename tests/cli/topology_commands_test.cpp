@@ -195,5 +195,56 @@ TEST(TopologyCommands, BadInputRows) {
   }
 }
 
+// zdg topology graph: a ring (solid torus) has one loop; a plus-shaped object
+// one junction with four branches to four ends; the loops are b1 of the skeleton.
+TEST(TopologyCommands, GraphOfRingAndPlus) {
+  Files f;
+  save(f.path("torus.npy"), test::torus_image(8, 3));
+  auto r = test::run_zdg("topology graph " + f("torus.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["command"], "graph");
+  EXPECT_EQ(j["loops"], 1);
+  EXPECT_EQ(j["betti"][1], "1");
+  double length = 0;
+  for (const auto& b : j["branches"]) length += b["length"].get<double>();
+  EXPECT_GT(length, 40.0); // the core circle: 2 pi 8
+  const std::int64_t n = 21;
+  Image<std::uint8_t> plus(Domain({7, n, n}), std::uint8_t{0});
+  for (std::int64_t z = 2; z <= 4; ++z) {
+    for (std::int64_t t = 2; t < n - 2; ++t) {
+      for (std::int64_t u = 9; u <= 11; ++u) {
+        plus[(z * n + t) * n + u] = 1;
+        plus[(z * n + u) * n + t] = 1;
+      }
+    }
+  }
+  save(f.path("plus.npy"), plus);
+  for (const std::string method : {"sequential", "critical-kernel"}) {
+    r = test::run_zdg("topology graph " + f("plus.npy") + " --method " + method + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["junctions"], 1) << method;
+    EXPECT_EQ(j["ends"], 4) << method;
+    EXPECT_EQ(j["loops"], 0);
+    ASSERT_EQ(j["branches"].size(), 4u);
+    for (const auto& b : j["branches"]) {
+      EXPECT_GT(b["length"].get<double>(), 0.0);
+      EXPECT_EQ(b["radii"].size(), b["voxels"].get<std::size_t>());
+    }
+    for (const auto& node : j["nodes"]) {
+      if (node["kind"] == "junction") {
+        EXPECT_EQ(node["degree"], 4);
+      }
+    }
+  }
+  r = test::run_zdg("topology graph " + f("plus.npy"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("junctions 1"), std::string::npos) << r.out;
+  r = test::run_zdg("topology graph " + f("plus.npy") + " -o " + f("g.npy"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("writes no file"), std::string::npos) << r.err;
+}
+
 } // namespace
 } // namespace zdg

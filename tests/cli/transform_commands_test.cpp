@@ -3,6 +3,7 @@
 #include <zdg/kernel/io/npy_io.hpp>
 #include <zdg/kernel/transforms/chamfer_transform.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
+#include <zdg/kernel/transforms/local_thickness.hpp>
 #include <zdg/kernel/transforms/reverse_distance_transform.hpp>
 
 #include <gtest/gtest.h>
@@ -288,6 +289,50 @@ TEST(TransformCommands, ChamferIsServed) {
   EXPECT_EQ(j["metric"], "chamfer <3,4>");
   ASSERT_TRUE(std::getline(lines, line));
   EXPECT_NE(line.find("\"error\""), std::string::npos) << line;
+}
+
+// zdg transform thickness: float32 diameters, the kernel's local_thickness; the JSON summary; the
+// selection options; an existing output refused without --force.
+TEST(TransformCommands, ThicknessWritesTheLocalThickness) {
+  Files f;
+  // A 9 x 12 image: a 7 x 7 square joined to a bar 3 wide, background around.
+  Image<std::uint8_t> shape(Domain({9, 12}), std::uint8_t{0});
+  for (std::int64_t y = 1; y <= 7; ++y) {
+    for (std::int64_t x = 1; x <= 7; ++x) shape[y * 12 + x] = 1;
+  }
+  for (std::int64_t y = 3; y <= 5; ++y) {
+    for (std::int64_t x = 8; x <= 10; ++x) shape[y * 12 + x] = 1;
+  }
+  std::vector<std::uint8_t> grey(shape.values());
+  for (auto& v : grey) v = v != 0 ? 200 : 10;
+  write_npy(f.path("in.npy"), make_npy<std::uint8_t>({9, 12}, grey));
+  auto r = test::run_zdg("transform thickness " + f("in.npy") + " --threshold 100 -o " +
+                         f("t.npy") + " --threads 2 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["command"], "thickness");
+  EXPECT_EQ(j["dtype"], "float32");
+  EXPECT_EQ(j["max_value"], "8");
+  EXPECT_EQ(j["voxels"], "58");
+  const auto a = read_npy(f.path("t.npy"));
+  EXPECT_EQ(a.dtype, DType::F32);
+  EXPECT_EQ(a.shape, (std::vector<std::int64_t>{9, 12}));
+  const auto expected = local_thickness(shape, {});
+  std::vector<float> got(expected.values().size());
+  for (std::size_t i = 0; i < got.size(); ++i)
+    got[i] = static_cast<float>(a.get_double(static_cast<std::int64_t>(i)));
+  EXPECT_EQ(got, expected.values());
+  EXPECT_EQ(got[4 * 12 + 4], 8.0f);  // the square's centre: DT 16
+  EXPECT_EQ(got[4 * 12 + 10], 4.0f); // the bar's end: squared radius 4
+  EXPECT_EQ(got[0], 0.0f);
+  // Without --force the output stays as it is.
+  r = test::run_zdg("transform thickness " + f("in.npy") + " -o " + f("t.npy"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("exists (use --force"), std::string::npos) << r.err;
+  r = test::run_zdg("transform thickness " + f("in.npy") + " --threshold 100 -o " + f("t.npy") +
+                    " --force");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("zdg transform thickness"), std::string::npos) << r.out;
 }
 
 } // namespace
