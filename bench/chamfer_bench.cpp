@@ -2,7 +2,8 @@
 // the same inputs: a disc of radius 0.45 n in n^2 (masks <3,4> and <5,7,11>) and a ball of
 // radius 0.45 n in n^3 (<3,4,5>). Arguments: n, mask (0: <3,4> / <3,4,5>; 1: <5,7,11>, 2D only).
 // The chamfer transform runs on one thread; the l2 transform (Dt*L2) is given 1 thread too, so
-// the counter "ns_per_voxel" compares the algorithms, not the thread counts.
+// the counter "ns_per_voxel" compares the algorithms, not the thread counts (Google Benchmark
+// prints it with an "s", as every inverted rate: "22.4s" is 22.4 ns per voxel).
 //
 //   build/bin/chamfer_bench --benchmark_filter='3d'
 #include <zdg/kernel/transforms/chamfer_transform.hpp>
