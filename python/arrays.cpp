@@ -34,6 +34,7 @@
 #include <zdg/kernel/topology/skeleton_constraints.hpp>
 #include <zdg/kernel/transforms/chamfer_transform.hpp>
 #include <zdg/kernel/transforms/distance_transform.hpp>
+#include <zdg/kernel/transforms/local_thickness.hpp>
 #include <zdg/kernel/transforms/power_map.hpp>
 #include <zdg/kernel/transforms/reduced_medial_axis.hpp>
 #include <zdg/kernel/transforms/reverse_distance_transform.hpp>
@@ -901,6 +902,27 @@ py::array chamfer_transform_py(const py::object& obj, const py::object& weights)
   return out;
 }
 
+// The local thickness (kernel/transforms/local_thickness.hpp): float32 diameters, 0 off the
+// object. The definition does not depend on the order of the axes (balls are Euclidean), so an
+// F-ordered input is transformed as the C-ordered image of its reversed axes.
+py::array local_thickness_py(const py::object& obj, unsigned threads) {
+  MaskView in = mask_view(obj, true, "local_thickness");
+  Domain dom(in.shape);
+  Image<std::uint8_t> img{dom};
+  for (std::int64_t i = 0; i < in.size(); ++i) img.values()[std::size_t(i)] = in.object(i) ? 1 : 0;
+  TransformOptions opt;
+  opt.threads = threads;
+  Image<float> r = [&] {
+    py::gil_scoped_release release;
+    return local_thickness(img, opt);
+  }();
+  py::module_ np = py::module_::import("numpy");
+  py::array_t<float> out = np.attr("empty")(shape_of(in), py::arg("dtype") = "float32",
+                                            py::arg("order") = in.fortran ? "F" : "C");
+  std::copy(r.values().begin(), r.values().end(), out.mutable_data());
+  return out;
+}
+
 } // namespace
 
 void bind_arrays(py::module_& m) {
@@ -923,6 +945,12 @@ void bind_arrays(py::module_& m) {
         "(Borgefors 1986). mask: the weights of the classes of moves, 2D [axis, diagonal, "
         "knight] ([3, 4], [5, 7, 11]), 3D [face, edge, vertex] ([3, 4, 5]); default [3, 4] / "
         "[3, 4, 5]. Returns a uint64 array.");
+  m.def("local_thickness", &local_thickness_py, py::arg("image"), py::kw_only(),
+        py::arg("threads") = 0,
+        "Local thickness of a binary image of dimension 1 to 6 (nonzero = object; Hildebrand, "
+        "Ruegsegger 1997): at each object point the diameter 2 sqrt(R2) of the largest "
+        "inscribed open Euclidean ball |y - c|^2 < DT(c) containing it (R2 exact, from the "
+        "squared distance transform), 0 off the object. Returns a float32 array.");
   m.def("voronoi_map", &voronoi_map_py, py::arg("image"), py::kw_only(), py::arg("metric") = "l2",
         py::arg("torus") = py::none(), py::arg("threads") = 0,
         "Voronoi map of the zero points of a binary image: at every point the C-order linear "

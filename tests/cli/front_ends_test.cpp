@@ -105,9 +105,9 @@ const std::vector<Operation>& operations() {
       {"convex envelope", "", "",
        "serve and Python: works on files (a point file in, a point file out); the library "
        "function is fully_convex_envelope_exact (kernel/hulls/digital_convexity.hpp)"},
-      {"transform thickness", "", "",
-       "serve and Python: not bound yet (issue #39 names the command line); the library "
-       "function is kernel/transforms/local_thickness.hpp"},
+      {"transform thickness", "", "local_thickness",
+       "serve: a served image answers exact integers, the thickness is float32 diameters (its "
+       "exact R2 is local_thickness_squared_radius in kernel/transforms/local_thickness.hpp)"},
       {"topology graph", "", "",
        "serve and Python: not bound yet (issue #39 names the command line); the library "
        "function is kernel/topology/skeleton_graph.hpp"},

@@ -366,3 +366,24 @@ def test_chamfer_errors():
         zdg.chamfer_transform(np.array([1, 0, 1], dtype=np.uint8))
     with pytest.raises(ValueError, match="positive"):
         zdg.chamfer_transform(np.array([[1, 0]], dtype=np.uint8), mask=[3, 0])
+
+
+@settings(max_examples=40)  # the oracle enumerates every ball
+@given(arrays(np.uint8, st.tuples(st.integers(1, 8), st.integers(1, 8)), elements=st.integers(0, 1)))
+def test_local_thickness_is_the_largest_inscribed_ball(image):
+    """Definition (Hildebrand, Ruegsegger 1997): at y, 2 sqrt(R2) with R2 the largest DT(c) over
+    the centres c whose open ball |y - c|^2 < DT(c) (inscribed: it holds no zero point) holds y.
+    Oracle: every centre's ball enumerated, DT from scipy's exact edt."""
+    if image.all():
+        return
+    ours = zdg.local_thickness(image)
+    dt = np.rint(ndimage.distance_transform_edt(image) ** 2).astype(np.int64)
+    r2 = np.zeros(image.shape, dtype=np.int64)
+    ys, xs = np.indices(image.shape)
+    for cy, cx in zip(*np.nonzero(image)):
+        inside = (ys - cy) ** 2 + (xs - cx) ** 2 < dt[cy, cx]
+        r2[inside] = np.maximum(r2[inside], dt[cy, cx])
+    expect = np.where(image != 0, 2 * np.sqrt(r2), 0).astype(np.float32)
+    assert ours.dtype == np.float32 and ours.shape == image.shape
+    assert np.array_equal(ours, expect)
+    assert np.array_equal(zdg.local_thickness(np.asfortranarray(image)), ours)
