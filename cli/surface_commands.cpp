@@ -25,7 +25,9 @@
 #include <zdg/kernel/render/picture.hpp>
 #include <zdg/kernel/render/render_contours.hpp>
 #include <zdg/kernel/render/render_mesh.hpp>
+#include <zdg/kernel/surfaces/image_surfels.hpp>
 #include <zdg/kernel/topology/adjacency.hpp>
+#include <zdg/kernel/topology/betti_numbers.hpp>
 #include <zdg/operations/progress.hpp>
 #include <zdg/operations/surface_operations.hpp>
 
@@ -38,8 +40,10 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 #include <unistd.h>
@@ -204,6 +208,7 @@ struct SurfaceArgs {
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
   bool harmonic = false;
+  std::string labels; ///< --labels all: the interfaces between the labels of a labelled volume
 };
 
 // --source: a surfel index, or a point X,Y,Z in physical units (the nearest surfel centre,
@@ -264,7 +269,95 @@ std::string picture_color(const PictureArgs& p, const ColorFields& fields,
   return "";
 }
 
+// zdg surface INPUT --labels all: a labelled volume (exact integer values; the background's
+// value 0 is a label too, and the label of everything outside the volume): the interfaces
+// between every two labels that touch (kernel/surfaces/image_surfels.hpp label_interfaces) and,
+// per label but the background, its voxels, surfels, components and Betti numbers under the
+// adjacency pair. At most 1000 labels (a labelled volume, not a grey-level one).
+void run_labels(const SurfaceArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (a.labels != "all") {
+    throw InvalidArgument("--labels '" + a.labels + "': expected all (every label of the volume)");
+  }
+  if (!a.output.empty() || !a.csv.empty() || !a.picture.png.empty() || !a.html.empty() ||
+      !a.estimate.empty() || a.regularize || a.harmonic) {
+    throw InvalidArgument("--labels all reports the interfaces and the topology of each label; "
+                          "-o, --csv, --png, --html, --estimate, --regularize and --harmonic are "
+                          "for one object");
+  }
+  if (has_selection(a.in)) {
+    throw InvalidArgument("--labels all reads every value as a label (no --threshold, --range, "
+                          "--label or --invert)");
+  }
+  const AdjacencyPair pair = parse_adjacency_pair(a.adjacency, 3);
+  const Image<std::int64_t> img = read_integer_image(a.in.path, raw_layout(a.in));
+  if (img.dim() != 3) {
+    throw InvalidArgument(a.in.path + ": a " + std::to_string(img.dim()) +
+                          "-D image (zdg surface takes 3D volumes)");
+  }
+  std::set<std::int64_t> values(img.values().begin(), img.values().end());
+  values.insert(0);
+  if (values.size() > 1001) {
+    throw InvalidArgument(a.in.path + ": " + std::to_string(values.size() - 1) +
+                          " labels besides 0; --labels all takes at most 1000 (a labelled "
+                          "volume, not a grey-level one)");
+  }
+  const auto interfaces = label_interfaces(img, 0);
+  std::map<std::int64_t, std::int64_t> surfels;
+  nlohmann::json jf = nlohmann::json::array();
+  for (const auto& f : interfaces) {
+    surfels[f.a] += f.surfels;
+    surfels[f.b] += f.surfels;
+    jf.push_back({{"labels", {std::to_string(f.a), std::to_string(f.b)}},
+                  {"surfels", std::to_string(f.surfels)}});
+  }
+  nlohmann::json jl = nlohmann::json::array();
+  Image<std::uint8_t> mask(img.domain());
+  for (const std::int64_t L : values) {
+    if (L == 0) continue;
+    std::int64_t voxels = 0;
+    for (std::int64_t i = 0; i < img.size(); ++i) {
+      mask[i] = img[i] == L ? 1 : 0;
+      voxels += mask[i];
+    }
+    const BettiNumbers b = betti_numbers(mask, pair, a.threads);
+    jl.push_back(
+        {{"label", std::to_string(L)},
+         {"voxels", std::to_string(voxels)},
+         {"surfels", std::to_string(surfels[L])},
+         {"components", std::to_string(b.b[0])},
+         {"euler", std::to_string(b.euler)},
+         {"betti", {std::to_string(b.b[0]), std::to_string(b.b[1]), std::to_string(b.b[2])}}});
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (a.json) {
+    print_json({{"command", "surface"},
+                {"input", a.in.path},
+                {"adjacency", pair.name()},
+                {"background", "0"},
+                {"labels", jl},
+                {"interfaces", jf},
+                {"seconds", secs}});
+    return;
+  }
+  std::cout << a.in.path << ": " << jl.size() << " label(s) besides the background 0, " << jf.size()
+            << " interface(s) (" << pair.name() << ")\n";
+  for (const auto& l : jl) {
+    std::cout << "  label " << l["label"].get<std::string>() << ": "
+              << l["voxels"].get<std::string>() << " voxels, " << l["surfels"].get<std::string>()
+              << " surfels, Betti " << l["betti"][0].get<std::string>() << ' '
+              << l["betti"][1].get<std::string>() << ' ' << l["betti"][2].get<std::string>()
+              << '\n';
+  }
+  for (const auto& f : jf) {
+    std::cout << "  interface " << f["labels"][0].get<std::string>() << " | "
+              << f["labels"][1].get<std::string>() << ": " << f["surfels"].get<std::string>()
+              << " surfels\n";
+  }
+}
+
 void run_surface(const SurfaceArgs& a) {
+  if (!a.labels.empty()) return run_labels(a);
   const auto t_total = std::chrono::steady_clock::now();
   // Options first: nothing is read when one is wrong.
   SurfaceOptions o;
@@ -620,6 +713,11 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                      "picture of the mesh coloured by one estimate (--color), with a colour bar "
                      "(default size 1200x900)");
   surface->add_option("--estimate", s->estimate, estimate_help(surface_estimators()));
+  surface->add_option("--labels", s->labels,
+                      "all: a labelled volume (every value a label, 0 the background and the "
+                      "outside): the interfaces between every two labels that touch, and each "
+                      "label's voxels, surfels and Betti numbers (--json: \"labels\", "
+                      "\"interfaces\")");
   surface->add_option("--at-alpha", s->at_alpha,
                       fmt::format("Ambrosio-Tortorelli data fidelity alpha > 0 (default {}; "
                                   "larger: closer to the II normals)",

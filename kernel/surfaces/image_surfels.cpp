@@ -4,7 +4,9 @@
 #include <zdg/kernel/parallel/parallel_for.hpp>
 
 #include <algorithm>
+#include <map>
 #include <string>
+#include <utility>
 
 namespace zdg {
 
@@ -95,6 +97,36 @@ ImageSurfels image_surfels(const Image<std::uint8_t>& image, unsigned threads) {
     }
   });
   out.row_start = std::move(count);
+  return out;
+}
+
+std::vector<LabelInterface> label_interfaces(const Image<std::int64_t>& labels,
+                                             std::int64_t outside) {
+  const Domain& dom = labels.domain();
+  const int d = dom.dim();
+  std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> count;
+  auto add = [&](std::int64_t x, std::int64_t y) {
+    if (x == y) return;
+    ++count[x < y ? std::pair{x, y} : std::pair{y, x}];
+  };
+  const auto& v = labels.values();
+  std::vector<std::int64_t> p(static_cast<std::size_t>(d));
+  for (std::int64_t i = 0; i < dom.size(); ++i) {
+    dom.point(i, p);
+    const std::int64_t here = v[static_cast<std::size_t>(i)];
+    for (int k = 0; k < d; ++k) {
+      const std::int64_t c = p[static_cast<std::size_t>(k)] - dom.lower(k);
+      if (c == 0) add(outside, here); // the face towards -e_k on the domain's side
+      if (c + 1 < dom.extent(k)) {
+        add(here, v[static_cast<std::size_t>(i + dom.stride(k))]);
+      } else {
+        add(here, outside);
+      }
+    }
+  }
+  std::vector<LabelInterface> out;
+  out.reserve(count.size());
+  for (const auto& [ab, n] : count) out.push_back({ab.first, ab.second, n});
   return out;
 }
 

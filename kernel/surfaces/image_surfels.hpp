@@ -147,4 +147,22 @@ void for_each_surfel(const ImageSurfels& s, std::int64_t b, std::int64_t e, F&& 
 /// InvalidArgument when the image is not 3D (see VoxelGrid::of).
 ImageSurfels image_surfels(const Image<std::uint8_t>& image, unsigned threads = 0);
 
+/// One interface of a labelled image: the surfels between a voxel of label a and a 6-neighbour
+/// (4-neighbour in 2D) of label b, a < b.
+struct LabelInterface {
+  std::int64_t a = 0, b = 0;
+  std::int64_t surfels = 0;
+  friend bool operator==(const LabelInterface&, const LabelInterface&) = default;
+};
+
+/// The interfaces between the labels of an image of any dimension (the seeds' multi-label
+/// partitions): for every unordered pair of distinct labels {a, b} that touch, the number of
+/// (d-1)-cells between a voxel of label a and an axis neighbour of label b; outside the domain
+/// every voxel has the label `outside` (the background's value), so the interfaces close. For a
+/// label L != outside, the interfaces holding L add up to the boundary surfels of {label == L}
+/// (image_surfels). Sorted by (a, b). O(N d) time for N voxels, memory per interface, one
+/// thread.
+std::vector<LabelInterface> label_interfaces(const Image<std::int64_t>& labels,
+                                             std::int64_t outside = 0);
+
 } // namespace zdg

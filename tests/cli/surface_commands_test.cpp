@@ -69,6 +69,41 @@ const auto hollow = [](double x, double y, double z) {
   return r2 <= 49 && r2 > 9;
 };
 
+// --labels all (#38 item 5): a 6 x 6 x 6 volume with a 2 x 2 x 2 cube of label 1 at the origin
+// corner and a 2 x 2 x 2 cube of label 7 beside it along x, in a background of 0 (also the
+// outside). Cube 1: 24 faces, 4 of them against cube 7; cube 7 likewise: {0,1} 20, {0,7} 20,
+// {1,7} 4; each label one component, no tunnel, no cavity.
+TEST(SurfaceCommand, LabelsAllGivesTheInterfacesAndEachLabelsTopology) {
+  Files f;
+  std::vector<std::int64_t> v(216, 0);
+  for (int z = 0; z < 2; ++z)
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 4; ++x) v[std::size_t((z * 6 + y) * 6 + x)] = x < 2 ? 1 : 7;
+  write_npy(f.path("labels.npy"), make_npy(DType::I16, {6, 6, 6}, v));
+  const auto j = run_json("surface " + f("labels.npy") + " --labels all");
+  EXPECT_EQ(j["background"], "0");
+  EXPECT_EQ(j["interfaces"], nlohmann::json::parse(R"([
+      {"labels": ["0", "1"], "surfels": "20"},
+      {"labels": ["0", "7"], "surfels": "20"},
+      {"labels": ["1", "7"], "surfels": "4"}])"));
+  ASSERT_EQ(j["labels"].size(), 2u);
+  for (const auto& l : j["labels"]) {
+    EXPECT_EQ(l["voxels"], "8");
+    EXPECT_EQ(l["surfels"], "24");
+    EXPECT_EQ(l["betti"], nlohmann::json::parse(R"(["1", "0", "0"])"));
+  }
+  EXPECT_EQ(j["labels"][1]["label"], "7");
+  // Bad uses: one line, exit 2.
+  const std::vector<std::string> bads = {" --labels some", " --labels all -o " + f("m.ply"),
+                                         " --labels all --threshold 3"};
+  for (const auto& bad : bads) {
+    const auto r = test::run_zdg("surface " + f("labels.npy") + bad);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("--labels"), std::string::npos) << r.err;
+  }
+}
+
 TEST(SurfaceCommand, TopologyOfKnownObjects) {
   Files f;
   save_volume(f.path("torus.npy"), 20, torus);

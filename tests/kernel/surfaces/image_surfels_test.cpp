@@ -116,3 +116,69 @@ TEST(ImageSurfels, RefusesNon3DImages) {
 }
 
 } // namespace
+
+namespace {
+
+// Theorem (the interfaces partition the boundaries): in a labelled image, for every label L
+// other than the outside's, the interfaces holding L add up to the boundary surfels of
+// {label == L}; every interface joins two different labels; and the interfaces add up to the
+// axis-neighbour pairs (outside included) whose labels differ. Oracle for the first:
+// image_surfels of the label's mask; for the last: the pairs counted on the padded volume.
+TEST(LabelInterfaces, PartitionTheBoundariesOfEveryLabel) {
+  zdg::test::check_property([] {
+    const auto nx = *rc::gen::inRange(1, 6), ny = *rc::gen::inRange(1, 6),
+               nz = *rc::gen::inRange(1, 6);
+    const auto labels = *rc::gen::container<std::vector<std::int64_t>>(
+        static_cast<std::size_t>(nx * ny * nz), rc::gen::inRange<std::int64_t>(0, 4));
+    const auto outside = *rc::gen::inRange<std::int64_t>(0, 4);
+    const zdg::Domain dom({nz, ny, nx}, {*rc::gen::inRange(-3, 3), 0, 0});
+    const zdg::Image<std::int64_t> img(dom, labels);
+    const auto interfaces = zdg::label_interfaces(img, outside);
+    std::int64_t total = 0;
+    for (const auto& f : interfaces) {
+      RC_ASSERT(f.a < f.b);
+      RC_ASSERT(f.surfels > 0);
+      total += f.surfels;
+    }
+    RC_ASSERT(
+        std::is_sorted(interfaces.begin(), interfaces.end(), [](const auto& x, const auto& y) {
+          return std::pair{x.a, x.b} < std::pair{y.a, y.b};
+        }));
+    for (std::int64_t L = 0; L < 4; ++L) {
+      if (L == outside) continue;
+      zdg::Image<std::uint8_t> mask(dom);
+      for (std::int64_t i = 0; i < dom.size(); ++i) mask[i] = img[i] == L ? 1 : 0;
+      std::int64_t sum = 0;
+      for (const auto& f : interfaces) {
+        if (f.a == L || f.b == L) sum += f.surfels;
+      }
+      RC_ASSERT(sum == zdg::image_surfels(mask, 1).size());
+    }
+    // Padded: every axis-neighbour pair of the (n + 2)^3 box with different labels.
+    auto at = [&](int x, int y, int z) {
+      if (x < 0 || y < 0 || z < 0 || x >= nx || y >= ny || z >= nz) return outside;
+      return labels[static_cast<std::size_t>((z * ny + y) * nx + x)];
+    };
+    std::int64_t pairs = 0;
+    for (int z = -1; z <= nz; ++z)
+      for (int y = -1; y <= ny; ++y)
+        for (int x = -1; x <= nx; ++x) {
+          pairs += (x < nx && at(x, y, z) != at(x + 1, y, z)) +
+                   (y < ny && at(x, y, z) != at(x, y + 1, z)) +
+                   (z < nz && at(x, y, z) != at(x, y, z + 1));
+        }
+    RC_ASSERT(total == pairs);
+  });
+}
+
+TEST(LabelInterfaces, WorkedExample) {
+  // 1 x 1 x 3: labels 1 2 2, outside 0: {0,1} 5 faces, {0,2} 9, {1,2} 1.
+  const zdg::Image<std::int64_t> img(zdg::Domain({1, 1, 3}), std::vector<std::int64_t>{1, 2, 2});
+  EXPECT_EQ(zdg::label_interfaces(img),
+            (std::vector<zdg::LabelInterface>{{0, 1, 5}, {0, 2, 9}, {1, 2, 1}}));
+  // 2D: a 1 x 2 row of labels 3 and 0 inside an outside of 0: {0, 3} 4 edges.
+  const zdg::Image<std::int64_t> row(zdg::Domain({1, 2}), std::vector<std::int64_t>{3, 0});
+  EXPECT_EQ(zdg::label_interfaces(row), (std::vector<zdg::LabelInterface>{{0, 3, 4}}));
+}
+
+} // namespace
