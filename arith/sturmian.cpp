@@ -1,8 +1,10 @@
 #include <zdg/arith/sturmian.hpp>
 
+#include <zdg/arith/continued_fraction.hpp>
 #include <zdg/arith/error.hpp>
 
 #include <map>
+#include <span>
 
 namespace zdg {
 
@@ -54,6 +56,12 @@ I floor_multiple(const QuadraticSurd<I>& x, const I& k) {
   const I s = isqrt(I(k * k * x.D));
   const I m = k > 0 ? I(k * x.P + s) : I(k * x.P - s - 1);
   return x.Q > 0 ? floor_div(m, x.Q) : floor_div(I(m + 1), x.Q);
+}
+
+template <TowerInt I>
+QuadraticSurd<I> fractional_part(const QuadraticSurd<I>& x) {
+  const I f = floor_multiple(x, I(1));
+  return {I(x.P - f * x.Q), x.D, x.Q};
 }
 
 template <TowerInt I>
@@ -158,19 +166,10 @@ std::string standard_word_prefix(const PeriodicContinuedFraction<I>& alpha, std:
 template <TowerInt I>
 std::vector<std::pair<I, I>> surd_convergents(const PeriodicContinuedFraction<I>& cf,
                                               std::size_t count) {
-  std::vector<std::pair<I, I>> out;
-  out.reserve(count);
-  I p2 = 0, q2 = 1, p1 = 1, q1 = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    const I& a = cf.term(k);
-    I p = a * p1 + p2, q = a * q1 + q2;
-    p2 = std::move(p1);
-    q2 = std::move(q1);
-    p1 = p;
-    q1 = q;
-    out.emplace_back(std::move(p), std::move(q));
-  }
-  return out;
+  std::vector<I> terms;
+  terms.reserve(count);
+  for (std::size_t k = 0; k < count; ++k) terms.push_back(cf.term(k));
+  return convergents(std::span<const I>(terms));
 }
 
 #define ZDG_INSTANTIATE(I)                                                                         \
@@ -178,6 +177,7 @@ std::vector<std::pair<I, I>> surd_convergents(const PeriodicContinuedFraction<I>
   template QuadraticSurd<I> make_surd(const I&, const I&, const I&, const I&);                     \
   template I isqrt(const I&);                                                                      \
   template I floor_multiple(const QuadraticSurd<I>&, const I&);                                    \
+  template QuadraticSurd<I> fractional_part(const QuadraticSurd<I>&);                              \
   template PeriodicContinuedFraction<I> periodic_continued_fraction(const QuadraticSurd<I>&,       \
                                                                     std::size_t);                  \
   template std::string characteristic_word(const QuadraticSurd<I>&, std::size_t);                  \

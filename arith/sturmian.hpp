@@ -61,6 +61,10 @@ I isqrt(const I& n);
 template <TowerInt I>
 I floor_multiple(const QuadraticSurd<I>& x, const I& k);
 
+/// x - floor(x) = (P - floor(x) Q + sqrt D) / Q, in (0, 1).
+template <TowerInt I>
+QuadraticSurd<I> fractional_part(const QuadraticSurd<I>& x);
+
 /// The eventually periodic expansion [preperiod; (period)].
 template <TowerInt I>
 struct PeriodicContinuedFraction {

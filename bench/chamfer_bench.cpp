@@ -34,38 +34,33 @@ Image<std::uint8_t> ball(int dim, std::int64_t n) {
   return img;
 }
 
-void Chamfer2d(benchmark::State& state) {
-  const auto n = state.range(0);
-  const auto img = ball(2, n);
-  const zdg::ChamferMask mask =
-      state.range(1) == 1 ? zdg::ChamferMask(2, {5, 7, 11}) : zdg::ChamferMask(2, {3, 4});
-  for (auto _ : state) {
-    auto dt = zdg::chamfer_transform<std::uint32_t>(img, mask);
-    benchmark::DoNotOptimize(dt.values().data());
-  }
-  state.SetLabel(mask.name());
+// The nanoseconds per voxel of the timed loop (an inverted rate of size * 1e-9 voxels).
+void count_voxels(benchmark::State& state, std::int64_t voxels) {
   state.counters["ns_per_voxel"] = benchmark::Counter(
-      static_cast<double>(img.size()) * 1e-9,
+      static_cast<double>(voxels) * 1e-9,
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-void Chamfer3d(benchmark::State& state) {
-  const auto n = state.range(0);
-  const auto img = ball(3, n);
-  const zdg::ChamferMask mask = zdg::ChamferMask::borgefors(3);
+void Chamfer(benchmark::State& state, const zdg::ChamferMask& mask) {
+  const auto img = ball(mask.dim(), state.range(0));
   for (auto _ : state) {
     auto dt = zdg::chamfer_transform<std::uint32_t>(img, mask);
     benchmark::DoNotOptimize(dt.values().data());
   }
   state.SetLabel(mask.name());
-  state.counters["ns_per_voxel"] = benchmark::Counter(
-      static_cast<double>(img.size()) * 1e-9,
-      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  count_voxels(state, img.size());
+}
+
+void Chamfer2d(benchmark::State& state) {
+  Chamfer(state,
+          state.range(1) == 1 ? zdg::ChamferMask(2, {5, 7, 11}) : zdg::ChamferMask(2, {3, 4}));
+}
+void Chamfer3d(benchmark::State& state) {
+  Chamfer(state, zdg::ChamferMask::borgefors(3));
 }
 
 void DtL2(benchmark::State& state, int dim) {
-  const auto n = state.range(0);
-  const auto img = ball(dim, n);
+  const auto img = ball(dim, state.range(0));
   zdg::TransformOptions opt;
   opt.threads = 1;
   for (auto _ : state) {
@@ -73,9 +68,7 @@ void DtL2(benchmark::State& state, int dim) {
     benchmark::DoNotOptimize(dt.values().data());
   }
   state.SetLabel("l2, 1 thread");
-  state.counters["ns_per_voxel"] = benchmark::Counter(
-      static_cast<double>(img.size()) * 1e-9,
-      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  count_voxels(state, img.size());
 }
 
 void Dt2dL2(benchmark::State& state) {

@@ -254,19 +254,25 @@ json serve_hull_disc(const json& j) {
   return polygon_json(h.value.vertices, h.served);
 }
 
-json serve_transform_dt(const json& j) {
-  const auto img = image_field(j);
-  const TransformOptions opt = transform_field(j, img);
-  const auto dt = distance_transform<BigInt>(img, opt);
+// The values of a transform as nested arrays of the image's shape: numbers up to 2^53 (exact in
+// a JSON double), decimal strings past it.
+json distances_json(const Image<BigInt>& values) {
   std::vector<json> flat;
-  for (const auto& v : dt.values()) {
+  for (const auto& v : values.values()) {
     if (v <= BigInt(std::int64_t{1} << 53)) {
       flat.push_back(v.convert_to<std::int64_t>());
     } else {
       flat.push_back(v.str());
     }
   }
-  return {{"distances", nested(flat, img.domain())}, {"metric", opt.metric.name()}};
+  return nested(flat, values.domain());
+}
+
+json serve_transform_dt(const json& j) {
+  const auto img = image_field(j);
+  const TransformOptions opt = transform_field(j, img);
+  return {{"distances", distances_json(distance_transform<BigInt>(img, opt))},
+          {"metric", opt.metric.name()}};
 }
 
 // transform chamfer: {"image": [[...]], "mask": [5, 7, 11]} (mask optional: <3,4> / <3,4,5>).
@@ -290,16 +296,7 @@ json serve_transform_chamfer(const json& j) {
   }
   const ChamferMask mask =
       w.empty() ? ChamferMask::borgefors(img.dim()) : ChamferMask(img.dim(), w);
-  const auto dt = chamfer_transform<BigInt>(img, mask);
-  std::vector<json> flat;
-  for (const auto& v : dt.values()) {
-    if (v <= BigInt(std::int64_t{1} << 53)) {
-      flat.push_back(v.convert_to<std::int64_t>());
-    } else {
-      flat.push_back(v.str());
-    }
-  }
-  return {{"distances", nested(flat, img.domain())},
+  return {{"distances", distances_json(chamfer_transform<BigInt>(img, mask))},
           {"mask", mask.weights()},
           {"metric", "chamfer " + mask.name()}};
 }

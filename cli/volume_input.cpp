@@ -2,6 +2,7 @@
 #include <zdg/cli/volume_input.hpp>
 
 #include <zdg/arith/error.hpp>
+#include <zdg/cli/commands.hpp>
 #include <zdg/kernel/io/raw_io.hpp>
 
 #include <fmt/core.h>
@@ -15,17 +16,6 @@
 namespace zdg::cli {
 
 namespace {
-
-// The volume options' numbers ("--threshold 'nan' is not a finite decimal number", the
-// wording their contract rows hold).
-double parse_finite(const std::string& text, const std::string& option) {
-  double v = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, v);
-  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(v))
-    throw InvalidArgument(option + " '" + text + "' is not a finite decimal number");
-  return v;
-}
 
 std::string number_text(double x) {
   char buf[64];
@@ -103,17 +93,17 @@ ObjectSelection object_selection(const VolumeInputArgs& a) {
   s.invert = a.invert;
   if (!a.threshold.empty()) {
     s.rule = ObjectSelection::Rule::at_least;
-    s.low = parse_finite(a.threshold, "--threshold");
+    s.low = parse_number(a.threshold, "--threshold");
   } else if (!a.label.empty()) {
     s.rule = ObjectSelection::Rule::equal;
-    s.low = parse_finite(a.label, "--label");
+    s.low = parse_number(a.label, "--label");
   } else if (!a.range.empty()) {
     // The separator is the first ':' (numbers never contain one).
     const auto colon = a.range.find(':');
     if (colon == std::string::npos) throw InvalidArgument("--range '" + a.range + "' is not LO:HI");
     s.rule = ObjectSelection::Rule::range;
-    s.low = parse_finite(a.range.substr(0, colon), "--range LO");
-    s.high = parse_finite(a.range.substr(colon + 1), "--range HI");
+    s.low = parse_number(a.range.substr(0, colon), "--range LO");
+    s.high = parse_number(a.range.substr(colon + 1), "--range HI");
     if (s.low > s.high) throw InvalidArgument("--range '" + a.range + "' is empty (LO > HI)");
   }
   return s;
@@ -126,7 +116,7 @@ std::vector<double> parse_spacing(const std::string& text, int dim) {
     const auto comma = text.find(',', pos);
     const std::string part =
         text.substr(pos, comma == std::string::npos ? std::string::npos : comma - pos);
-    const double v = parse_finite(part, "--spacing");
+    const double v = parse_number(part, "--spacing");
     if (v <= 0.0) throw InvalidArgument("--spacing '" + text + "': " + part + " is not positive");
     out.push_back(v);
     if (comma == std::string::npos) break;

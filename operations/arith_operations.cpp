@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <span>
 
 namespace zdg {
@@ -155,8 +156,16 @@ SturmianResult sturmian_operation(const SturmianOptions& o) {
         make_surd(int_cast<I>(o.a), int_cast<I>(o.b), int_cast<I>(o.d), int_cast<I>(o.c));
     const auto cf = periodic_continued_fraction(x, static_cast<std::size_t>(o.max_terms));
     const I f = floor_multiple(x, I(1));
-    const QuadraticSurd<I> alpha{I(x.P - f * x.Q), x.D, x.Q};
-    const auto acf = periodic_continued_fraction(alpha, static_cast<std::size_t>(o.max_terms));
+    const QuadraticSurd<I> alpha = fractional_part(x);
+    // alpha = x - a_0 = [0; a_1, a_2, ...]: x's expansion with its first term replaced by 0 (a
+    // purely periodic x = [(b_1, ..., b_m)] gives [0; (b_2, ..., b_m, b_1)]).
+    auto acf = cf;
+    if (acf.preperiod.empty()) {
+      std::rotate(acf.period.begin(), acf.period.begin() + 1, acf.period.end());
+      acf.preperiod.push_back(I(0));
+    } else {
+      acf.preperiod.front() = I(0);
+    }
     SturmianResult w;
     w.P = to_bigint(x.P);
     w.D = to_bigint(x.D);

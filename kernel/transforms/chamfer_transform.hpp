@@ -35,10 +35,8 @@
 // attained. Hence, for the transforms, rho_min DT_2(x) <= DT_M(x) always and DT_M(x) <= rho_max
 // DT_2(x) when d_M = g (the masks named above). Normalized by a scale s (the axis weight by
 // convention, or the optimal s = (rho_min + rho_max) / 2), the relative error against l2 lies in
-// [rho_min / s - 1, rho_max / s - 1]: <3,4>: -5.72% .. +5.41% (s = 3), <5,7,11>: -1.62% ..
-// +1.98% (s = 5; Borgefors 1986 gives 2.02% for the maximal difference), <3,4,5>: -5.72% ..
-// +10.55% (s = 3). rho_min^2 and rho_max^2 are computed exactly (rationals); their square roots
-// are rounded.
+// [rho_min / s - 1, rho_max / s - 1] (the classical masks' figures: README.md). rho_min^2 and
+// rho_max^2 are computed exactly (rationals); their square roots are rounded.
 #pragma once
 
 #include <zdg/arith/integer.hpp>

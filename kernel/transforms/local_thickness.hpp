@@ -24,8 +24,8 @@
 // decided exactly: B(c) lies in B(c + e) iff DT(c + e) > M(DT(c), e) = max { |p - e|^2 :
 // |p|^2 < DT(c) }, read from tables when d <= 3 and DT < 2^16 (M depends on the sorted |e_i|
 // only; the tables enumerate the lattice points p_1 >= ... >= p_d >= 0), otherwise by the
-// sufficient test sqrt(DT(c + e)) > sqrt(DT(c) - 1) + |e|, in integers. The kept balls (about
-// a quarter of a foam's solid) are painted in decreasing DT, slice by slice of axis 0 and line
+// sufficient test sqrt(DT(c + e)) > sqrt(DT(c) - 1) + |e|, in integers. The kept balls are
+// painted in decreasing DT, slice by slice of axis 0 and line
 // by line of the last axis: each ball covers an interval of each line it meets, and a
 // union-find of the unpainted points of the line gives every point the first (largest) value
 // that covers it. In 3D a ball skips the lines that lie in the ball of its neighbour of

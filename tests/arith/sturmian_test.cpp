@@ -146,11 +146,11 @@ TYPED_TEST(SturmianTyped, FloorMultipleIsTheFloor) {
   });
 }
 
-// The slope's fractional part as a surd in (0, 1).
+// A random slope in (0, 1): the fractional part of a random surd.
 template <class I>
-QuadraticSurd<I> fractional_part(const QuadraticSurd<I>& x) {
-  const I f = floor_multiple(x, I(1));
-  return {I(x.P - f * x.Q), x.D, x.Q};
+QuadraticSurd<I> random_slope() {
+  const auto s = random_surd();
+  return fractional_part(make_surd<I>(I(s.a), I(s.b), I(s.d), I(s.c)));
 }
 
 // Theorem (Lothaire, Prop. 2.2.24): the standard words of alpha's continued fraction are
@@ -158,8 +158,7 @@ QuadraticSurd<I> fractional_part(const QuadraticSurd<I>& x) {
 TYPED_TEST(SturmianTyped, StandardWordsArePrefixesOfTheCharacteristicWord) {
   using I = TypeParam;
   test::check_property([] {
-    const auto s = random_surd();
-    const auto alpha = fractional_part(make_surd<I>(I(s.a), I(s.b), I(s.d), I(s.c)));
+    const auto alpha = random_slope<I>();
     const auto n = static_cast<std::size_t>(*rc::gen::inRange(0, 400));
     const auto cf = periodic_continued_fraction(alpha);
     RC_ASSERT(standard_word_prefix(cf, n) == characteristic_word(alpha, n));
@@ -173,8 +172,7 @@ TYPED_TEST(SturmianTyped, StandardWordsArePrefixesOfTheCharacteristicWord) {
 TYPED_TEST(SturmianTyped, BalancedWithComplexityNPlusOne) {
   using I = TypeParam;
   test::check_property([] {
-    const auto s = random_surd();
-    const auto alpha = fractional_part(make_surd<I>(I(s.a), I(s.b), I(s.d), I(s.c)));
+    const auto alpha = random_slope<I>();
     const auto cf = periodic_continued_fraction(alpha);
     const std::string w = standard_word_prefix(cf, 4000);
     for (std::size_t len = 1; len <= 30; ++len) {
@@ -204,8 +202,7 @@ TYPED_TEST(SturmianTyped, BalancedWithComplexityNPlusOne) {
 TYPED_TEST(SturmianTyped, ChristoffelConvergentsAreCentralPrefixes) {
   using I = TypeParam;
   test::check_property([] {
-    const auto s = random_surd();
-    const auto alpha = fractional_part(make_surd<I>(I(s.a), I(s.b), I(s.d), I(s.c)));
+    const auto alpha = random_slope<I>();
     const auto cf = periodic_continued_fraction(alpha);
     const std::string c = characteristic_word(alpha, 600);
     for (const auto& [p, q] : surd_convergents(cf, 12)) {
