@@ -119,9 +119,9 @@ py::dict motion_check_py(py::handle a, py::handle b, py::handle c, py::object ce
   d["bijective"] = r.bijective;
   d["method"] = r.method;
   d["period"] = bigint_to_py(r.period);
-  d["collision"] = r.collision ? py::object(py::make_tuple(pt((*r.collision)[0]),
-                                                           pt((*r.collision)[1])))
-                               : py::object(py::none());
+  d["collision"] = r.collision
+                       ? py::object(py::make_tuple(pt((*r.collision)[0]), pt((*r.collision)[1])))
+                       : py::object(py::none());
   d["image"] = r.collision_image ? py::object(pt(*r.collision_image)) : py::object(py::none());
   d["hole"] = r.hole ? py::object(pt(*r.hole)) : py::object(py::none());
   return d;
@@ -597,8 +597,8 @@ PYBIND11_MODULE(_zdg, m) {
         "words are 0 w 1, w a prefix of it. Exact; escalates int64 -> int128 -> BigInt. "
         "Returns {'surd': (P, D, Q), 'preperiod', 'period', 'floor', 'word', "
         "'christoffel_convergents', 'integer_type'}.");
-  m.def("motion_check", &motion_check_py, py::arg("a"), py::arg("b"), py::arg("c"),
-        py::kw_only(), py::arg("center") = py::none(), py::arg("translation") = py::none(),
+  m.def("motion_check", &motion_check_py, py::arg("a"), py::arg("b"), py::arg("c"), py::kw_only(),
+        py::arg("center") = py::none(), py::arg("translation") = py::none(),
         "Whether the digitized rotation of the Pythagorean triple a^2 + b^2 = c^2 (cos = a/c, "
         "sin = b/c) about `center` followed by `translation` (pairs of ints or Fractions; "
         "default 0), D(p) = floor(R (p - center) + center + translation + 1/2), is a bijection "
