@@ -9,6 +9,8 @@ packages=(
   librapidcheck-dev libgtest-dev libbenchmark-dev
   libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libfmt-dev pybind11-dev
   zlib1g-dev libnifti2-dev libpng-dev libsuitesparse-dev
+  # .vdb volumes (kernel/io/vdb_io.cpp).
+  libopenvdb-dev
   # `zdg transform dt|voronoi --mpi` (the MPI library and its launcher, mpiexec).
   libopenmpi-dev openmpi-bin
   # CHOLMOD's supernodal factorizations run in BLAS: OpenBLAS takes the libblas.so.3

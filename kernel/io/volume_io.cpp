@@ -4,6 +4,7 @@
 #include <zdg/kernel/io/nifti_io.hpp>
 #include <zdg/kernel/io/pgm_io.hpp>
 #include <zdg/kernel/io/raw_io.hpp>
+#include <zdg/kernel/io/vdb_io.hpp>
 #include <zdg/kernel/io/vol_io.hpp>
 
 #include <algorithm>
@@ -100,6 +101,8 @@ std::string volume_format_name(VolumeFormat f) {
     return "pgm";
   case VolumeFormat::raw:
     return "raw";
+  case VolumeFormat::vdb:
+    return "vdb";
   }
   return "?";
 }
@@ -112,7 +115,8 @@ VolumeFormat volume_format_of(const std::string& path) {
   if (ends_with(p, ".npy")) return VolumeFormat::npy;
   if (ends_with(p, ".pgm")) return VolumeFormat::pgm;
   if (ends_with(p, ".raw")) return VolumeFormat::raw;
-  throw IoError(path + ": unknown volume format (.vol, .nii, .nii.gz, .npy, .pgm, .raw)");
+  if (ends_with(p, ".vdb")) return VolumeFormat::vdb;
+  throw IoError(path + ": unknown volume format (.vol, .nii, .nii.gz, .npy, .pgm, .raw, .vdb)");
 }
 
 ScalarVolume read_volume(const std::string& path, const RawLayout& raw) {
@@ -160,6 +164,8 @@ ScalarVolume read_volume(const std::string& path, const RawLayout& raw) {
     }
     return make_scalar_volume(std::move(a));
   }
+  case VolumeFormat::vdb:
+    return read_vdb(path);
   case VolumeFormat::raw:
     break;
   }
@@ -220,6 +226,9 @@ void write_volume(const std::string& path, const ScalarVolume& volume,
     write_pgm(path, Image<std::uint64_t>(Domain(volume.array.shape), std::move(values)));
     return;
   }
+  case VolumeFormat::vdb:
+    write_vdb(path, volume);
+    return;
   case VolumeFormat::raw: {
     if (!volume.scaled()) {
       write_raw(path, volume);

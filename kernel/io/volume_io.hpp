@@ -6,13 +6,16 @@
 //   .pgm            2D Netpbm grey image (uint8, or uint16 when a value exceeds 255)
 //   .raw            bare little-endian values; the shape and dtype are given
 //                   (RawLayout), and any file name is read as raw when they are
+//   .vdb            OpenVDB sparse grid (bool, float, double, int32, int64), spacing and
+//                   origin, the active voxels' box (kernel/io/vdb_io.hpp)
 //
 // Writing keeps the stored dtype and bytes wherever the format can hold them, so that a
 // round trip through one format is bit-identical. Where it cannot, the physical values
 // (slope * stored + inter) are written: .npy and .raw get float64 when the volume is scaled;
 // .vol needs integer values in 0..255 (3D), .pgm integer values in 0..65535 (2D); a value
-// that does not fit is an InvalidArgument naming it. Spacing, origin and scaling are kept by
-// NIfTI only; the lattice lower bounds by .vol only (its Center keys).
+// that does not fit is an InvalidArgument naming it. Spacing and origin are kept by NIfTI and
+// .vdb, the scaling by NIfTI only (.vdb gets the physical values), the lattice lower bounds by
+// .vol (its Center keys) and .vdb.
 #pragma once
 
 #include <zdg/kernel/images/scalar_volume.hpp>
@@ -23,9 +26,9 @@
 
 namespace zdg {
 
-enum class VolumeFormat { vol, nifti, nifti_gz, npy, pgm, raw };
+enum class VolumeFormat { vol, nifti, nifti_gz, npy, pgm, raw, vdb };
 
-/// "vol", "nifti", "nifti.gz", "npy", "pgm", "raw".
+/// "vol", "nifti", "nifti.gz", "npy", "pgm", "raw", "vdb".
 std::string volume_format_name(VolumeFormat f);
 /// The format of a file name by its extension (case-insensitive; IoError for another one).
 VolumeFormat volume_format_of(const std::string& path);

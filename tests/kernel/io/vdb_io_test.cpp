@@ -1,0 +1,157 @@
+// .vdb volumes (kernel/io/vdb_io.hpp) through read_volume / write_volume: round trips of random
+// volumes of every dtype (the values, the box, the spacing and origin come back), the grid type
+// chosen for each, and the errors.
+#include <zdg/kernel/io/vdb_io.hpp>
+
+#include "tests/support/cli.hpp"
+#include "tests/support/tower.hpp"
+#include <zdg/arith/error.hpp>
+#include <zdg/kernel/io/volume_io.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <vector>
+
+namespace zdg {
+namespace {
+
+struct Dir {
+  std::filesystem::path dir = test::scratch_dir("vdb");
+  ~Dir() { std::filesystem::remove_all(dir); }
+  std::string operator()(const std::string& name) const { return (dir / name).string(); }
+};
+
+// A random sparse volume: values drawn for the dtype, most voxels zero.
+ScalarVolume random_volume(DType t, std::mt19937& rng) {
+  const bool two = rng() % 4 == 0;
+  std::vector<std::int64_t> shape, lower;
+  for (int k = 0; k < (two ? 2 : 3); ++k) {
+    shape.push_back(1 + static_cast<std::int64_t>(rng() % 9));
+    lower.push_back(static_cast<std::int64_t>(rng() % 21) - 10);
+  }
+  std::int64_t n = 1;
+  for (auto s : shape) n *= s;
+  std::vector<std::int64_t> iv(static_cast<std::size_t>(n), 0);
+  std::vector<double> fv(static_cast<std::size_t>(n), 0);
+  for (std::int64_t i = 0; i < n; ++i) {
+    if (rng() % 3 != 0) continue;
+    const auto u = static_cast<std::size_t>(i);
+    switch (t) {
+    case DType::Bool:
+      iv[u] = 1;
+      break;
+    case DType::U8:
+      iv[u] = static_cast<std::int64_t>(rng() % 256);
+      break;
+    case DType::I32:
+      iv[u] = static_cast<std::int64_t>(rng()) - (std::int64_t{1} << 31);
+      break;
+    case DType::I64:
+      iv[u] = (static_cast<std::int64_t>(rng()) << 31) ^ static_cast<std::int64_t>(rng());
+      break;
+    default:
+      fv[u] = std::ldexp(static_cast<double>(rng()), -20) - 2000.0;
+    }
+  }
+  ScalarVolume v;
+  if (t == DType::F32 || t == DType::F64) {
+    NpyArray a;
+    a.dtype = t;
+    a.shape = shape;
+    const std::size_t w = dtype_size(t);
+    a.bytes.resize(static_cast<std::size_t>(n) * w);
+    for (std::size_t u = 0; u < static_cast<std::size_t>(n); ++u) {
+      if (t == DType::F32) {
+        const auto f = static_cast<float>(fv[u]);
+        std::memcpy(a.bytes.data() + u * w, &f, w);
+      } else {
+        std::memcpy(a.bytes.data() + u * w, &fv[u], w);
+      }
+    }
+    v = make_scalar_volume(std::move(a));
+  } else {
+    v = make_scalar_volume(make_npy(t, shape, iv));
+  }
+  v.lower = lower;
+  v.spacing.clear();
+  v.origin.clear();
+  for (std::size_t k = 0; k < shape.size(); ++k) {
+    v.spacing.push_back(0.25 * static_cast<double>(1 + rng() % 8));
+    v.origin.push_back(static_cast<double>(static_cast<int>(rng() % 100)) / 8 - 6);
+  }
+  return v;
+}
+
+TEST(VdbIo, RoundTripsKeepValuesBoxSpacingAndOrigin) {
+  if (!vdb_supported()) GTEST_SKIP() << "built without OpenVDB";
+  Dir d;
+  std::mt19937 rng(20261129);
+  for (DType t : {DType::Bool, DType::U8, DType::I32, DType::I64, DType::F32, DType::F64}) {
+    for (int trial = 0; trial < 20; ++trial) {
+      const ScalarVolume v = random_volume(t, rng);
+      const std::string path = d("v.vdb");
+      write_volume(path, v);
+      const ScalarVolume r = read_volume(path);
+      SCOPED_TRACE(dtype_name(t) + " " + describe_volume(v));
+      // 2D images come back as one slice.
+      const bool two = v.dim() == 2;
+      ASSERT_EQ(r.dim(), 3);
+      std::vector<std::int64_t> shape = v.array.shape, lower = v.lower;
+      std::vector<double> spacing = v.spacing, origin = v.origin;
+      if (two) {
+        shape.insert(shape.begin(), 1);
+        lower.insert(lower.begin(), 0);
+        spacing.insert(spacing.begin(), 1.0);
+        origin.insert(origin.begin(), 0.0);
+      }
+      EXPECT_EQ(r.array.shape, shape);
+      EXPECT_EQ(r.lower, lower);
+      for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_NEAR(r.spacing[k], spacing[k], 1e-12);
+        EXPECT_NEAR(r.origin[k], origin[k], 1e-9);
+      }
+      for (std::int64_t i = 0; i < v.count(); ++i) ASSERT_EQ(r.value(i), v.value(i)) << i;
+      // The grid type: bool for 0/1 values, float32 and float64 kept, integers in 32 or 64 bits.
+      bool binary = true;
+      for (std::int64_t i = 0; i < v.count(); ++i)
+        binary = binary && (v.value(i) == 0 || v.value(i) == 1);
+      if (t == DType::F32 || t == DType::F64) {
+        EXPECT_EQ(r.array.dtype, t);
+      } else if (binary) {
+        EXPECT_EQ(r.array.dtype, DType::Bool);
+      } else if (t == DType::U8 || t == DType::I32) {
+        EXPECT_EQ(r.array.dtype, DType::I32);
+      }
+    }
+  }
+}
+
+TEST(VdbIo, ErrorsNameTheFile) {
+  if (!vdb_supported()) GTEST_SKIP() << "built without OpenVDB";
+  Dir d;
+  std::ofstream(d("junk.vdb")) << "not a vdb file at all";
+  try {
+    read_volume(d("junk.vdb"));
+    FAIL() << "junk read";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("junk.vdb: not a readable OpenVDB file"),
+              std::string::npos)
+        << e.what();
+  }
+  // uint64 values past 2^63 have no OpenVDB grid.
+  const ScalarVolume big =
+      make_scalar_volume(make_npy(DType::U64, {1, 1, 2}, std::vector<std::int64_t>{0, 0}));
+  ScalarVolume b = big;
+  const std::uint64_t huge = (std::uint64_t{1} << 63) + 5;
+  std::memcpy(b.array.bytes.data() + 8, &huge, 8);
+  EXPECT_THROW(write_volume(d("big.vdb"), b), InvalidArgument);
+  EXPECT_EQ(volume_format_of("X.VDB"), VolumeFormat::vdb);
+}
+
+} // namespace
+} // namespace zdg
