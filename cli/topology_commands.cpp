@@ -424,6 +424,7 @@ void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
       if (name == "graph") run_graph(*args);
     });
   }
+  add_topology_persistence_command(*top);
 }
 
 } // namespace zdg::cli

@@ -42,8 +42,9 @@ public:
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(static_cast<std::size_t>(voxels_));
     for (std::int64_t i = 0; i < voxels_; ++i) {
       const double x = values[i];
-      if (std::isnan(x)) {
-        throw InvalidArgument("cubical persistence: value NaN at voxel " + std::to_string(i));
+      if (!std::isfinite(x)) {
+        throw InvalidArgument("cubical persistence: value " + std::to_string(x) + " at voxel " +
+                              std::to_string(i) + " is not finite");
       }
       keyed[static_cast<std::size_t>(i)] = {order_key(x), static_cast<std::uint32_t>(i)};
     }

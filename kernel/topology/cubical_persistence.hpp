@@ -29,7 +29,8 @@
 // O(N) columns of four entries plus the reductions (cubic in the worst case, near linear on
 // images); memory about 40 N bytes. Width: cell indices in int64; N < 2^32 voxels and a cell
 // count times N below 2^64 (InvalidArgument beyond).
-// Errors: InvalidArgument for a dimension other than 2 or 3 or a NaN value.
+// Errors: InvalidArgument for a dimension other than 2 or 3 or a value that is not finite (NaN,
+// +-infinity: an infinite death would read as an essential class).
 #pragma once
 
 #include <zdg/kernel/images/image.hpp>
