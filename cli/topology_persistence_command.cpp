@@ -29,7 +29,8 @@ struct PersistenceArgs {
   bool json = false, quiet = false;
 };
 
-// The physical values of the volume, exact in double (a 64-bit integer past 2^53 is refused).
+// The physical values of the volume, exact in double (a 64-bit integer of magnitude 2^53 or
+// more is refused: 2^53 + 1 reads as 2^53).
 Image<double> volume_values(const PersistenceArgs& a) {
   const ScalarVolume v = load_volume(a.in, 0, !a.quiet).volume;
   const bool wide = v.array.dtype == DType::I64 || v.array.dtype == DType::U64;
@@ -41,9 +42,9 @@ Image<double> volume_values(const PersistenceArgs& a) {
       throw InvalidArgument(a.in.path + ": value " + std::to_string(x) + " at voxel " +
                             std::to_string(i) + " is not finite");
     }
-    if (wide && std::abs(v.array.get_double(i)) > exact) {
+    if (wide && std::abs(v.array.get_double(i)) >= exact) {
       throw InvalidArgument(a.in.path + ": the 64-bit value at voxel " + std::to_string(i) +
-                            " is past 2^53 (not exact as a filtration value)");
+                            " is 2^53 or more in magnitude (not exact as a filtration value)");
     }
     out[i] = x;
   }
@@ -98,9 +99,13 @@ void run_persistence(const PersistenceArgs& a) {
       return x.death - x.birth > y.death - y.birth;
     });
     for (std::size_t i = 0; i < g.size() && i < 10; ++i) {
-      std::cout << (i == 0 ? ", longest " : " ") << '[' << g[i].birth << ", "
-                << (std::isinf(g[i].death) ? std::string("inf") : std::to_string(g[i].death))
-                << ')';
+      std::cout << (i == 0 ? ", longest " : " ") << '[' << g[i].birth << ", ";
+      if (std::isinf(g[i].death)) {
+        std::cout << "inf";
+      } else {
+        std::cout << g[i].death;
+      }
+      std::cout << ')';
     }
     std::cout << '\n';
   }
