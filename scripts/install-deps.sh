@@ -23,7 +23,7 @@ packages=(
 # installed by scripts/run-tests.sh (ZDG_TEST_PACKAGES=1), not by the main job.
 if [ "${ZDG_TEST_PACKAGES:-0}" = 1 ]; then
   packages+=(chromium chromium-driver python3-selenium python3-nbclient python3-ipykernel
-            python3-skimage python3-pydicom)
+            python3-skimage python3-pydicom python3-gudhi)
 fi
 
 # Extra packages for one caller (CI adds the fuzzing toolchain: clang-14 libclang-rt-14-dev).
