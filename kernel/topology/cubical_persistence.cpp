@@ -14,6 +14,8 @@ namespace zdg {
 namespace {
 
 constexpr std::uint32_t kNone = 0xffffffffu;
+// How many voxels ahead the passes ask the cache for the neighbourhood they will read.
+constexpr std::uint32_t kAhead = 12;
 
 // The monotone map of a double to uint64 (x < y iff key(x) < key(y); -0 and +0 one key).
 std::uint64_t order_key(double x) {
@@ -51,8 +53,10 @@ public:
     std::sort(keyed.begin(), keyed.end());
     order_.resize(keyed.size());
     rank_.resize(keyed.size());
+    sorted_.resize(keyed.size());
     for (std::size_t r = 0; r < keyed.size(); ++r) {
       order_[r] = keyed[r].second;
+      sorted_[r] = values[keyed[r].second];
       rank_[keyed[r].second] = static_cast<std::uint32_t>(r);
     }
   }
@@ -62,7 +66,28 @@ public:
   std::int64_t vertices() const { return vertices_; }
   std::uint32_t voxel_of_rank(std::uint32_t r) const { return order_[r]; }
   std::uint32_t rank_of(std::uint32_t v) const { return rank_[v]; }
-  double value_of_rank(std::uint32_t r) const { return values_[order_[r]]; }
+  double value_of_rank(std::uint32_t r) const { return sorted_[r]; }
+  /// Asks the cache for the ranks of the 3x3x3 voxels around voxel v and, when `parents` is
+  /// given, the entries of the 2x2 rows of its corner vertices in an array `per_vertex` wide
+  /// per vertex (the passes visit the voxels in value order: random places of the volume).
+  void prefetch_around(std::uint32_t v, const std::uint32_t* parents = nullptr,
+                       int per_vertex = 1) const {
+    const auto x = voxel_coords(v);
+    for (std::int64_t a = -1; a <= 1; ++a) {
+      for (std::int64_t b = -1; b <= 1; ++b) {
+        const std::int64_t i = x[0] + a, j = x[1] + b;
+        if (i < 0 || j < 0 || i >= n_[0] || j >= n_[1]) continue;
+        __builtin_prefetch(&rank_[static_cast<std::size_t>((i * n_[1] + j) * n_[2] + x[2])]);
+      }
+    }
+    if (parents == nullptr) return;
+    for (std::int64_t a = 0; a <= 1; ++a) {
+      for (std::int64_t b = 0; b <= 1; ++b) {
+        const std::int64_t id = ((x[0] + a) * (n_[1] + 1) + x[1] + b) * (n_[2] + 1) + x[2];
+        __builtin_prefetch(&parents[static_cast<std::size_t>(id * per_vertex)]);
+      }
+    }
+  }
   std::int64_t extent(int k) const { return n_[static_cast<std::size_t>(k)]; }
 
   std::array<std::int64_t, 3> voxel_coords(std::uint32_t v) const {
@@ -127,6 +152,7 @@ private:
   std::array<std::int64_t, 3> n_{}, m_{};
   std::int64_t voxels_ = 0, cells_ = 0, vertices_ = 0;
   std::vector<std::uint32_t> order_, rank_;
+  std::vector<double> sorted_; ///< the values in rank order
 };
 
 class BitSet {
@@ -178,14 +204,20 @@ void add_pair(std::vector<PersistencePair>& out, double birth, double death) {
 // merge two components (negative: their rows leave the dimension-1 matrix).
 void vertex_components(const Complex& cx, BitSet& paired, std::vector<PersistencePair>& out) {
   std::vector<std::uint32_t> parent(static_cast<std::size_t>(cx.vertices()), kNone);
-  for (std::uint32_t r = 0; r < static_cast<std::uint32_t>(cx.voxels()); ++r) {
+  std::vector<std::uint32_t> birth(parent.size()); // a vertex's entry rank
+  const auto n = static_cast<std::uint32_t>(cx.voxels());
+  for (std::uint32_t r = 0; r < n; ++r) {
+    if (r + kAhead < n) cx.prefetch_around(cx.voxel_of_rank(r + kAhead), parent.data());
     const auto v = cx.voxel_coords(cx.voxel_of_rank(r));
     const std::array<std::int64_t, 3> centre{2 * v[0] + 1, 2 * v[1] + 1, 2 * v[2] + 1};
     for (const auto& f : face_offsets()) {
       if (f.dim != 0) continue;
       const std::uint32_t id =
           cx.vertex_id({centre[0] + f.d[0], centre[1] + f.d[1], centre[2] + f.d[2]});
-      if (parent[id] == kNone) parent[id] = id; // born with this voxel
+      if (parent[id] == kNone) { // born with this voxel
+        parent[id] = id;
+        birth[id] = r;
+      }
     }
     const double death = cx.value_of_rank(r);
     for (const auto& f : face_offsets()) {
@@ -204,12 +236,7 @@ void vertex_components(const Complex& cx, BitSet& paired, std::vector<Persistenc
       std::uint32_t rb = find_root(parent, cx.vertex_id(b));
       if (ra == rb) continue; // a 1-cycle is born
       // The root of a component is its oldest vertex; the younger one dies.
-      const auto key = [&](std::uint32_t root) {
-        const std::int64_t w2 = cx.extent(2) + 1, w1 = cx.extent(1) + 1, id = root;
-        const std::array<std::int64_t, 3> x{2 * (id / (w1 * w2)), 2 * ((id / w2) % w1),
-                                            2 * (id % w2)};
-        return std::pair{cx.entry_rank(x), root};
-      };
+      const auto key = [&](std::uint32_t root) { return std::pair{birth[root], root}; };
       const auto ka = key(ra), kb = key(rb);
       if (ka < kb) std::swap(ra, rb); // ra: the younger
       add_pair(out, cx.value_of_rank(std::max(ka, kb).first), death);
@@ -231,6 +258,7 @@ void voids(const Complex& cx, BitSet& paired, std::vector<PersistencePair>& out)
   const auto key = [&](std::uint32_t node) { return node == n ? n : cx.rank_of(node); };
   const auto& offsets = face_offsets();
   for (std::uint32_t r = n; r-- > 0;) {
+    if (r >= kAhead) cx.prefetch_around(cx.voxel_of_rank(r - kAhead));
     const std::uint32_t vi = cx.voxel_of_rank(r);
     parent[vi] = vi;
     const auto v = cx.voxel_coords(vi);
@@ -271,6 +299,7 @@ public:
   void run(std::vector<PersistencePair>& out) {
     const auto n = static_cast<std::uint32_t>(cx_.voxels());
     for (std::uint32_t r = 0; r < n; ++r) {
+      if (r + kAhead < n) cx_.prefetch_around(cx_.voxel_of_rank(r + kAhead), owner_.data(), 3);
       const std::uint32_t vi = cx_.voxel_of_rank(r);
       const auto v = cx_.voxel_coords(vi);
       const std::array<std::int64_t, 3> centre{2 * v[0] + 1, 2 * v[1] + 1, 2 * v[2] + 1};
