@@ -250,8 +250,10 @@ void vertex_components(const Complex& cx, BitSet& paired, std::vector<Persistenc
 
 // The top dimension by duality: union-find on the voxels and the outside (node N), the 2-cells
 // in reverse filtration order. Marks the 2-cells that merge (positive: their columns are
-// cleared from the dimension-1 matrix).
-void voids(const Complex& cx, BitSet& paired, std::vector<PersistencePair>& out) {
+// cleared from the dimension-1 matrix). `planar`: the slab of a 2D image, the faces across
+// axis 0 left out: the union-find on the pixels over the edges of the 2D complex, whose pairs
+// are the 2D image's 1-dimensional ones.
+void voids(const Complex& cx, BitSet& paired, std::vector<PersistencePair>& out, bool planar) {
   const auto n = static_cast<std::uint32_t>(cx.voxels());
   std::vector<std::uint32_t> parent(static_cast<std::size_t>(n) + 1, kNone);
   parent[n] = n;
@@ -265,7 +267,7 @@ void voids(const Complex& cx, BitSet& paired, std::vector<PersistencePair>& out)
     const std::array<std::int64_t, 3> centre{2 * v[0] + 1, 2 * v[1] + 1, 2 * v[2] + 1};
     const double birth = cx.value_of_rank(r);
     for (auto it = offsets.rbegin(); it != offsets.rend(); ++it) {
-      if (it->dim != 2) continue;
+      if (it->dim != 2 || (planar && it->d[0] != 0)) continue;
       std::array<std::int64_t, 3> w = v;
       std::uint32_t other = n;
       bool inside = true;
@@ -430,10 +432,11 @@ PersistenceDiagrams cubical_persistence(const Image<double>& values) {
   BitSet paired(cx.cells());
   std::vector<std::vector<PersistencePair>> dgm(3);
   vertex_components(cx, paired, dgm[0]);
-  voids(cx, paired, dgm[2]);
-  MiddleReduction(cx, paired).run(dgm[1]);
-  if (d == 2 && !dgm[2].empty()) {
-    throw Error("cubical persistence: a 2D image with a 2-dimensional class (internal error)");
+  if (d == 2) {
+    voids(cx, paired, dgm[1], true);
+  } else {
+    voids(cx, paired, dgm[2], false);
+    MiddleReduction(cx, paired).run(dgm[1]);
   }
   dgm.resize(static_cast<std::size_t>(d));
   for (auto& g : dgm) {

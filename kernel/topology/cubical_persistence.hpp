@@ -17,18 +17,19 @@
 // values) is the one of any other tie-break. A 2D image is the slab of one voxel's thickness
 // over it (the same homotopy type at each level, the same diagram).
 //   dimension 0: union-find on the vertices over the edges in filtration order (elder rule);
-//   dimension 2 (top d-1): Alexander duality, union-find on the voxels plus the outside over the
-//     2-cells in reverse filtration order (Kaji, Sudo, Ahara, "Cubical Ripser: software for
-//     computing persistent homology of image and volume data", arXiv:2005.12692, 2020);
-//   dimension 1: column reduction of the boundary matrix of the 2-cells not paired by duality
-//     (clearing: Chen, Kerber, "Persistence algorithm with twist", EuroCG 2011), rows restricted
-//     to the edges not paired in dimension 0 (compression: Bauer, Kerber, Reininghaus,
-//     "Clear and compress: computing persistent homology in chunks", 2014); a column whose
-//     pivot is free is an apparent pair and is not stored.
-// Complexity: O(N log N) for the ranking (N voxels), O(N alpha(N)) for dimensions 0 and 2,
-// O(N) columns of four entries plus the reductions (cubic in the worst case, near linear on
-// images); memory about 40 N bytes. Width: cell indices in int64; N < 2^32 voxels and a cell
-// count times N below 2^64 (InvalidArgument beyond).
+//   dimension d-1 (2 in 3D, 1 in 2D): Alexander duality, union-find on the voxels plus the
+//     outside over the (d-1)-cells in reverse filtration order (Kaji, Sudo, Ahara, "Cubical
+//     Ripser: software for computing persistent homology of image and volume data",
+//     arXiv:2005.12692, 2020);
+//   dimension 1 in 3D: column reduction of the boundary matrix of the 2-cells that duality
+//     left unpaired (clearing: Chen, Kerber, "Persistence algorithm with twist", EuroCG
+//     2011), rows restricted to the edges not paired in dimension 0 (compression: Bauer,
+//     Kerber, Reininghaus, "Clear and compress: computing persistent homology in chunks",
+//     2014); a column whose pivot is free is an apparent pair and is not stored.
+// Complexity: O(N log N) for the ranking (N voxels) and for the union-finds (path halving,
+// linking by age), O(N) columns of at most four entries plus their reductions (cubic in the
+// worst case, near linear on images); memory about 60 N bytes. Width: cell indices in int64;
+// N < 2^32 voxels and a cell count times N below 2^64 (InvalidArgument beyond).
 // Errors: InvalidArgument for a dimension other than 2 or 3 or a value that is not finite (NaN,
 // +-infinity: an infinite death would read as an essential class).
 #pragma once
