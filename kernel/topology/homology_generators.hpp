@@ -13,9 +13,9 @@
 // kept (Edelsbrunner, Letscher, Zomorodian 2002; Zomorodian, Carlsson 2005), the cells in the
 // order (dimension, index), with clearing (Chen, Kerber 2011); a k-cell j whose column reduces
 // to zero and that is no pivot is essential, and the chain V_j is its generator. Complexity:
-// cubic in the number of cells in the worst case; on images the columns stay short, but the
-// chains of V can grow: meant for images of up to about 10^5 object voxels. Width: cell indices
-// in int64; the image's point count must fit int64 (Domain checks it).
+// cubic in the number of cells in the worst case (the columns of R and the chains of V can
+// grow; on images both stay short); memory: the chains of V kept for every negative cell.
+// Width: cell indices in int64; the image's point count must fit int64 (Domain checks it).
 // Errors: InvalidArgument for a dimension other than 2 or 3.
 #pragma once
 
