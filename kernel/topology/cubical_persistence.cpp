@@ -29,17 +29,23 @@ std::uint64_t order_key(double x) {
 // its voxels in the order (value, index).
 class Complex {
 public:
-  Complex(const Image<double>& values, std::array<std::int64_t, 3> n) : values_(values), n_(n) {
-    for (int k = 0; k < 3; ++k) m_[k] = 2 * n_[k] + 1;
-    voxels_ = n_[0] * n_[1] * n_[2];
+  Complex(const Image<double>& values, std::array<std::int64_t, 3> n) : n_(n) {
+    voxels_ = values.size(); // n0 n1 n2, checked by the Domain
+    // Below 2^32 voxels, the cell and vertex counts (at most 27 and 8 times more) fit int64.
+    if (voxels_ >= std::int64_t{kNone}) {
+      throw InvalidArgument("cubical persistence: " + std::to_string(voxels_) +
+                            " voxels are too many (at most 2^32 - 2)");
+    }
+    for (std::size_t k = 0; k < 3; ++k) m_[k] = 2 * n_[k] + 1;
     cells_ = m_[0] * m_[1] * m_[2];
     vertices_ = (n_[0] + 1) * (n_[1] + 1) * (n_[2] + 1);
     std::uint64_t product = 0;
-    if (voxels_ >= std::int64_t{kNone} || 3 * vertices_ >= std::int64_t{kNone} ||
+    if (3 * vertices_ >= std::int64_t{kNone} ||
         __builtin_mul_overflow(static_cast<std::uint64_t>(cells_),
                                static_cast<std::uint64_t>(voxels_), &product)) {
       throw InvalidArgument("cubical persistence: " + std::to_string(voxels_) +
-                            " voxels are too many (at most 2^32 - 1, and 3 (n+1)^3 < 2^32)");
+                            " voxels are too many (3 vertices and cells times voxels must fit "
+                            "32 and 64 bits)");
     }
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(static_cast<std::size_t>(voxels_));
     for (std::int64_t i = 0; i < voxels_; ++i) {
@@ -148,7 +154,6 @@ public:
   }
 
 private:
-  const Image<double>& values_;
   std::array<std::int64_t, 3> n_{}, m_{};
   std::int64_t voxels_ = 0, cells_ = 0, vertices_ = 0;
   std::vector<std::uint32_t> order_, rank_;
