@@ -50,6 +50,8 @@ void add_render_commands(CLI::App& app, Context& ctx);
 void add_csg_commands(CLI::App& app, Context& ctx);
 void add_convex_commands(CLI::App& app, Context& ctx);
 void add_motion_commands(CLI::App& app, Context& ctx);
+/// zdg topology persistence (cli/topology_persistence_command.cpp), added by add_topology_commands.
+void add_topology_persistence_command(CLI::App& topology);
 
 /// The extension of a path in lower case ("a/B.PLY" -> ".ply"), for the checks of the
 /// output and input formats.

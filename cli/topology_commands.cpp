@@ -7,6 +7,7 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/cli/volume_input.hpp>
+#include <zdg/kernel/io/cycles_ply.hpp>
 #include <zdg/kernel/io/npy_io.hpp>
 #include <zdg/kernel/io/output_files.hpp>
 #include <zdg/kernel/io/pgm_io.hpp>
@@ -19,6 +20,7 @@
 #include <zdg/kernel/topology/betti_numbers.hpp>
 #include <zdg/kernel/topology/connected_components.hpp>
 #include <zdg/kernel/topology/critical_kernel_thinning.hpp>
+#include <zdg/kernel/topology/homology_generators.hpp>
 #include <zdg/kernel/topology/homotopic_thinning.hpp>
 #include <zdg/kernel/topology/simple_points.hpp>
 #include <zdg/kernel/topology/skeleton_graph.hpp>
@@ -45,6 +47,7 @@ struct TopologyArgs {
   std::string html; ///< thin, skeleton: the viewer page of the result's boundary (3D)
   unsigned threads = 0;
   bool json = false, quiet = false, force = false;
+  bool generators = false; ///< betti: write representative cycles to -o FILE.ply
 };
 
 // A .pgm output holds a 2D image and a .vol output a 3D one: checked before any work.
@@ -179,7 +182,40 @@ void run_components(const TopologyArgs& a) {
   report(a, pair, mask, secs, {{"largest_sizes", sizes}});
 }
 
+// zdg topology betti --generators -o cycles.ply: representative cycles of each Betti number
+// (kernel/topology/homology_generators.hpp), written by kernel/io/cycles_ply.hpp.
+void run_betti_generators(const TopologyArgs& a) {
+  if (a.output.empty()) throw InvalidArgument("--generators writes the cycles to -o FILE.ply");
+  if (lower_extension(a.output) != ".ply") {
+    throw IoError(a.output + ": the cycles are a .ply file (got '" + lower_extension(a.output) +
+                  "')");
+  }
+  check_not_input(a.in.path, a.output);
+  OutputSet out(a.force ? Existing::replace : Existing::refuse);
+  const std::string staging = out.add(a.output).string();
+  const auto mask = load_object(a.in, 0, a.threads).mask;
+  const auto pair = pair_of(a, mask.dim());
+  if (!(pair == default_adjacency_pair(mask.dim()))) {
+    throw InvalidArgument("--generators: the cycles are those of the union of the closed voxels "
+                          "(--adjacency " +
+                          std::string(mask.dim() == 3 ? "26,6" : "8,4") + "; got " + pair.name() +
+                          ")");
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const HomologyGenerators g = homology_generators(mask);
+  const double secs = since(t0);
+  write_cycles_ply(staging, g, mask.domain().lowers());
+  out.commit();
+  nlohmann::json counts = nlohmann::json::array();
+  for (const auto& gens : g.generators) counts.push_back(gens.size());
+  report(a, pair, mask, secs, {{"generators", counts}});
+}
+
 void run_betti(const TopologyArgs& a) {
+  if (a.generators) {
+    run_betti_generators(a);
+    return;
+  }
   if (!a.output.empty()) throw InvalidArgument("topology betti writes no file (drop -o)");
   const auto mask = read_object(a);
   const auto pair = pair_of(a, mask.dim());
@@ -397,6 +433,11 @@ void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
     sub->add_flag("--force", args->force, "replace an existing output file");
     sub->add_flag("--quiet", args->quiet, "no progress on stderr");
     const std::string name = s.name;
+    if (name == "betti") {
+      sub->add_flag("--generators", args->generators,
+                    "write representative cycles of each Betti number to -o FILE.ply (26,6 / "
+                    "8,4: the union of the closed voxels)");
+    }
     if (name == "graph") {
       sub->add_option("--method", args->method,
                       "thinning: sequential or critical-kernel (parallel)")
@@ -424,6 +465,7 @@ void add_topology_commands(CLI::App& app, Context& /*ctx*/) {
       if (name == "graph") run_graph(*args);
     });
   }
+  add_topology_persistence_command(*top);
 }
 
 } // namespace zdg::cli

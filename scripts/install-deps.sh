@@ -21,11 +21,12 @@ packages=(
 )
 
 # The test suite's own packages (the viewer pages are checked in headless Chromium; the example
-# notebook runs in a Jupyter kernel through nbclient; an example reads a scikit-image sample):
+# notebook runs in a Jupyter kernel through nbclient; an example reads a scikit-image sample;
+# the persistence diagrams are compared with GUDHI's):
 # installed by scripts/run-tests.sh (ZDG_TEST_PACKAGES=1), not by the main job.
 if [ "${ZDG_TEST_PACKAGES:-0}" = 1 ]; then
   packages+=(chromium chromium-driver python3-selenium python3-nbclient python3-ipykernel
-            python3-skimage python3-pydicom)
+            python3-skimage python3-pydicom python3-gudhi)
 fi
 
 # Extra packages for one caller (CI adds the fuzzing toolchain: clang-14 libclang-rt-14-dev).

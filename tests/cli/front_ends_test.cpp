@@ -118,6 +118,9 @@ const std::vector<Operation>& operations() {
       {"topology graph", "", "",
        "serve and Python: not bound yet (issue #39 names the command line); the library "
        "function is kernel/topology/skeleton_graph.hpp"},
+      {"topology persistence", "", "",
+       "serve and Python: not bound yet (issue #39 names the command line); the library "
+       "function is cubical_persistence (kernel/topology/cubical_persistence.hpp)"},
   };
   return ops;
 }

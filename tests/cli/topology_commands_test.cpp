@@ -13,6 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
 
 namespace zdg {
 namespace {
@@ -244,6 +247,52 @@ TEST(TopologyCommands, GraphOfRingAndPlus) {
   r = test::run_zdg("topology graph " + f("plus.npy") + " -o " + f("g.npy"));
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("writes no file"), std::string::npos) << r.err;
+}
+
+} // namespace
+} // namespace zdg
+
+namespace zdg {
+namespace {
+
+// zdg topology betti --generators: the PLY holds b_k cycles per dimension (the header's comment
+// and the JSON agree with the Betti numbers), and the edges of each 1-cycle meet every vertex an
+// even number of times (a cycle mod 2).
+TEST(TopologyCommands, BettiGeneratorsWriteCyclesToPly) {
+  Files f;
+  save(f.path("torus.npy"), test::torus_image(8, 3));
+  const auto r = test::run_zdg("topology betti " + f("torus.npy") + " --generators -o " +
+                               f("cycles.ply") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["generators"], nlohmann::json::parse("[1, 1, 0]"));
+  EXPECT_EQ(j["betti"], nlohmann::json::array({"1", "1", "0"}));
+  std::ifstream in(f.path("cycles.ply"));
+  std::string line;
+  std::map<std::string, std::int64_t> count;
+  bool betti = false;
+  while (std::getline(in, line) && line != "end_header") {
+    if (line == "comment betti 1 1 0") betti = true;
+    std::istringstream w(line);
+    std::string word, name;
+    std::int64_t n = 0;
+    if (w >> word >> name >> n && word == "element") count[name] = n;
+  }
+  EXPECT_TRUE(betti);
+  ASSERT_GT(count["vertex"], 0);
+  EXPECT_EQ(count["point"], 1);
+  EXPECT_EQ(count["face"], 0);
+  for (std::int64_t i = 0; i < count["vertex"] + count["point"]; ++i) std::getline(in, line);
+  std::map<std::int64_t, int> degree;
+  for (std::int64_t i = 0; i < count["edge"]; ++i) {
+    std::int64_t a = 0, b = 0, cycle = 0;
+    in >> a >> b >> cycle;
+    EXPECT_EQ(cycle, 1);
+    ++degree[a];
+    ++degree[b];
+  }
+  ASSERT_GE(degree.size(), 8u);
+  for (const auto& [v, k] : degree) EXPECT_EQ(k % 2, 0) << "vertex " << v;
 }
 
 } // namespace
