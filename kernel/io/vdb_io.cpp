@@ -174,9 +174,32 @@ ScalarVolume read_vdb(const std::string& path) {
     throw IoError(path + ": not a readable OpenVDB file (" + e.what() + ")");
   }
   std::string types;
+  // zdg's own files name the integer dtype they were written from ("zdg_dtype").
+  auto restore = [&](ScalarVolume v, const openvdb::GridBase& base) {
+    const auto meta = base.getMetadata<openvdb::StringMetadata>("zdg_dtype");
+    if (!meta) return v;
+    DType t;
+    try {
+      t = dtype_from_name(meta->value());
+    } catch (const Error&) {
+      return v;
+    }
+    if (dtype_is_float(t) || t == v.array.dtype) return v;
+    std::vector<std::int64_t> values(static_cast<std::size_t>(v.count()));
+    for (std::int64_t i = 0; i < v.count(); ++i) {
+      values[static_cast<std::size_t>(i)] = integer_at(path, v, i);
+    }
+    try {
+      NpyArray a = make_npy(t, v.array.shape, values);
+      v.array = std::move(a);
+    } catch (const Error&) {
+      // A value that does not fit the named dtype: the grid's type stands.
+    }
+    return v;
+  };
   for (const auto& base : *grids) {
     if (auto g = openvdb::gridConstPtrCast<openvdb::BoolGrid>(base)) {
-      return dense_of<openvdb::BoolGrid, std::uint8_t>(path, *g, DType::Bool);
+      return restore(dense_of<openvdb::BoolGrid, std::uint8_t>(path, *g, DType::Bool), *base);
     }
     if (auto g = openvdb::gridConstPtrCast<openvdb::FloatGrid>(base)) {
       return dense_of<openvdb::FloatGrid, float>(path, *g, DType::F32);
@@ -185,10 +208,10 @@ ScalarVolume read_vdb(const std::string& path) {
       return dense_of<openvdb::DoubleGrid, double>(path, *g, DType::F64);
     }
     if (auto g = openvdb::gridConstPtrCast<openvdb::Int32Grid>(base)) {
-      return dense_of<openvdb::Int32Grid, std::int32_t>(path, *g, DType::I32);
+      return restore(dense_of<openvdb::Int32Grid, std::int32_t>(path, *g, DType::I32), *base);
     }
     if (auto g = openvdb::gridConstPtrCast<openvdb::Int64Grid>(base)) {
-      return dense_of<openvdb::Int64Grid, std::int64_t>(path, *g, DType::I64);
+      return restore(dense_of<openvdb::Int64Grid, std::int64_t>(path, *g, DType::I64), *base);
     }
     types += (types.empty() ? "" : ", ") + base->valueType();
   }
@@ -249,6 +272,9 @@ void write_vdb(const std::string& path, const ScalarVolume& v) {
                      lx = v.lower[two ? 1 : 2];
   const std::int64_t nz = two ? 1 : v.array.shape[0], ny = v.array.shape[two ? 0 : 1],
                      nx = v.array.shape[two ? 1 : 2];
+  if (!v.scaled() && !dtype_is_float(t)) {
+    grid->insertMeta("zdg_dtype", openvdb::StringMetadata(dtype_name(t)));
+  }
   grid->insertMeta("zdg_box_min",
                    openvdb::Vec3IMetadata(openvdb::Vec3i(static_cast<int>(lx), static_cast<int>(ly),
                                                          static_cast<int>(lz))));

@@ -7,6 +7,7 @@
 #include <zdg/kernel/io/volume_io.hpp>
 
 #include "tests/support/cli.hpp"
+#include <zdg/kernel/io/vdb_io.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -97,6 +98,7 @@ std::map<std::string, std::string> write_formats(const fs::path& dir, int dim) {
     VolumeWriteOptions v2;
     v2.vol_version = 2;
     put("vol-v2", "v2.vol", v2);
+    if (vdb_supported()) put("vdb", "v.vdb");
   } else {
     put("pgm", "p.pgm");
   }
