@@ -529,7 +529,7 @@ VoxelizationMode parse_voxelization_mode(const std::string& text) {
   if (text == "6") return VoxelizationMode::six;
   if (text == "26") return VoxelizationMode::twenty_six;
   if (text == "solid") return VoxelizationMode::solid;
-  throw InvalidArgument("voxelization mode '" + text + "' (6, 26, conservative or solid)");
+  throw InvalidArgument("voxelization mode '" + text + "' is not 6, 26, conservative or solid");
 }
 
 VoxelGrid voxel_grid_for(const PolygonMesh& mesh, double h,

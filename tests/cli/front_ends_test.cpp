@@ -111,6 +111,9 @@ const std::vector<Operation>& operations() {
       {"topology graph", "", "",
        "serve and Python: not bound yet (issue #39 names the command line); the library "
        "function is kernel/topology/skeleton_graph.hpp"},
+      {"voxelize", "", "",
+       "serve and Python: works on files (a mesh in, a volume out); the library function is "
+       "voxelize (kernel/digitization/voxelize.hpp)"},
   };
   return ops;
 }
