@@ -93,13 +93,28 @@ template <class T>
 T absv(const T& x, bool& unsure) {
   return sgn(x, unsure) < 0 ? T(-x) : x;
 }
+// |v - X| <= e implies ||v| - |X|| <= e: no sign needed.
+inline Fe absv(const Fe& x, bool& /*unsure*/) {
+  return {std::fabs(x.v), x.e};
+}
+
+// Whether some component of n is certainly nonzero (else: whether n is exactly zero, flagging
+// `u` when that is uncertain).
+template <class T>
+bool nonzero(const Vec<T>& n, bool& u) {
+  for (int i = 0; i < 3; ++i) {
+    bool local = false;
+    if (sgn(n[i], local) != 0 && !local) return true;
+  }
+  return sgn(n[0], u) != 0 || sgn(n[1], u) != 0 || sgn(n[2], u) != 0;
+}
 
 // Grid coordinates are doubled, 2 (p - o) / h, so that centres (2i + 1) are integers; a voxel
 // in local coordinates (its centre subtracted) is the cube [-1, 1]^3.
 
 // Akenine-Moller's separating axis test: does the closed triangle a meet [-1, 1]^3?
 template <class T>
-bool meets_cube(const Tri<T>& a, bool& u) {
+bool meets_cube(const Tri<T>& a, const Tri<T>& f, bool& u) {
   const T one = num<T>(1);
   for (int d = 0; d < 3; ++d) {
     if (sgn(a[0][d] - one, u) > 0 && sgn(a[1][d] - one, u) > 0 && sgn(a[2][d] - one, u) > 0)
@@ -107,7 +122,6 @@ bool meets_cube(const Tri<T>& a, bool& u) {
     if (sgn(a[0][d] + one, u) < 0 && sgn(a[1][d] + one, u) < 0 && sgn(a[2][d] + one, u) < 0)
       return false;
   }
-  const Vec<T> f[3] = {sub(a[1], a[0]), sub(a[2], a[1]), sub(a[0], a[2])};
   {
     const Vec<T> n = cross(f[0], f[1]);
     const T s = dot(n, a[0]);
@@ -136,10 +150,9 @@ bool meets_cube(const Tri<T>& a, bool& u) {
 // Huang et al.'s test for the centre 0: slab |n.a0| <= N(n) (N = l_inf for six, l_1 for 26)
 // with the centre projecting into the triangle, or squared distance to an edge <= r2 (1 or 3).
 template <class T>
-bool meets_huang(const Tri<T>& a, bool six, bool& u) {
-  const Vec<T> f[3] = {sub(a[1], a[0]), sub(a[2], a[1]), sub(a[0], a[2])};
+bool meets_huang(const Tri<T>& a, const Tri<T>& f, bool six, bool& u) {
   const Vec<T> n = cross(f[0], f[1]);
-  if (sgn(n[0], u) != 0 || sgn(n[1], u) != 0 || sgn(n[2], u) != 0) {
+  if (nonzero(n, u)) {
     const T s = dot(n, a[0]);
     bool slab = false;
     if (six) {
@@ -178,13 +191,19 @@ bool meets_huang(const Tri<T>& a, bool six, bool& u) {
 }
 
 template <class T>
-bool surface_test(const Tri<T>& g, const std::array<std::int64_t, 3>& v, VoxelizationMode mode,
-                  bool& u) {
+bool surface_test(const Tri<T>& g, const Tri<T>& f, const std::array<std::int64_t, 3>& v,
+                  VoxelizationMode mode, bool& u) {
   Tri<T> a;
   for (int k = 0; k < 3; ++k)
     for (int d = 0; d < 3; ++d) a[k][d] = g[k][d] - num<T>(2 * v[d] + 1);
-  if (mode == VoxelizationMode::conservative) return meets_cube(a, u);
-  return meets_huang(a, mode == VoxelizationMode::six, u);
+  if (mode == VoxelizationMode::conservative) return meets_cube(a, f, u);
+  return meets_huang(a, f, mode == VoxelizationMode::six, u);
+}
+
+// The edges f_k = g_{k+1} - g_k.
+template <class T>
+Tri<T> edges(const Tri<T>& g) {
+  return {sub(g[1], g[0]), sub(g[2], g[1]), sub(g[0], g[2])};
 }
 
 // 2 (p - o) / h with a certified error bound.
@@ -295,36 +314,59 @@ void voxelize_triangle(const PolygonMesh& mesh, const VoxelGrid& grid, const Pre
   for (int k = 0; k < 3; ++k)
     g[k] = p.coords[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
   std::optional<Tri<BigRational>> exact;
-  // Bounding box of the voxels whose centre is within 2 (doubled units, > sqrt 3) of the
-  // triangle, one voxel of slack for rounding.
+  Tri<BigRational> exact_edges;
+  // The edges as 2 (q - p) / h from the doubles themselves: exact zeros where coordinates are
+  // equal, and errors relative to the edge, not to the distance from the origin.
+  Tri<Fe> f;
+  for (int k = 0; k < 3; ++k) {
+    const auto& pa = mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+    const auto& pb =
+        mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])];
+    f[k] = {grid_coordinate(pb.x, pa.x, grid.h), grid_coordinate(pb.y, pa.y, grid.h),
+            grid_coordinate(pb.z, pa.z, grid.h)};
+  }
+  // The voxels of each mode have their centre within `reach` (doubled units) of the triangle:
+  // 1 (l_inf, the cube; l_2, six) or sqrt 3 (twenty_six). The pruning below works on the
+  // doubles with a slack far above their rounding; every voxel it keeps is tested exactly.
+  const double reach = mode == VoxelizationMode::twenty_six ? 1.7320508075688773 : 1.0;
   std::int64_t lo[3], hi[3];
   const std::int64_t n[3] = {grid.extents[0], grid.extents[1], grid.extents[2]};
   for (int d = 0; d < 3; ++d) {
     const double mn = std::min({g[0][d].v, g[1][d].v, g[2][d].v});
     const double mx = std::max({g[0][d].v, g[1][d].v, g[2][d].v});
-    lo[d] = clamp_floor((mn - 3) / 2 - 1, -1, n[d]);
-    hi[d] = clamp_floor((mx + 1) / 2 + 1, -1, n[d] - 1);
-    lo[d] = std::max<std::int64_t>(lo[d], 0);
+    const double slack = 1e-3 + 1e-12 * (std::fabs(mn) + std::fabs(mx));
+    lo[d] = clamp_floor(std::ceil((mn - reach - 1) / 2 - slack), 0, n[d]);
+    hi[d] = clamp_floor((mx + reach - 1) / 2 + slack, -1, n[d] - 1);
   }
   lo[2] = std::max(lo[2], z0);
   hi[2] = std::min(hi[2], z1 - 1);
   if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]) return;
-  // Rows along the dominant axis of the (approximate) normal, cut by the slab |n.(c - v0)| <=
-  // 2 |n| (every mode's voxels have their centre within sqrt 3 < 2 of the plane).
+  // Rows along the dominant axis d of the (approximate) normal n, cut to the slab
+  // |n.(c - v0)| <= B: B = ||n||_1 (the plane meets the cube), |n| (distance 1, six) or sqrt 3
+  // |n| (twenty_six). Not cut when n is too small to trust (a sliver: whole rows).
   double nv[3];
+  double size = 0;
   {
     const double e1[3] = {g[1][0].v - g[0][0].v, g[1][1].v - g[0][1].v, g[1][2].v - g[0][2].v};
     const double e2[3] = {g[2][0].v - g[0][0].v, g[2][1].v - g[0][1].v, g[2][2].v - g[0][2].v};
     nv[0] = e1[1] * e2[2] - e1[2] * e2[1];
     nv[1] = e1[2] * e2[0] - e1[0] * e2[2];
     nv[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    size = std::sqrt((e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]) *
+                     (e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2]));
   }
   int d = 0;
   for (int k = 1; k < 3; ++k)
     if (std::fabs(nv[k]) > std::fabs(nv[d])) d = k;
   const int b = (d + 1) % 3, c = (d + 2) % 3;
   const double nn = std::sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]);
-  const bool cut = std::isfinite(nn) && nn > 0 && std::fabs(nv[d]) > 0;
+  const bool cut = std::isfinite(nn) && std::isfinite(size) && nn > 1e-9 * size;
+  double bound = 0;
+  if (mode == VoxelizationMode::conservative)
+    bound = std::fabs(nv[0]) + std::fabs(nv[1]) + std::fabs(nv[2]);
+  else
+    bound = reach * nn;
+  const double w = cut ? bound / std::fabs(nv[d]) : 0;
   const double off = nv[0] * g[0][0].v + nv[1] * g[0][1].v + nv[2] * g[0][2].v;
   const std::int64_t nx = n[0], ny = n[1];
   std::array<std::int64_t, 3> v{};
@@ -334,9 +376,9 @@ void voxelize_triangle(const PolygonMesh& mesh, const VoxelGrid& grid, const Pre
       if (cut) {
         const double cb = static_cast<double>(2 * ib + 1), cc = static_cast<double>(2 * ic + 1);
         const double base = (off - nv[b] * cb - nv[c] * cc) / nv[d];
-        const double w = 2 * nn / std::fabs(nv[d]);
-        a0 = std::max(a0, clamp_floor((base - w - 1) / 2 - 1, lo[d], hi[d] + 1));
-        a1 = std::min(a1, clamp_floor((base + w - 1) / 2 + 2, lo[d] - 1, hi[d]));
+        const double slack = 1e-3 + 1e-12 * (std::fabs(base) + w);
+        a0 = std::max(a0, clamp_floor(std::ceil((base - w - 1) / 2 - slack), lo[d], hi[d] + 1));
+        a1 = std::min(a1, clamp_floor((base + w - 1) / 2 + slack, lo[d] - 1, hi[d]));
       }
       v[static_cast<std::size_t>(b)] = ib;
       v[static_cast<std::size_t>(c)] = ic;
@@ -346,11 +388,14 @@ void voxelize_triangle(const PolygonMesh& mesh, const VoxelGrid& grid, const Pre
         std::uint8_t& cell = out[idx];
         if (cell) continue;
         bool unsure = false;
-        bool in = surface_test(g, v, mode, unsure);
+        bool in = surface_test(g, f, v, mode, unsure);
         if (unsure) {
-          if (!exact) exact = exact_triangle(mesh, grid, t);
+          if (!exact) {
+            exact = exact_triangle(mesh, grid, t);
+            exact_edges = edges(*exact);
+          }
           bool dummy = false;
-          in = surface_test(*exact, v, mode, dummy);
+          in = surface_test(*exact, exact_edges, v, mode, dummy);
         }
         if (in) cell = 1;
       }
@@ -643,7 +688,7 @@ bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle, const Vo
     for (int d = 0; d < 3; ++d) t[k][d] = exact_grid_coordinate(c[d], o[d], grid.h);
   }
   bool u = false;
-  return surface_test(t, voxel, mode, u);
+  return surface_test(t, edges(t), voxel, mode, u);
 }
 
 Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelGrid& grid, VoxelizationMode mode,
