@@ -190,12 +190,13 @@ bool meets_huang(const Tri<T>& a, const Tri<T>& f, bool six, bool& u) {
   return false;
 }
 
+// The test of the voxel whose centre is `centre` (doubled units, relative to g's frame).
 template <class T>
-bool surface_test(const Tri<T>& g, const Tri<T>& f, const std::array<std::int64_t, 3>& v,
+bool surface_test(const Tri<T>& g, const Tri<T>& f, const std::array<std::int64_t, 3>& centre,
                   VoxelizationMode mode, bool& u) {
   Tri<T> a;
   for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d) a[k][d] = g[k][d] - num<T>(2 * v[d] + 1);
+    for (int d = 0; d < 3; ++d) a[k][d] = g[k][d] - num<T>(centre[static_cast<std::size_t>(d)]);
   if (mode == VoxelizationMode::conservative) return meets_cube(a, f, u);
   return meets_huang(a, f, mode == VoxelizationMode::six, u);
 }
@@ -218,6 +219,22 @@ Fe grid_coordinate(double p, double o, double h) {
   if (e > 0 || std::fabs(d) < 0x1p-900 || std::fabs(q) < 0x1p-900) e += 0x1p-1000;
   if (d == 0 && derr == 0) e = 0;
   return {2 * q, 2 * e};
+}
+
+// 2 (p - o) / h - c0 (c0 an integer, the doubled centre of an anchor voxel) with an error
+// bound relative to the result, not to 2 (p - o) / h: with d + derr = p - o (TwoSum) and
+// q h = d + r (FMA), 2 (p - o) / h = 2 q + 2 (derr - r) / h.
+Fe anchored_coordinate(double p, double o, double h, double c0) {
+  const double d = p - o;
+  const double bb = d - p;
+  const double derr = (p - (d - bb)) + (-o - bb);
+  const double q = d / h;
+  const double r = std::fma(q, h, -d);
+  const Fe w = Fe{2 * q, 0} - Fe{c0, 0}; // TwoSum: the error of 2q - c0 exactly
+  const double corr = 2 * (derr - r) / h;
+  const bool tiny = std::fabs(d) < 0x1p-900 || std::fabs(q) < 0x1p-900;
+  const Fe c{corr, std::fabs(corr) * 0x1p-50 + ((corr != 0 || tiny) ? 0x1p-1000 : 0)};
+  return w + c;
 }
 
 BigRational exact_grid_coordinate(double p, double o, double h) {
@@ -341,6 +358,19 @@ void voxelize_triangle(const PolygonMesh& mesh, const VoxelGrid& grid, const Pre
   lo[2] = std::max(lo[2], z0);
   hi[2] = std::min(hi[2], z1 - 1);
   if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]) return;
+  // The vertices relative to the centre of voxel lo, to about 1e-16 of their (small) size: the
+  // filter then certifies all but the near-exact ties (relative to the origin, the coordinates
+  // carry an error of 1e-16 times the grid's size, which left ties of 1e-13 voxel undecided).
+  Tri<Fe> ga;
+  {
+    const double o[3] = {grid.origin.x, grid.origin.y, grid.origin.z};
+    for (int k = 0; k < 3; ++k) {
+      const auto& pk = mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+      const double c[3] = {pk.x, pk.y, pk.z};
+      for (int e = 0; e < 3; ++e)
+        ga[k][e] = anchored_coordinate(c[e], o[e], grid.h, static_cast<double>(2 * lo[e] + 1));
+    }
+  }
   // Rows along the dominant axis d of the (approximate) normal n, cut to the slab
   // |n.(c - v0)| <= B: B = ||n||_1 (the plane meets the cube), |n| (distance 1, six) or sqrt 3
   // |n| (twenty_six). Not cut when n is too small to trust (a sliver: whole rows).
@@ -388,14 +418,17 @@ void voxelize_triangle(const PolygonMesh& mesh, const VoxelGrid& grid, const Pre
         std::uint8_t& cell = out[idx];
         if (cell) continue;
         bool unsure = false;
-        bool in = surface_test(g, f, v, mode, unsure);
+        const std::array<std::int64_t, 3> rel = {2 * (v[0] - lo[0]), 2 * (v[1] - lo[1]),
+                                                 2 * (v[2] - lo[2])};
+        bool in = surface_test(ga, f, rel, mode, unsure);
         if (unsure) {
           if (!exact) {
             exact = exact_triangle(mesh, grid, t);
             exact_edges = edges(*exact);
           }
           bool dummy = false;
-          in = surface_test(*exact, exact_edges, v, mode, dummy);
+          const std::array<std::int64_t, 3> centre = {2 * v[0] + 1, 2 * v[1] + 1, 2 * v[2] + 1};
+          in = surface_test(*exact, exact_edges, centre, mode, dummy);
         }
         if (in) cell = 1;
       }
@@ -688,7 +721,8 @@ bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle, const Vo
     for (int d = 0; d < 3; ++d) t[k][d] = exact_grid_coordinate(c[d], o[d], grid.h);
   }
   bool u = false;
-  return surface_test(t, edges(t), voxel, mode, u);
+  const std::array<std::int64_t, 3> centre = {2 * voxel[0] + 1, 2 * voxel[1] + 1, 2 * voxel[2] + 1};
+  return surface_test(t, edges(t), centre, mode, u);
 }
 
 Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelGrid& grid, VoxelizationMode mode,
