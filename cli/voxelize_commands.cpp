@@ -5,7 +5,8 @@
 // the grid of step H whose voxel (i, j, k) is the cube origin + H [i, i+1] x [j, j+1] x [k, k+1]
 // (default origin: a margin of two voxels below the mesh's bounding box), written as a uint8 0/1
 // volume (.npy, .vol, .nii, .nii.gz; NIfTI with spacing H and the first voxel's centre as its
-// origin) through an OutputSet. The mesh is read from a .ply (kernel/io/ply_read.hpp). `.vdb`
+// origin) through an OutputSet. The mesh is read from a .ply, .obj or .off
+// (kernel/io/mesh_read.hpp). `.vdb`
 // is refused: zdg is built without OpenVDB.
 // Bad input (a mesh with a non-finite coordinate, a face using a vertex twice or out of range,
 // no faces, a grid of more than --max-voxels voxels, a non-closed mesh in solid mode, a bad
@@ -14,8 +15,8 @@
 #include <zdg/cli/commands.hpp>
 #include <zdg/kernel/digitization/voxelize.hpp>
 #include <zdg/kernel/images/scalar_volume.hpp>
+#include <zdg/kernel/io/mesh_read.hpp>
 #include <zdg/kernel/io/output_files.hpp>
-#include <zdg/kernel/io/ply_read.hpp>
 #include <zdg/kernel/io/volume_io.hpp>
 #include <zdg/kernel/parallel/parallel_for.hpp>
 
@@ -77,15 +78,15 @@ void run(const VoxelizeArgs& a) {
   if (!(max_voxels_value >= 1 && max_voxels_value <= 0x1p62))
     throw InvalidArgument("--max-voxels: " + a.max_voxels + " is not in 1 .. 2^62");
   const auto max_voxels = static_cast<std::int64_t>(max_voxels_value);
-  if (lower_extension(a.input) != ".ply")
-    throw IoError(a.input + ": zdg voxelize reads a .ply mesh (got '" + lower_extension(a.input) +
+  const std::string in_ext = lower_extension(a.input);
+  if (in_ext != ".ply" && in_ext != ".obj" && in_ext != ".off")
+    throw IoError(a.input + ": zdg voxelize reads a .ply, .obj or .off mesh (got '" + in_ext +
                   "')");
   check_not_input(a.input, a.output);
   OutputSet out(a.force ? Existing::replace : Existing::refuse);
   const std::string staged = out.add(a.output).string();
   const auto t0 = std::chrono::steady_clock::now();
-  const PlyMesh ply = read_ply(a.input);
-  const PolygonMesh& mesh = ply.mesh;
+  const PolygonMesh mesh = read_mesh(a.input);
   if (mesh.face_count() == 0) throw InvalidArgument(a.input + ": the mesh has no faces");
   VoxelGrid grid;
   try {
@@ -135,7 +136,7 @@ void add_voxelize_commands(CLI::App& app, Context& /*ctx*/) {
   auto args = std::make_shared<VoxelizeArgs>();
   auto* cmd = app.add_subcommand(
       "voxelize", "Exact voxelization of a triangle mesh: surface (6, 26, conservative) or solid");
-  cmd->add_option("MESH", args->input, "input mesh (.ply)")->required();
+  cmd->add_option("MESH", args->input, "input mesh (.ply, .obj, .off)")->required();
   cmd->add_option("--h", args->h, "grid step (voxel edge), a positive number")->required();
   cmd->add_option("--origin", args->origin,
                   "X,Y,Z: the corner of voxel (0, 0, 0) (default: two voxels below the mesh)");
