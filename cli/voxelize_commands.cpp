@@ -1,4 +1,4 @@
-// zdg voxelize MESH --h H [--origin X,Y,Z] [--mode 6|26|conservative|solid] -o OUT
+// zdg voxelize MESH --h H [--origin X,Y,Z] [--mode 6|26|conservative|solid] [--winding T] -o OUT
 //              [--max-voxels N] [--threads N] [--json] [--force]
 //
 // The exact voxelization of a triangle or polygon mesh (kernel/digitization/voxelize.hpp) on
@@ -7,7 +7,8 @@
 // volume (.npy, .vol, .nii, .nii.gz; NIfTI with spacing H and the first voxel's centre as its
 // origin) through an OutputSet. The mesh is read from a .ply, .obj or .off
 // (kernel/io/mesh_read.hpp). `.vdb`
-// is refused: zdg is built without OpenVDB.
+// is refused: zdg is built without OpenVDB. --winding T (solid only) takes the centres whose
+// generalized winding number is >= T instead of the exact parity, for meshes that are not closed.
 // Bad input (a mesh with a non-finite coordinate, a face using a vertex twice or out of range,
 // no faces, a grid of more than --max-voxels voxels, a non-closed mesh in solid mode, a bad
 // number): one line, exit 2, nothing written.
@@ -24,6 +25,7 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace zdg::cli {
@@ -31,7 +33,7 @@ namespace zdg::cli {
 namespace {
 
 struct VoxelizeArgs {
-  std::string input, output, h, origin, mode = "conservative", max_voxels = "4294967296";
+  std::string input, output, h, origin, winding, mode = "conservative", max_voxels = "4294967296";
   unsigned threads = 0;
   bool json = false, force = false;
 };
@@ -78,6 +80,12 @@ void run(const VoxelizeArgs& a) {
   if (!(max_voxels_value >= 1 && max_voxels_value <= 0x1p62))
     throw InvalidArgument("--max-voxels: " + a.max_voxels + " is not in 1 .. 2^62");
   const auto max_voxels = static_cast<std::int64_t>(max_voxels_value);
+  std::optional<double> winding;
+  if (!a.winding.empty()) {
+    if (mode != VoxelizationMode::solid)
+      throw InvalidArgument("--winding " + a.winding + ": a threshold of the solid (--mode solid)");
+    winding = parse_number(a.winding, "--winding");
+  }
   const std::string in_ext = lower_extension(a.input);
   if (in_ext != ".ply" && in_ext != ".obj" && in_ext != ".off")
     throw IoError(a.input + ": zdg voxelize reads a .ply, .obj or .off mesh (got '" + in_ext +
@@ -91,11 +99,17 @@ void run(const VoxelizeArgs& a) {
   VoxelGrid grid;
   try {
     grid = voxel_grid_for(mesh, h, origin, max_voxels);
-    if (mode == VoxelizationMode::solid) check_closed_mesh(mesh);
+    if (mode == VoxelizationMode::solid && !winding) check_closed_mesh(mesh);
   } catch (const InvalidArgument& e) {
     throw InvalidArgument(a.input + ": " + e.what());
   }
-  const Image<std::uint8_t> vox = voxelize(mesh, grid, mode, a.threads);
+  Image<std::uint8_t> vox;
+  try {
+    vox = winding ? voxelize_winding(mesh, grid, *winding, a.threads)
+                  : voxelize(mesh, grid, mode, a.threads);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(a.input + ": " + e.what());
+  }
   std::int64_t count = 0;
   for (auto x : vox.values()) count += x;
   ScalarVolume vol = make_scalar_volume(vox);
@@ -120,6 +134,7 @@ void run(const VoxelizeArgs& a) {
          {"shape", {e[2], e[1], e[0]}},
          {"faces", mesh.face_count()},
          {"voxels", std::to_string(count)},
+         {"winding", winding ? nlohmann::json(*winding) : nlohmann::json(nullptr)},
          {"threads", worker_count(a.threads, e[2])},
          {"seconds", secs}});
     return;
@@ -144,6 +159,9 @@ void add_voxelize_commands(CLI::App& app, Context& /*ctx*/) {
                   "6 (6-separating, Huang et al.), 26 (26-separating), conservative (every voxel "
                   "the surface touches), solid (centres inside a closed mesh)")
       ->capture_default_str();
+  cmd->add_option("--winding", args->winding,
+                  "T: solid of a mesh that need not be closed, the centres whose generalized "
+                  "winding number is >= T (floating point; O(faces x voxels), bounded)");
   cmd->add_option("-o,--output", args->output,
                   "output volume, uint8 0/1 (.npy, .vol, .nii, .nii.gz)")
       ->required();

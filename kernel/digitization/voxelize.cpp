@@ -660,6 +660,61 @@ VoxelGrid voxel_grid_for(const PolygonMesh& mesh, double h,
   return g;
 }
 
+Image<std::uint8_t> voxelize_winding(const PolygonMesh& mesh, const VoxelGrid& grid,
+                                     double threshold, unsigned threads, double max_work) {
+  check_grid(grid);
+  check_mesh(mesh);
+  if (!std::isfinite(threshold))
+    throw InvalidArgument("voxelize: the winding threshold is not finite");
+  const Prepared p = prepare(mesh, grid);
+  const std::int64_t nx = grid.extents[0], ny = grid.extents[1], nz = grid.extents[2];
+  const double work = static_cast<double>(p.tris.size()) * static_cast<double>(nx) *
+                      static_cast<double>(ny) * static_cast<double>(nz);
+  if (work > max_work)
+    throw InvalidArgument("voxelize: the generalized winding number of " +
+                          std::to_string(p.tris.size()) + " triangles at " +
+                          std::to_string(nx * ny * nz) + " voxels is " + std::to_string(work) +
+                          " solid angles, past the limit of " + std::to_string(max_work) +
+                          " (a larger h, or a closed mesh for the exact solid)");
+  Image<std::uint8_t> out(Domain({nz, ny, nx}));
+  auto& vol = out.values();
+  constexpr double kFourPi = 12.566370614359172;
+  parallel_for(nz, threads, [&](std::int64_t k) {
+    const double cz = grid.origin.z + grid.h * (static_cast<double>(k) + 0.5);
+    for (std::int64_t j = 0; j < ny; ++j) {
+      const double cy = grid.origin.y + grid.h * (static_cast<double>(j) + 0.5);
+      for (std::int64_t i = 0; i < nx; ++i) {
+        const double cx = grid.origin.x + grid.h * (static_cast<double>(i) + 0.5);
+        double sum = 0;
+        for (const auto& t : p.tris) {
+          double v[3][3];
+          for (int q = 0; q < 3; ++q) {
+            const auto& w = mesh.vertices[static_cast<std::size_t>(t[static_cast<std::size_t>(q)])];
+            v[q][0] = w.x - cx;
+            v[q][1] = w.y - cy;
+            v[q][2] = w.z - cz;
+          }
+          const auto len = [](const double* a) {
+            return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+          };
+          const auto dt = [](const double* a, const double* b) {
+            return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+          };
+          const double la = len(v[0]), lb = len(v[1]), lc = len(v[2]);
+          const double det = v[0][0] * (v[1][1] * v[2][2] - v[1][2] * v[2][1]) -
+                             v[0][1] * (v[1][0] * v[2][2] - v[1][2] * v[2][0]) +
+                             v[0][2] * (v[1][0] * v[2][1] - v[1][1] * v[2][0]);
+          const double den =
+              la * lb * lc + dt(v[0], v[1]) * lc + dt(v[1], v[2]) * la + dt(v[2], v[0]) * lb;
+          sum += 2 * std::atan2(det, den);
+        }
+        vol[static_cast<std::size_t>((k * ny + j) * nx + i)] = sum / kFourPi >= threshold;
+      }
+    }
+  });
+  return out;
+}
+
 void check_closed_mesh(const PolygonMesh& mesh) {
   check_mesh(mesh);
   // Merge vertices of equal coordinates.

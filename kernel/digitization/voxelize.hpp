@@ -98,6 +98,16 @@ Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelGrid& grid, Vox
 bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle, const VoxelGrid& grid,
                          const std::array<std::int64_t, 3>& voxel, VoxelizationMode mode);
 
+/// The solid of a mesh that need not be closed (Jacobson, Kavan, Sorkine-Hornung, "Robust
+/// inside-outside segmentation using generalized winding numbers", SIGGRAPH 2013): the voxels
+/// whose centre c has w(c) >= threshold, w(c) = sum over the (fanned) triangles of their solid
+/// angle at c (Van Oosterom, Strackee, IEEE TBME 1983) over 4 pi, in double: not exact (w is
+/// transcendental), and a centre on the surface or within rounding of a threshold crossing may go
+/// either way. w = 1 inside and 0 outside a closed outward mesh. Cost O(F N) for F triangles and
+/// N voxels, checked first: InvalidArgument when F N > max_work (default 10^9).
+Image<std::uint8_t> voxelize_winding(const PolygonMesh& mesh, const VoxelGrid& grid,
+                                     double threshold, unsigned threads = 0, double max_work = 1e9);
+
 /// Checks that the mesh is closed and consistently oriented (see solid above); InvalidArgument
 /// naming the first edge that is not otherwise.
 void check_closed_mesh(const PolygonMesh& mesh);

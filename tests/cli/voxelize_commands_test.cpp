@@ -85,6 +85,29 @@ TEST(VoxelizeCommands, OriginAsGivenAndTextReport) {
   EXPECT_NE(r.out.find("voxels (conservative)"), std::string::npos) << r.out;
 }
 
+// An open mesh: solid refuses it (one line, exit 2), --winding takes it.
+TEST(VoxelizeCommands, WindingForAnOpenMesh) {
+  Files f;
+  std::string open = kTetrahedron;
+  open.replace(open.find("element face 4"), 14, "element face 3");
+  open.erase(open.rfind("3 1 2 3\n"));
+  f.write("open.ply", open);
+  auto r = test::run_zdg("voxelize " + f("open.ply") + " --h 0.05 --mode solid -o " + f("a.npy"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("not closed"), std::string::npos) << r.err;
+  r = test::run_zdg("voxelize " + f("open.ply") + " --h 0.05 --mode solid --winding 0.5 -o " +
+                    f("a.npy") + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["winding"], 0.5);
+  const PolygonMesh mesh = read_ply(f.path("open.ply")).mesh;
+  const Image<std::uint8_t> want = voxelize_winding(mesh, voxel_grid_for(mesh, 0.05), 0.5, 1);
+  std::int64_t count = 0;
+  for (auto x : want.values()) count += x;
+  EXPECT_EQ(j["voxels"], std::to_string(count));
+  EXPECT_GT(count, 0);
+}
+
 // A million copies of one small face inside one voxel (binary PLY): voxelized once, at once.
 TEST(VoxelizeCommands, MillionFacesOnOneVoxel) {
   Files f;
