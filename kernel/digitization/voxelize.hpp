@@ -32,7 +32,8 @@
 //                 exactly one (the cube [0.5, 3.5]^3 in grid units gets 3^3 voxels, not 4^3).
 //                 The mesh must be closed: after merging vertices of equal coordinates, every
 //                 directed edge (a, b) of a triangle with three distinct vertices appears once and
-//                 (b, a) once; InvalidArgument naming the first edge otherwise.
+//                 (b, a) once; InvalidArgument naming the first edge otherwise (for other
+//                 meshes, voxelize_winding below).
 // Hence six <= conservative <= twenty_six (as sets), each decided exactly.
 //
 // Exactness. Coordinates, o and h are doubles, i.e. dyadic rationals, and every predicate is
