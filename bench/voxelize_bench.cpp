@@ -25,7 +25,7 @@ void Voxelize(benchmark::State& state) {
   const auto mode = static_cast<VoxelizationMode>(state.range(1));
   const auto threads = static_cast<unsigned>(state.range(2));
   const zdg::PolygonMesh mesh = zdg::test::sphere_mesh(n).mesh;
-  const zdg::VoxelGrid grid = zdg::voxel_grid_for(mesh, 1.0 / 508);
+  const zdg::VoxelizationGrid grid = zdg::voxel_grid_for(mesh, 1.0 / 508);
   std::int64_t voxels = 0;
   for (auto _ : state) {
     const auto img = zdg::voxelize(mesh, grid, mode, threads);

@@ -96,7 +96,7 @@ void run(const VoxelizeArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const PolygonMesh mesh = read_mesh(a.input);
   if (mesh.face_count() == 0) throw InvalidArgument(a.input + ": the mesh has no faces");
-  VoxelGrid grid;
+  VoxelizationGrid grid;
   try {
     grid = voxel_grid_for(mesh, h, origin, max_voxels);
     if (mode == VoxelizationMode::solid && !winding) check_closed_mesh(mesh);

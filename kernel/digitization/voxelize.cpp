@@ -255,7 +255,7 @@ struct Prepared {
   std::vector<Vec<Fe>> coords;                   // per vertex, doubled grid coordinates
 };
 
-Prepared prepare(const PolygonMesh& mesh, const VoxelGrid& grid) {
+Prepared prepare(const PolygonMesh& mesh, const VoxelizationGrid& grid) {
   Prepared p;
   const std::int64_t nf = mesh.face_count();
   for (std::int64_t f = 0; f < nf; ++f) {
@@ -281,7 +281,7 @@ Prepared prepare(const PolygonMesh& mesh, const VoxelGrid& grid) {
   return p;
 }
 
-Tri<BigRational> exact_triangle(const PolygonMesh& mesh, const VoxelGrid& grid,
+Tri<BigRational> exact_triangle(const PolygonMesh& mesh, const VoxelizationGrid& grid,
                                 const std::array<std::int64_t, 3>& t) {
   Tri<BigRational> r;
   const double o[3] = {grid.origin.x, grid.origin.y, grid.origin.z};
@@ -293,7 +293,7 @@ Tri<BigRational> exact_triangle(const PolygonMesh& mesh, const VoxelGrid& grid,
   return r;
 }
 
-void check_grid(const VoxelGrid& g) {
+void check_grid(const VoxelizationGrid& g) {
   if (!(g.h > 0) || !std::isfinite(g.h))
     throw InvalidArgument("voxelize: the step h = " + std::to_string(g.h) +
                           " is not positive and finite");
@@ -324,7 +324,7 @@ void check_mesh(const PolygonMesh& mesh) {
 }
 
 // The voxels of one triangle in a surface mode, restricted to z in [z0, z1).
-void voxelize_triangle(const PolygonMesh& mesh, const VoxelGrid& grid, const Prepared& p,
+void voxelize_triangle(const PolygonMesh& mesh, const VoxelizationGrid& grid, const Prepared& p,
                        const std::array<std::int64_t, 3>& t, VoxelizationMode mode, std::int64_t z0,
                        std::int64_t z1, std::uint8_t* out) {
   Tri<Fe> g;
@@ -501,7 +501,7 @@ std::int64_t ceil_quotient(const BigRational& n, const BigRational& d, std::int6
   return static_cast<std::int64_t>(c);
 }
 
-Image<std::uint8_t> voxelize_solid(const PolygonMesh& mesh, const VoxelGrid& grid,
+Image<std::uint8_t> voxelize_solid(const PolygonMesh& mesh, const VoxelizationGrid& grid,
                                    const Prepared& p, unsigned threads) {
   const std::int64_t nx = grid.extents[0], ny = grid.extents[1], nz = grid.extents[2];
   Image<std::uint8_t> out(Domain({nz, ny, nx}));
@@ -610,8 +610,9 @@ VoxelizationMode parse_voxelization_mode(const std::string& text) {
   throw InvalidArgument("voxelization mode '" + text + "' is not 6, 26, conservative or solid");
 }
 
-VoxelGrid voxel_grid_for(const PolygonMesh& mesh, double h,
-                         const std::optional<Point3<double>>& origin, std::int64_t max_voxels) {
+VoxelizationGrid voxel_grid_for(const PolygonMesh& mesh, double h,
+                                const std::optional<Point3<double>>& origin,
+                                std::int64_t max_voxels) {
   check_mesh(mesh);
   if (!(h > 0) || !std::isfinite(h))
     throw InvalidArgument("voxelize: the step h = " + std::to_string(h) +
@@ -629,7 +630,7 @@ VoxelGrid voxel_grid_for(const PolygonMesh& mesh, double h,
       mx[d] = std::max(mx[d], c[d]);
     }
   }
-  VoxelGrid g;
+  VoxelizationGrid g;
   g.h = h;
   double o[3];
   for (int d = 0; d < 3; ++d) {
@@ -660,7 +661,7 @@ VoxelGrid voxel_grid_for(const PolygonMesh& mesh, double h,
   return g;
 }
 
-Image<std::uint8_t> voxelize_winding(const PolygonMesh& mesh, const VoxelGrid& grid,
+Image<std::uint8_t> voxelize_winding(const PolygonMesh& mesh, const VoxelizationGrid& grid,
                                      double threshold, unsigned threads, double max_work) {
   check_grid(grid);
   check_mesh(mesh);
@@ -762,8 +763,9 @@ void check_closed_mesh(const PolygonMesh& mesh) {
   }
 }
 
-bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle, const VoxelGrid& grid,
-                         const std::array<std::int64_t, 3>& voxel, VoxelizationMode mode) {
+bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle,
+                         const VoxelizationGrid& grid, const std::array<std::int64_t, 3>& voxel,
+                         VoxelizationMode mode) {
   check_grid(grid);
   if (mode == VoxelizationMode::solid)
     throw InvalidArgument("triangle_voxel_test: solid is not a surface mode");
@@ -780,8 +782,8 @@ bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle, const Vo
   return surface_test(t, edges(t), centre, mode, u);
 }
 
-Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelGrid& grid, VoxelizationMode mode,
-                             unsigned threads) {
+Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelizationGrid& grid,
+                             VoxelizationMode mode, unsigned threads) {
   check_grid(grid);
   check_mesh(mesh);
   if (mode == VoxelizationMode::solid) check_closed_mesh(mesh);

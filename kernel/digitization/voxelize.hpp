@@ -75,7 +75,7 @@ std::string voxelization_mode_name(VoxelizationMode mode);
 /// The mode of a name above (InvalidArgument naming the text otherwise).
 VoxelizationMode parse_voxelization_mode(const std::string& text);
 
-struct VoxelGrid {
+struct VoxelizationGrid {
   Point3<double> origin{0, 0, 0};
   double h = 1;
   std::array<std::int64_t, 3> extents{1, 1, 1}; ///< nx, ny, nz
@@ -86,18 +86,19 @@ struct VoxelGrid {
 /// surface voxel lies on the grid's border (a margin of more than one voxel each side). Checks the
 /// mesh (finite coordinates, face indices in range and distinct), h and the origin, and that
 /// the grid has at most max_voxels voxels; InvalidArgument otherwise.
-VoxelGrid voxel_grid_for(const PolygonMesh& mesh, double h,
-                         const std::optional<Point3<double>>& origin = std::nullopt,
-                         std::int64_t max_voxels = std::int64_t(1) << 32);
+VoxelizationGrid voxel_grid_for(const PolygonMesh& mesh, double h,
+                                const std::optional<Point3<double>>& origin = std::nullopt,
+                                std::int64_t max_voxels = std::int64_t(1) << 32);
 
 /// The voxelization of the mesh in the given mode on the grid (see above).
-Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelGrid& grid, VoxelizationMode mode,
-                             unsigned threads = 0);
+Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelizationGrid& grid,
+                             VoxelizationMode mode, unsigned threads = 0);
 
 /// The exact test of one voxel against one triangle in a surface mode (conservative, six,
 /// twenty_six): the predicate voxelize() applies, for oracles and tests.
-bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle, const VoxelGrid& grid,
-                         const std::array<std::int64_t, 3>& voxel, VoxelizationMode mode);
+bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle,
+                         const VoxelizationGrid& grid, const std::array<std::int64_t, 3>& voxel,
+                         VoxelizationMode mode);
 
 /// The solid of a mesh that need not be closed (Jacobson, Kavan, Sorkine-Hornung, "Robust
 /// inside-outside segmentation using generalized winding numbers", SIGGRAPH 2013): the voxels
@@ -106,7 +107,7 @@ bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle, const Vo
 /// transcendental), and a centre on the surface or within rounding of a threshold crossing may go
 /// either way. w = 1 inside and 0 outside a closed outward mesh. Cost O(F N) for F triangles and
 /// N voxels, checked first: InvalidArgument when F N > max_work (default 10^9).
-Image<std::uint8_t> voxelize_winding(const PolygonMesh& mesh, const VoxelGrid& grid,
+Image<std::uint8_t> voxelize_winding(const PolygonMesh& mesh, const VoxelizationGrid& grid,
                                      double threshold, unsigned threads = 0, double max_work = 1e9);
 
 /// Checks that the mesh is closed and consistently oriented (see solid above); InvalidArgument

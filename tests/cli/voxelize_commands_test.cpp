@@ -50,7 +50,7 @@ TEST(VoxelizeCommands, EachModeEqualsTheLibrary) {
                                    f(out) + " --json");
       ASSERT_EQ(r.status, 0) << r.err;
       const auto j = nlohmann::json::parse(r.out);
-      const VoxelGrid g = voxel_grid_for(mesh, 0.1);
+      const VoxelizationGrid g = voxel_grid_for(mesh, 0.1);
       const Image<std::uint8_t> want = voxelize(mesh, g, parse_voxelization_mode(mode), 1);
       std::int64_t count = 0;
       for (auto x : want.values()) count += x;

@@ -45,7 +45,7 @@ int qsign(const Q& x) {
 struct QBox {
   V3 lo, hi, centre;
 };
-QBox qbox(const VoxelGrid& g, const std::array<std::int64_t, 3>& v) {
+QBox qbox(const VoxelizationGrid& g, const std::array<std::int64_t, 3>& v) {
   const V3 o = qv(g.origin);
   const Q h = qd(g.h);
   QBox b;
@@ -114,7 +114,7 @@ bool huang_meets(const std::array<V3, 3>& t, const QBox& b, const Q& h, bool six
   return false;
 }
 
-bool oracle(const PolygonMesh& m, const VoxelGrid& g, const std::array<std::int64_t, 3>& v,
+bool oracle(const PolygonMesh& m, const VoxelizationGrid& g, const std::array<std::int64_t, 3>& v,
             Mode mode) {
   const QBox b = qbox(g, v);
   for (std::int64_t f = 0; f < m.face_count(); ++f) {
@@ -131,7 +131,7 @@ bool oracle(const PolygonMesh& m, const VoxelGrid& g, const std::array<std::int6
   return false;
 }
 
-std::int64_t at(const VoxelGrid& g, std::int64_t i, std::int64_t j, std::int64_t k) {
+std::int64_t at(const VoxelizationGrid& g, std::int64_t i, std::int64_t j, std::int64_t k) {
   return (k * g.extents[1] + j) * g.extents[0] + i;
 }
 
@@ -158,15 +158,15 @@ struct Rng {
   }
 };
 
-VoxelGrid small_grid(Rng& rng, int n) {
-  VoxelGrid g;
+VoxelizationGrid small_grid(Rng& rng, int n) {
+  VoxelizationGrid g;
   g.h = rng.step();
   g.origin = {rng.pick(-3, 3) * 0.25, rng.pick(-3, 3) * 0.1, rng.pick(-3, 3) * 0.3};
   g.extents = {n, rng.pick(1, n), rng.pick(1, n)};
   return g;
 }
 
-PolygonMesh random_triangles(Rng& rng, const VoxelGrid& g, int count) {
+PolygonMesh random_triangles(Rng& rng, const VoxelizationGrid& g, int count) {
   PolygonMesh m;
   m.face_size = 3;
   const double o[3] = {g.origin.x, g.origin.y, g.origin.z};
@@ -187,7 +187,7 @@ PolygonMesh random_triangles(Rng& rng, const VoxelGrid& g, int count) {
   return m;
 }
 
-void expect_oracle(const PolygonMesh& m, const VoxelGrid& g, Mode mode) {
+void expect_oracle(const PolygonMesh& m, const VoxelizationGrid& g, Mode mode) {
   const Image<std::uint8_t> got = voxelize(m, g, mode, static_cast<unsigned>(1 + g.extents[0] % 3));
   for (std::int64_t k = 0; k < g.extents[2]; ++k)
     for (std::int64_t j = 0; j < g.extents[1]; ++j)
@@ -201,14 +201,14 @@ void expect_oracle(const PolygonMesh& m, const VoxelGrid& g, Mode mode) {
 // of voxels whose closed cube meets a triangle, by exact Sutherland-Hodgman clipping.
 RC_GTEST_PROP(Voxelize, ConservativeIsExactTriangleBoxOverlap, ()) {
   Rng rng{std::mt19937(*rc::gen::arbitrary<std::uint32_t>())};
-  const VoxelGrid g = small_grid(rng, 5);
+  const VoxelizationGrid g = small_grid(rng, 5);
   expect_oracle(random_triangles(rng, g, rng.pick(1, 3)), g, Mode::conservative);
 }
 
 // Huang et al.'s 6- and 26-separating regions against their definition in another form.
 RC_GTEST_PROP(Voxelize, SixAndTwentySixAreHuangRegions, ()) {
   Rng rng{std::mt19937(*rc::gen::arbitrary<std::uint32_t>())};
-  const VoxelGrid g = small_grid(rng, 5);
+  const VoxelizationGrid g = small_grid(rng, 5);
   const PolygonMesh m = random_triangles(rng, g, rng.pick(1, 3));
   expect_oracle(m, g, Mode::six);
   expect_oracle(m, g, Mode::twenty_six);
@@ -218,7 +218,7 @@ RC_GTEST_PROP(Voxelize, SixAndTwentySixAreHuangRegions, ()) {
 // cube in the ball of radius sqrt(3) h / 2), on larger random meshes.
 RC_GTEST_PROP(Voxelize, SixInConservativeInTwentySix, ()) {
   Rng rng{std::mt19937(*rc::gen::arbitrary<std::uint32_t>())};
-  const VoxelGrid g = small_grid(rng, 12);
+  const VoxelizationGrid g = small_grid(rng, 12);
   const PolygonMesh m = random_triangles(rng, g, rng.pick(1, 12));
   const auto six = voxelize(m, g, Mode::six, 2);
   const auto cons = voxelize(m, g, Mode::conservative, 1);
@@ -274,7 +274,7 @@ struct ConvexPlanes {
 
 struct Shells {
   PolygonMesh mesh;
-  VoxelGrid grid;
+  VoxelizationGrid grid;
   std::vector<bool> flip;
 };
 
@@ -403,7 +403,7 @@ PolygonMesh box_mesh(const std::array<double, 3>& lo, const std::array<double, 3
 
 RC_GTEST_PROP(Voxelize, SolidsOfBoxesSharingAFacePartition, ()) {
   Rng rng{std::mt19937(*rc::gen::arbitrary<std::uint32_t>())};
-  VoxelGrid g;
+  VoxelizationGrid g;
   g.h = rng.step();
   g.extents = {9, 9, 9};
   std::array<double, 3> lo, mid, hi;
@@ -437,7 +437,7 @@ RC_GTEST_PROP(Voxelize, ResultDoesNotDependOnThreads, ()) {
 // Grid units: the box [A, B]^3. Closed forms, per axis: m = floor(B) - ceil(A) + 2 voxels meet
 // [A, B]; q = ceil(B - 1) - floor(A) - 1 voxels lie in (A, B); the boundary meets m^3 - q^3.
 TEST(Voxelize, BoxOnVoxelCentresAtUnitStep) {
-  VoxelGrid g;
+  VoxelizationGrid g;
   g.h = 1;
   g.extents = {6, 6, 6};
   const PolygonMesh m = box_mesh({0.5, 0.5, 0.5}, {3.5, 3.5, 3.5});
@@ -453,7 +453,7 @@ TEST(Voxelize, BoxOnVoxelCentresAtUnitStep) {
 }
 
 TEST(Voxelize, BoxOnVoxelBoundariesAtUnitStep) {
-  VoxelGrid g;
+  VoxelizationGrid g;
   g.h = 1;
   g.extents = {5, 5, 5};
   const PolygonMesh m = box_mesh({1, 1, 1}, {3, 3, 3});
@@ -471,7 +471,7 @@ TEST(Voxelize, BoxOnVoxelBoundariesAtUnitStep) {
 // six: one layer of 6 x 6 outside each face (the inner centres 5.5 and 10.5 are at 1/2 + 2.8e-16
 // from the faces), 216, not 368.
 TEST(Voxelize, TenthStepBoxDecidedByTheDoublesExactValues) {
-  VoxelGrid g;
+  VoxelizationGrid g;
   g.h = 0.1;
   g.extents = {14, 14, 14};
   const PolygonMesh m = box_mesh({0.5, 0.5, 0.5}, {1.1, 1.1, 1.1});
@@ -495,7 +495,7 @@ TEST(Voxelize, MillionCopiesOfOneFace) {
   m.face_size = 3;
   m.vertices = {{0.1, 0.1, 0.1}, {0.2, 0.1, 0.1}, {0.1, 0.2, 0.1}};
   for (int k = 0; k < 1000000; ++k) m.indices.insert(m.indices.end(), {0, 1, 2});
-  const VoxelGrid g = voxel_grid_for(m, 1.0);
+  const VoxelizationGrid g = voxel_grid_for(m, 1.0);
   EXPECT_EQ(count(voxelize(m, g, Mode::conservative)), 1);
 }
 
@@ -511,7 +511,7 @@ TEST(Voxelize, Errors) {
   EXPECT_THROW(voxel_grid_for(bad, 1.0), InvalidArgument);
   bad = m;
   bad.indices.resize(bad.indices.size() - 3); // a missing face: open
-  const VoxelGrid g = voxel_grid_for(bad, 0.5);
+  const VoxelizationGrid g = voxel_grid_for(bad, 0.5);
   EXPECT_THROW(voxelize(bad, g, Mode::solid), InvalidArgument);
   EXPECT_NO_THROW(voxelize(bad, g, Mode::conservative));
   EXPECT_THROW(parse_voxelization_mode("18"), InvalidArgument);
@@ -522,7 +522,7 @@ TEST(Voxelize, Errors) {
 // inside the grid and its solid is the sphere's volume within the surface layer.
 TEST(Voxelize, SphereSolidWithinItsSurfaceLayer) {
   const PolygonMesh m = test::sphere_mesh(8).mesh;
-  const VoxelGrid g = voxel_grid_for(m, 0.125);
+  const VoxelizationGrid g = voxel_grid_for(m, 0.125);
   const auto cons = voxelize(m, g, Mode::conservative);
   const auto solid = voxelize(m, g, Mode::solid);
   const auto n = g.extents;
@@ -558,7 +558,7 @@ TEST(Voxelize, RegressionRowThroughBothTips) {
                 {2.6000000000000001, 2.5, 2.25}, {2.6000000000000001, 0.032499999999999973, 2.25},
                 {2.6000000000000001, 2, 3},      {2.6000000000000001, 2, 2}};
   m.indices = {0, 2, 4, 0, 5, 2, 0, 4, 3, 0, 3, 5, 1, 4, 2, 1, 2, 5, 1, 3, 4, 1, 5, 3};
-  VoxelGrid g;
+  VoxelizationGrid g;
   g.h = 0.5;
   g.origin = {0.10000000000000001, -0.25, 0};
   g.extents = {10, 10, 10};
@@ -571,7 +571,7 @@ TEST(Voxelize, RegressionRowThroughBothTips) {
 TEST(Voxelize, WindingNumberOfAnOpenBox) {
   PolygonMesh m = box_mesh({0, 0, 0}, {1, 1, 1});
   m.indices.resize(m.indices.size() - 3); // half of one face missing
-  const VoxelGrid g = voxel_grid_for(m, 0.125);
+  const VoxelizationGrid g = voxel_grid_for(m, 0.125);
   EXPECT_THROW(voxelize(m, g, Mode::solid), InvalidArgument);
   const auto w = voxelize_winding(m, g, 0.5);
   EXPECT_EQ(count(w), 8 * 8 * 8); // the missing triangle's solid angle stays below 2 pi
