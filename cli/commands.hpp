@@ -49,6 +49,7 @@ void add_points_commands(CLI::App& app, Context& ctx);
 void add_render_commands(CLI::App& app, Context& ctx);
 void add_csg_commands(CLI::App& app, Context& ctx);
 void add_convex_commands(CLI::App& app, Context& ctx);
+void add_motion_commands(CLI::App& app, Context& ctx);
 void add_voxelize_commands(CLI::App& app, Context& ctx);
 
 /// The extension of a path in lower case ("a/B.PLY" -> ".ply"), for the checks of the

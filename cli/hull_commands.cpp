@@ -1,4 +1,5 @@
-// zdg hull points|disc|ellipse|halfplanes: lattice convex hulls on the command line.
+// zdg hull points|disc|ellipse|halfplanes|delaunay: lattice convex hulls and Delaunay
+// triangulations on the command line.
 // Numbers are read as BigInt (integers) or BigInt rationals ("7", "-3/4", "1000.5"; decimal
 // whatever the leading zeros) and the work runs exact by escalation (int64 first).
 //
@@ -11,6 +12,7 @@
 #include <zdg/arith/rational.hpp>
 #include <zdg/cli/commands.hpp>
 #include <zdg/kernel/hulls/convex_body_hull.hpp>
+#include <zdg/kernel/hulls/lattice_delaunay.hpp>
 #include <zdg/kernel/hulls/lattice_hull_2d.hpp>
 #include <zdg/kernel/hulls/lattice_hull_3d.hpp>
 #include <zdg/kernel/hulls/lattice_polygon.hpp>
@@ -337,6 +339,78 @@ void run_halfplanes(const std::string& path, const HullOptions& o) {
   out.finish();
 }
 
+// zdg hull delaunay FILE [--voronoi]: the Delaunay triangulation of lattice points
+// (kernel/hulls/lattice_delaunay.hpp) with exact predicates; --voronoi adds each site's Voronoi
+// cell (exact rational vertices, bounded or not).
+void run_delaunay(const std::string& path, const HullOptions& o, bool voronoi) {
+  Writer out(o); // the output is checked before the input is read
+  const auto pts = read_point_file(path, {2, 3});
+  std::vector<std::int64_t> coords;
+  coords.reserve(pts.coords.size());
+  for (std::size_t i = 0; i < pts.coords.size(); ++i) {
+    const BigInt& c = pts.coords[i];
+    if (c > (BigInt(1) << 53) || c < -(BigInt(1) << 53)) {
+      throw InvalidArgument(path + ":" + std::to_string(pts.lines[i / std::size_t(pts.dim)]) +
+                            ": coordinate " + c.str() +
+                            " is past 2^53 (the Delaunay predicates take exact doubles)");
+    }
+    coords.push_back(static_cast<std::int64_t>(c));
+  }
+  const LatticeDelaunay t = lattice_delaunay(coords, pts.dim);
+  const int vpc = t.dim + 1;
+  std::size_t edges = 0, hull = 0;
+  for (const auto& n : t.neighbours) edges += n.size();
+  edges /= 2;
+  for (bool h : t.on_hull) hull += h;
+  if (!o.json) {
+    out << "Delaunay triangulation of " << std::to_string(pts.size()) << " points ("
+        << std::to_string(t.vertex_count()) << " distinct, affine dimension "
+        << std::to_string(t.affine_dim) << "): " << std::to_string(t.cells.size())
+        << (t.dim == 2 ? " triangles, " : " tetrahedra, ") << std::to_string(edges) << " edges, "
+        << std::to_string(hull) << " on the hull\n";
+    for (const auto& c : t.cells) {
+      for (int i = 0; i < vpc; ++i) out << (i ? " " : "") << std::to_string(c[std::size_t(i)]);
+      out << "\n";
+    }
+    out.finish();
+    return;
+  }
+  nlohmann::json verts = nlohmann::json::array(), cells = nlohmann::json::array();
+  for (std::size_t v = 0; v < t.vertex_count(); ++v) {
+    nlohmann::json p = nlohmann::json::array();
+    for (int k = 0; k < t.dim; ++k) {
+      p.push_back(std::to_string(t.points[v * std::size_t(t.dim) + std::size_t(k)]));
+    }
+    verts.push_back(p);
+  }
+  for (const auto& c : t.cells) {
+    cells.push_back(std::vector<std::size_t>(c.begin(), c.begin() + vpc));
+  }
+  nlohmann::json j = {{"points", std::to_string(pts.size())},
+                      {"dim", t.dim},
+                      {"affine_dim", t.affine_dim},
+                      {"vertices", verts},
+                      {"cells", cells},
+                      {"edges", std::to_string(edges)},
+                      {"hull_vertices", std::to_string(hull)},
+                      {"vertex_of_input", t.vertex_of_input}};
+  if (voronoi) {
+    nlohmann::json jv = nlohmann::json::array();
+    for (const VoronoiCell& c : voronoi_cells(t)) {
+      nlohmann::json vs = nlohmann::json::array();
+      for (const auto& u : c.vertices) {
+        nlohmann::json q = nlohmann::json::array();
+        for (const auto& x : u) q.push_back(x.str());
+        vs.push_back(q);
+      }
+      jv.push_back({{"site", c.site}, {"bounded", c.bounded}, {"vertices", vs}});
+    }
+    j["voronoi"] = jv;
+  }
+  out << j.dump() << "\n";
+  out.finish();
+}
+
 void add_output_options(CLI::App* cmd, HullOptions& o) {
   cmd->add_flag("--json", o.json, "Machine-readable output");
   cmd->add_option("-o,--output", o.output,
@@ -359,6 +433,20 @@ void add_hull_commands(CLI::App& app, Context& /*ctx*/) {
     cmd->add_option("FILE", *file, "Points, one per line ('#' starts a comment)")->required();
     add_output_options(cmd, *o);
     cmd->callback([=] { run_points(*file, *o); });
+  }
+  {
+    auto* cmd = hull->add_subcommand(
+        "delaunay", "Delaunay triangulation of a file of lattice points (2D/3D, exact "
+                    "predicates), with --voronoi the exact Voronoi cells");
+    auto file = std::make_shared<std::string>();
+    auto o = std::make_shared<HullOptions>();
+    auto voronoi = std::make_shared<bool>(false);
+    cmd->add_option("FILE", *file, "Points, one per line ('#' starts a comment)")->required();
+    add_output_options(cmd, *o);
+    cmd->add_flag("--voronoi", *voronoi,
+                  "Add each site's Voronoi cell (\"voronoi\": site, bounded, rational vertices; "
+                  "--json only; needs points spanning the plane / space)");
+    cmd->callback([=] { run_delaunay(*file, *o, *voronoi); });
   }
   auto add_body_options = [](CLI::App* cmd, HullOptions& o) {
     add_output_options(cmd, o);

@@ -26,6 +26,7 @@
 #include <zdg/kernel/render/render_contours.hpp>
 #include <zdg/kernel/render/render_mesh.hpp>
 #include <zdg/kernel/surfaces/image_surfels.hpp>
+#include <zdg/kernel/surfaces/primal_surface_mesh.hpp>
 #include <zdg/kernel/topology/adjacency.hpp>
 #include <zdg/kernel/topology/betti_numbers.hpp>
 #include <zdg/operations/progress.hpp>
@@ -279,17 +280,25 @@ void run_labels(const SurfaceArgs& a) {
   if (a.labels != "all") {
     throw InvalidArgument("--labels '" + a.labels + "': expected all (every label of the volume)");
   }
-  if (!a.output.empty() || !a.csv.empty() || !a.picture.png.empty() || !a.html.empty() ||
-      !a.estimate.empty() || a.regularize || a.harmonic) {
-    throw InvalidArgument("--labels all reports the interfaces and the topology of each label; "
-                          "-o, --csv, --png, --html, --estimate, --regularize and --harmonic are "
-                          "for one object");
+  if (!a.csv.empty() || !a.picture.png.empty() || !a.html.empty() || !a.estimate.empty() ||
+      a.regularize || a.harmonic) {
+    throw InvalidArgument("--labels all reports the interfaces and the topology of each label "
+                          "(and -o writes their mesh); --csv, --png, --html, --estimate, "
+                          "--regularize and --harmonic are for one object");
   }
   if (has_selection(a.in)) {
     throw InvalidArgument("--labels all reads every value as a label (no --threshold, --range, "
                           "--label or --invert)");
   }
   const AdjacencyPair pair = parse_adjacency_pair(a.adjacency, 3);
+  // The mesh (-o): declared before the volume is read.
+  std::optional<MeshFormat> mesh_format;
+  if (!a.output.empty()) {
+    mesh_format = mesh_format_of(a.output);
+    check_not_input(a.in.path, a.output);
+  }
+  OutputSet outputs(a.force ? Existing::replace : Existing::refuse);
+  const std::string mesh_staging = a.output.empty() ? "" : outputs.add(a.output).string();
   const Image<std::int64_t> img = read_integer_image(a.in.path, raw_layout(a.in));
   if (img.dim() != 3) {
     throw InvalidArgument(a.in.path + ": a " + std::to_string(img.dim()) +
@@ -329,6 +338,18 @@ void run_labels(const SurfaceArgs& a) {
          {"euler", std::to_string(b.euler)},
          {"betti", {std::to_string(b.b[0]), std::to_string(b.b[1]), std::to_string(b.b[2])}}});
   }
+  nlohmann::json jmesh = nullptr;
+  if (mesh_format) {
+    const Domain& d = img.domain();
+    const VoxelPlacement placement{{1, 1, 1},
+                                   {double(d.lower(2)), double(d.lower(1)), double(d.lower(0))}};
+    const PolygonMesh mesh = label_interface_mesh(img, 0, placement);
+    write_mesh(mesh_staging, mesh, mesh_format, a.threads);
+    outputs.commit();
+    jmesh = {{"path", a.output},
+             {"vertices", std::to_string(mesh.vertex_count())},
+             {"faces", std::to_string(mesh.face_count())}};
+  }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (a.json) {
     print_json({{"command", "surface"},
@@ -337,8 +358,13 @@ void run_labels(const SurfaceArgs& a) {
                 {"background", "0"},
                 {"labels", jl},
                 {"interfaces", jf},
+                {"mesh", jmesh},
                 {"seconds", secs}});
     return;
+  }
+  if (mesh_format) {
+    std::cout << a.output << ": " << jmesh["faces"].get<std::string>()
+              << " interface faces (label_a, label_b on each)\n";
   }
   std::cout << a.in.path << ": " << jl.size() << " label(s) besides the background 0, " << jf.size()
             << " interface(s) (" << pair.name() << ")\n";
@@ -717,7 +743,8 @@ void add_surface_commands(CLI::App& app, Context& /*ctx*/) {
                       "all: a labelled volume (every value a label, 0 the background and the "
                       "outside): the interfaces between every two labels that touch, and each "
                       "label's voxels, surfels and Betti numbers (--json: \"labels\", "
-                      "\"interfaces\")");
+                      "\"interfaces\"); with -o, the mesh of the interfaces with the face "
+                      "properties label_a < label_b");
   surface->add_option("--at-alpha", s->at_alpha,
                       fmt::format("Ambrosio-Tortorelli data fidelity alpha > 0 (default {}; "
                                   "larger: closer to the II normals)",

@@ -20,6 +20,7 @@
 #include <zdg/kernel/hulls/convex_body_hull.hpp>
 #include <zdg/kernel/hulls/lattice_hull_2d.hpp>
 #include <zdg/kernel/hulls/lattice_hull_3d.hpp>
+#include <zdg/kernel/images/rigid_motion.hpp>
 #include <zdg/kernel/io/output_files.hpp>
 #include <zdg/kernel/surfaces/digital_plane_recognition.hpp>
 #include <zdg/kernel/surfaces/plane_probing.hpp>
@@ -82,6 +83,47 @@ py::dict christoffel(py::handle p_obj, py::handle q_obj, bool upper, bool word) 
                                       fraction_to_py(r.parents->second.p, r.parents->second.q)))
           : py::object(py::none());
   d["integer_type"] = served(r.served);
+  return d;
+}
+
+// A Python int or fractions.Fraction (anything with numerator and denominator) as a rational.
+Rational<BigInt> py_to_rational(py::handle h, const char* what) {
+  if (py::hasattr(h, "numerator") && py::hasattr(h, "denominator")) {
+    const BigInt den = py_to_bigint(h.attr("denominator"), what);
+    if (den == 0) throw InvalidArgument(std::string(what) + ": zero denominator");
+    return Rational<BigInt>(py_to_bigint(h.attr("numerator"), what), den);
+  }
+  return Rational<BigInt>(py_to_bigint(h, what));
+}
+
+py::dict motion_check_py(py::handle a, py::handle b, py::handle c, py::object center,
+                         py::object translation) {
+  auto vec = [](py::object o, const char* what) {
+    std::vector<Rational<BigInt>> v;
+    if (o.is_none()) return std::vector<Rational<BigInt>>(2);
+    for (auto x : o) v.push_back(py_to_rational(x, what));
+    return v;
+  };
+  const RigidMotion m = motion_about(
+      rotation_2d(py_to_bigint(a, "motion_check: a"), py_to_bigint(b, "motion_check: b"),
+                  py_to_bigint(c, "motion_check: c")),
+      vec(center, "motion_check: center"), vec(translation, "motion_check: translation"));
+  const auto r = [&] {
+    py::gil_scoped_release release;
+    return lattice_bijectivity(m);
+  }();
+  auto pt = [](const std::array<BigInt, 2>& p) {
+    return py::make_tuple(bigint_to_py(p[0]), bigint_to_py(p[1]));
+  };
+  py::dict d;
+  d["bijective"] = r.bijective;
+  d["method"] = r.method;
+  d["period"] = bigint_to_py(r.period);
+  d["collision"] = r.collision
+                       ? py::object(py::make_tuple(pt((*r.collision)[0]), pt((*r.collision)[1])))
+                       : py::object(py::none());
+  d["image"] = r.collision_image ? py::object(pt(*r.collision_image)) : py::object(py::none());
+  d["hole"] = r.hole ? py::object(pt(*r.hole)) : py::object(py::none());
   return d;
 }
 
@@ -555,6 +597,15 @@ PYBIND11_MODULE(_zdg, m) {
         "words are 0 w 1, w a prefix of it. Exact; escalates int64 -> int128 -> BigInt. "
         "Returns {'surd': (P, D, Q), 'preperiod', 'period', 'floor', 'word', "
         "'christoffel_convergents', 'integer_type'}.");
+  m.def("motion_check", &motion_check_py, py::arg("a"), py::arg("b"), py::arg("c"), py::kw_only(),
+        py::arg("center") = py::none(), py::arg("translation") = py::none(),
+        "Whether the digitized rotation of the Pythagorean triple a^2 + b^2 = c^2 (cos = a/c, "
+        "sin = b/c) about `center` followed by `translation` (pairs of ints or Fractions; "
+        "default 0), D(p) = floor(R (p - center) + center + translation + 1/2), is a bijection "
+        "of Z^2: checked over one period of c points (c <= 2^28), past that by the theorem of "
+        "Nouvel and Remila for a lattice centre. Returns {'bijective', 'method', 'period', "
+        "'collision': ((x, y), (x, y)) two points with one image or None, 'image', 'hole': a "
+        "point with no preimage or None}.");
   m.def("floor_sum", &floor_sum_py, py::arg("n"), py::arg("m"), py::arg("a"), py::arg("b"),
         "sum_{i=0}^{n-1} floor((a i + b) / m) for n >= 0, m != 0, exact, O(log m) (the "
         "Euclidean-like reduction). Returns {'value', 'integer_type'}.");

@@ -5,6 +5,10 @@
 #include <zdg/kernel/parallel/populate_pages.hpp>
 #include <zdg/kernel/surfaces/pointel_cycles.hpp>
 
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace zdg {
@@ -87,6 +91,74 @@ PolygonMesh primal_surface_mesh(const Image<std::uint8_t>& image, const ImageSur
       }
     }
   });
+  return mesh;
+}
+
+PolygonMesh label_interface_mesh(const Image<std::int64_t>& labels, std::int64_t outside,
+                                 const VoxelPlacement& placement) {
+  if (labels.dim() != 3) {
+    throw InvalidArgument("label interfaces: a " + std::to_string(labels.dim()) +
+                          "-D image (the interface mesh is for 3D volumes)");
+  }
+  const Domain& d = labels.domain();
+  const std::int64_t n[3] = {d.extent(2), d.extent(1), d.extent(0)}; // x, y, z
+  const std::int64_t* v = labels.values().data();
+  auto label = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
+    if (x < 0 || y < 0 || z < 0 || x >= n[0] || y >= n[1] || z >= n[2]) return outside;
+    return v[(z * n[1] + y) * n[0] + x];
+  };
+  const double limit = 16777216.0; // 2^24
+  PolygonMesh mesh;
+  mesh.face_size = 4;
+  std::vector<double> la, lb;
+  std::unordered_map<std::int64_t, std::int64_t> vertex; // pointel key -> index
+  auto pointel = [&](std::int64_t qx, std::int64_t qy, std::int64_t qz) {
+    const std::int64_t key = (qz * (n[1] + 1) + qy) * (n[0] + 1) + qx;
+    const auto [it, fresh] = vertex.emplace(key, mesh.vertex_count());
+    if (fresh) {
+      mesh.vertices.push_back(placement.at(static_cast<double>(qx) - 0.5,
+                                           static_cast<double>(qy) - 0.5,
+                                           static_cast<double>(qz) - 0.5));
+    }
+    return it->second;
+  };
+  // Corners of the face between p and p + e_k, counterclockwise seen from +e_k: in the axes
+  // (k+1, k+2) (cyclic), (0,0), (1,0), (1,1), (0,1).
+  static const int corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (int k = 0; k < 3; ++k) {
+    const int u = (k + 1) % 3, w = (k + 2) % 3;
+    std::int64_t p[3];
+    for (p[2] = k == 2 ? -1 : 0; p[2] < n[2]; ++p[2]) {
+      for (p[1] = k == 1 ? -1 : 0; p[1] < n[1]; ++p[1]) {
+        for (p[0] = k == 0 ? -1 : 0; p[0] < n[0]; ++p[0]) {
+          const std::int64_t a = label(p[0], p[1], p[2]);
+          const std::int64_t b = label(p[0] + (k == 0), p[1] + (k == 1), p[2] + (k == 2));
+          if (a == b) continue;
+          const std::int64_t lo = std::min(a, b), hi = std::max(a, b);
+          if (static_cast<double>(hi) >= limit || static_cast<double>(lo) <= -limit) {
+            throw InvalidArgument("label interfaces: label " +
+                                  std::to_string(std::abs(lo) > hi ? lo : hi) +
+                                  " is past 2^24 (the mesh stores labels as floats)");
+          }
+          // Seen from +e_k when the larger label is at p + e_k; else reversed.
+          const bool forward = b > a;
+          std::int64_t ids[4];
+          for (int c = 0; c < 4; ++c) {
+            std::int64_t q[3] = {p[0], p[1], p[2]};
+            q[k] += 1;
+            q[u] += corner[c][0];
+            q[w] += corner[c][1];
+            ids[c] = pointel(q[0], q[1], q[2]);
+          }
+          for (int c = 0; c < 4; ++c) mesh.indices.push_back(ids[forward ? c : 3 - c]);
+          la.push_back(static_cast<double>(lo));
+          lb.push_back(static_cast<double>(hi));
+        }
+      }
+    }
+  }
+  mesh.face_scalars.emplace_back("label_a", std::move(la));
+  mesh.face_scalars.emplace_back("label_b", std::move(lb));
   return mesh;
 }
 

@@ -36,4 +36,17 @@ PolygonMesh primal_surface_mesh(const Image<std::uint8_t>& image, const ImageSur
                                 const SurfaceConvention& convention,
                                 const VoxelPlacement& placement, unsigned threads = 0);
 
+/// The mesh of the interfaces of a labelled 3D image (the seeds' multi-label partitions; the
+/// surfels of label_interfaces, kernel/surfaces/image_surfels.hpp): one quad per pair of
+/// 6-neighbours with labels a != b (outside the domain every voxel has the label `outside`),
+/// counterclockwise seen from the larger label, so its normal points from the smaller label to
+/// the larger; face scalars "label_a" and "label_b" (a < b, as doubles: InvalidArgument for a
+/// label past 2^24 in magnitude, which a PLY float would round). Vertices: one per pointel,
+/// shared by every interface through it (where three labels meet the mesh is not a manifold),
+/// the pointel of index q (0-based in the domain) at placement.at(q - 1/2). Faces in the order
+/// (axis of the normal, z, y, x). O(N) time, memory O(faces). InvalidArgument when the image is not
+/// 3D.
+PolygonMesh label_interface_mesh(const Image<std::int64_t>& labels, std::int64_t outside,
+                                 const VoxelPlacement& placement);
+
 } // namespace zdg

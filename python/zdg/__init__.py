@@ -12,7 +12,7 @@ from collections.abc import Mapping as _Mapping
 from . import _zdg
 from ._zdg import (betti_numbers, cf, chamfer_transform, christoffel, connected_components, contour, converge, convex_check, hull,
                    hull_disc, hull_ellipse, hull_halfplanes, distance_transform, dsl_subsegment, floor_sum,
-                   ii_curvature, local_thickness, mesh_html, power_map, probe_plane, read_volume, recognize_dss,
+                   ii_curvature, local_thickness, mesh_html, motion_check, power_map, probe_plane, read_volume, recognize_dss,
                    reconstruct, recognize_plane, reduced_medial_axis, reverse_distance_transform, simple_points, sturmian,
                    surface,
                    surfels, tangential_cover, thinning, voronoi_map, write_volume)
@@ -21,7 +21,7 @@ __all__ = ["betti_numbers", "cf", "chamfer_transform", "christoffel", "connected
            "hull",
            "hull_disc", "hull_ellipse", "hull_halfplanes", "power_map", "probe_plane", "recognize_plane", "skeleton",
            "simple_points", "sturmian", "surface",
-           "distance_transform", "dsl_subsegment", "floor_sum", "ii_curvature", "local_thickness", "mesh_html", "plot",
+           "distance_transform", "dsl_subsegment", "floor_sum", "ii_curvature", "local_thickness", "mesh_html", "motion_check", "plot",
            "reduced_medial_axis", "reverse_distance_transform", "voronoi_map",
            "read_volume", "reconstruct", "recognize_dss", "surfels", "tangential_cover", "thinning",
            "view", "Viewer", "write_volume"]

@@ -60,6 +60,13 @@ const std::vector<Operation>& operations() {
       {"csg difference", "", "", "as csg union"},
       {"csg symmetric-difference", "", "", "as csg union"},
       {"csg complement", "", "", "as csg union"},
+      {"motion check", "", "motion_check",
+       "serve: not served yet (Python's motion_check is the certificate of one rotation; the "
+       "check of a volume works on files)"},
+      {"motion apply", "", "", files},
+      {"hull delaunay", "", "",
+       "not served or bound yet: a report of cells and exact Voronoi vertices from a point file "
+       "(kernel/hulls/lattice_delaunay.hpp)"},
       {"topology components", "topology components", "connected_components", ""},
       {"topology betti", "topology betti", "betti_numbers", ""},
       {"topology simple", "topology simple", "simple_points", ""},

@@ -1,4 +1,4 @@
-// zdg hull points|disc|ellipse|halfplanes: JSON output (checked against the kernel and
+// zdg hull points|disc|ellipse|halfplanes|delaunay: JSON output (checked against the kernel and
 // worked examples) and exit status 2 with the line number on bad input.
 #include "tests/support/cli.hpp"
 
@@ -107,6 +107,45 @@ TEST_F(HullCli, HalfPlanes) {
                    "' --json");
   ASSERT_EQ(e.status, 0);
   EXPECT_EQ(nlohmann::json::parse(e.out)["region"], "empty");
+}
+
+// hull delaunay: the 3 x 3 grid (every unit square cocircular) has 8 triangles and 16 edges,
+// 8 points on the hull; the centre's Voronoi cell is the unit square about it (4 vertices
+// once each, exact halves); a duplicate is merged; a coordinate past 2^53 names its line.
+TEST_F(HullCli, DelaunayOfAGridWithVoronoiCells) {
+  std::string text = "# 3 x 3 grid, one duplicate\n";
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 3; ++x) text += std::to_string(x) + " " + std::to_string(y) + "\n";
+  text += "1 1\n";
+  const auto f = write_file("grid.txt", text);
+  auto r = run_zdg("hull delaunay " + f + " --voronoi --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["points"], "10");
+  EXPECT_EQ(j["vertices"].size(), 9u);
+  EXPECT_EQ(j["cells"].size(), 8u);
+  EXPECT_EQ(j["edges"], "16");
+  EXPECT_EQ(j["hull_vertices"], "8");
+  EXPECT_EQ(j["vertex_of_input"][9], j["vertex_of_input"][4]);
+  const auto centre = j["vertex_of_input"][4].get<std::size_t>();
+  const auto& cell = j["voronoi"][centre];
+  EXPECT_TRUE(cell["bounded"].get<bool>());
+  ASSERT_EQ(cell["vertices"].size(), 4u);
+  for (const auto& v : cell["vertices"]) {
+    for (const auto& x : v) EXPECT_TRUE(x == "1/2" || x == "3/2") << x;
+  }
+  r = run_zdg("hull delaunay " + f);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("8 triangles"), std::string::npos) << r.out;
+  const auto big = write_file("big.txt", "0 0\n1 0\n0 18014398509481985\n");
+  r = run_zdg("hull delaunay " + big);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("big.txt:3: coordinate 18014398509481985 is past 2^53"), std::string::npos)
+      << r.err;
+  const auto line = write_file("line.txt", "0 0\n1 1\n2 2\n");
+  r = run_zdg("hull delaunay " + line + " --voronoi --json");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("span 1 dimension(s) of 2"), std::string::npos) << r.err;
 }
 
 TEST_F(HullCli, BadInputExitsTwoWithTheLine) {

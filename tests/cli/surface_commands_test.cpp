@@ -94,7 +94,11 @@ TEST(SurfaceCommand, LabelsAllGivesTheInterfacesAndEachLabelsTopology) {
   }
   EXPECT_EQ(j["labels"][1]["label"], "7");
   // Bad uses: one line, exit 2.
-  const std::vector<std::string> bads = {" --labels some", " --labels all -o " + f("m.ply"),
+  // -o: the interface mesh, one quad per interface surfel.
+  const auto m = run_json("surface " + f("labels.npy") + " --labels all -o " + f("m.ply"));
+  EXPECT_EQ(m["mesh"]["faces"], "44");
+  EXPECT_TRUE(std::filesystem::exists(f.path("m.ply")));
+  const std::vector<std::string> bads = {" --labels some", " --labels all --csv " + f("m.csv"),
                                          " --labels all --threshold 3"};
   for (const auto& bad : bads) {
     const auto r = test::run_zdg("surface " + f("labels.npy") + bad);

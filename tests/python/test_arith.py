@@ -210,3 +210,61 @@ def test_sturmian_word_is_the_floor_difference(a, b, d, c):
     assert r["word"] == word
     for p, q in r["christoffel_convergents"]:
         assert zdg.christoffel(p, q)["word"] == "0" + word[: p + q - 2] + "1"
+
+
+def _triples(limit):
+    out = []
+    m = 2
+    while m * m < limit:
+        for n in range(1, m):
+            if (m - n) % 2 == 1 and gcd(m, n) == 1 and m * m + n * n < limit:
+                out.append((m * m - n * n, 2 * m * n, m * m + n * n))
+        m += 1
+    return out
+
+
+def _digitized(a, b, c, center, shift, p):
+    """D(p) = floor(R (p - center) + center + shift + 1/2), in Fractions."""
+    x, y = Fraction(p[0]) - center[0], Fraction(p[1]) - center[1]
+    u = Fraction(a * x - b * y, 1) / c + center[0] + shift[0]
+    w = Fraction(b * x + a * y, 1) / c + center[1] + shift[1]
+    half = Fraction(1, 2)
+    return ((u + half).__floor__(), (w + half).__floor__())
+
+
+@given(st.sampled_from(_triples(300)), st.booleans(), st.sampled_from([1, -1]),
+       st.tuples(st.fractions(-20, 20, max_denominator=6), st.fractions(-20, 20, max_denominator=6)))
+def test_motion_check_witness_and_twin_triples(t, swap, sign, center):
+    """Nouvel and Remila: bijective iff max(|a|, |b|) = c - 1; a witness pair has one image
+    (checked in Fractions) and the hole has no preimage among the points within 1 of
+    R^-1 (hole - v)."""
+    a, b, c = t
+    if swap:
+        a, b = b, a
+    a *= sign
+    r = zdg.motion_check(a, b, c, center=center)
+    assert r["period"] == c
+    zero = (Fraction(0), Fraction(0))
+    if center == zero:
+        assert r["bijective"] == (max(abs(a), abs(b)) == c - 1)
+    if r["bijective"]:
+        assert r["collision"] is None and r["hole"] is None
+        return
+    p1, p2 = r["collision"]
+    assert p1 != p2
+    assert _digitized(a, b, c, center, zero, p1) == tuple(r["image"])
+    assert _digitized(a, b, c, center, zero, p2) == tuple(r["image"])
+    hx, hy = r["hole"]
+    # R^-1 (q - v) with v = center - R center: the candidates around it.
+    qx, qy = Fraction(hx) - center[0], Fraction(hy) - center[1]
+    px = (a * qx + b * qy) / c + center[0]
+    py = (-b * qx + a * qy) / c + center[1]
+    for i in range(-2, 3):
+        for j in range(-2, 3):
+            p = (px.__floor__() + i, py.__floor__() + j)
+            assert _digitized(a, b, c, center, zero, p) != (hx, hy)
+
+
+def test_motion_check_refuses_a_non_triple():
+    with pytest.raises(ValueError, match="not a Pythagorean triple"):
+        zdg.motion_check(3, 4, 6)

@@ -1,5 +1,6 @@
 #include <zdg/kernel/surfaces/primal_surface_mesh.hpp>
 
+#include <zdg/arith/error.hpp>
 #include <zdg/kernel/surfaces/pointel_cycles.hpp>
 
 #include "tests/support/binary_images.hpp"
@@ -11,6 +12,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <tuple>
 
 namespace {
 
@@ -139,6 +143,71 @@ TEST(PrimalSurfaceMesh, VerticesAreCopiedWhereSheetsTouch) {
   const auto bs = zdg::image_surfaces(bimg, bsf, SurfaceConvention::of(6, 26));
   EXPECT_EQ(bs.pinched_linels, 1);
   EXPECT_EQ(bs.surfaces.size(), 1u);
+}
+
+// The interface mesh of a random labelled volume (#38 item 5): the faces between each pair of
+// labels number that interface's surfels (label_interfaces), and for each label L the faces
+// that hold it, oriented outward from L (as stored when L is the smaller label, reversed when it
+// is the larger), are a closed oriented surface (each directed edge met as often as its
+// reverse) enclosing exactly L's voxels (divergence theorem: sum of v0 . (v1 x v2) / 6 over the
+// two triangles of each quad). Vertices are shared: one per pointel.
+TEST(LabelInterfaceMesh, InterfacesAreClosedOrientedSurfacesOfEachLabel) {
+  zdg::test::check_property([] {
+    const std::int64_t nz = *rc::gen::inRange(1, 5), ny = *rc::gen::inRange(1, 5),
+                       nx = *rc::gen::inRange(1, 5);
+    const int nlabels = *rc::gen::inRange(1, 4);
+    zdg::Image<std::int64_t> img{zdg::Domain({nz, ny, nx}, {-1, 2, 0})};
+    for (auto& v : img.values()) v = *rc::gen::inRange(0, nlabels + 1) * 3;
+    const zdg::VoxelPlacement placement{{1, 1, 1}, {0, 2, -1}};
+    const zdg::PolygonMesh mesh = zdg::label_interface_mesh(img, 0, placement);
+    RC_ASSERT(mesh.face_size == 4);
+    const auto& la = mesh.face_scalars.at(0).second;
+    const auto& lb = mesh.face_scalars.at(1).second;
+    std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> counted;
+    for (std::int64_t f = 0; f < mesh.face_count(); ++f) {
+      RC_ASSERT(la[std::size_t(f)] < lb[std::size_t(f)]);
+      ++counted[{std::int64_t(la[std::size_t(f)]), std::int64_t(lb[std::size_t(f)])}];
+    }
+    std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> want;
+    for (const auto& i : zdg::label_interfaces(img, 0)) want[{i.a, i.b}] = i.surfels;
+    RC_ASSERT(counted == want);
+    // Distinct vertex positions: one vertex per pointel.
+    std::set<std::tuple<double, double, double>> pos;
+    for (const auto& v : mesh.vertices) pos.insert({v.x, v.y, v.z});
+    RC_ASSERT(pos.size() == mesh.vertices.size());
+    std::set<std::int64_t> labels(img.values().begin(), img.values().end());
+    for (const std::int64_t L : labels) {
+      if (L == 0) continue;
+      std::map<std::pair<std::int64_t, std::int64_t>, int> edges;
+      double volume = 0;
+      for (std::int64_t f = 0; f < mesh.face_count(); ++f) {
+        const bool small = std::int64_t(la[std::size_t(f)]) == L;
+        if (!small && std::int64_t(lb[std::size_t(f)]) != L) continue;
+        auto c = mesh.face(f);
+        std::int64_t q[4] = {c[0], c[1], c[2], c[3]};
+        if (!small) std::reverse(q, q + 4);
+        for (int k = 0; k < 4; ++k) {
+          ++edges[{q[k], q[(k + 1) % 4]}];
+          --edges[{q[(k + 1) % 4], q[k]}];
+        }
+        auto tri = [&](std::int64_t a, std::int64_t b, std::int64_t d) {
+          const auto& p = mesh.vertices[std::size_t(a)];
+          const auto& u = mesh.vertices[std::size_t(b)];
+          const auto& w = mesh.vertices[std::size_t(d)];
+          return (p.x * (u.y * w.z - u.z * w.y) - p.y * (u.x * w.z - u.z * w.x) +
+                  p.z * (u.x * w.y - u.y * w.x)) /
+                 6;
+        };
+        volume += tri(q[0], q[1], q[2]) + tri(q[0], q[2], q[3]);
+      }
+      for (const auto& [e, n] : edges) RC_ASSERT(n == 0);
+      const auto voxels = std::count(img.values().begin(), img.values().end(), L);
+      RC_ASSERT(std::abs(volume - double(voxels)) < 1e-9);
+    }
+  });
+  // Labels past 2^24 would be rounded in a float property: refused.
+  zdg::Image<std::int64_t> big{zdg::Domain({1, 1, 1}), std::int64_t{1} << 25};
+  EXPECT_THROW(zdg::label_interface_mesh(big, 0, {}), zdg::InvalidArgument);
 }
 
 } // namespace
