@@ -97,6 +97,14 @@ const char* const kPlyNoFace =
     "0 0 0\n1 0 0\n0 1 0\n";
 const char* const kCutVol = "X: 4\nY: 4\nZ: 4\nVersion: 2\n.\nab";
 
+// An ascii PLY mesh with the given vertex and face lines (x y z as double).
+std::string ply_mesh(const std::string& vertices, const std::string& faces, int nv, int nf) {
+  return "ply\nformat ascii 1.0\nelement vertex " + std::to_string(nv) +
+         "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+         std::to_string(nf) + "\nproperty list uchar int vertex_indices\nend_header\n" + vertices +
+         faces;
+}
+
 std::vector<BadInput> bad_inputs() {
   const std::string converge = "converge --shape ball:5 --estimator gauss-area --h 1:0.5:3 ";
   return {
@@ -1357,6 +1365,72 @@ std::vector<BadInput> bad_inputs() {
        {{"cube.npy", cube_npy()}},
        {"c.ply"},
        "c.ply: exists (use --force"},
+      // --- zdg voxelize (issue #38) -------------------------------------------------------------
+      {"voxelize a mesh with a non-finite coordinate",
+       "voxelize {dir}/m.ply --h 0.5 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\nnan 0 0\n0 1 0\n", "3 0 1 2\n", 3, 1)}},
+       {},
+       "not finite"},
+      {"voxelize a mesh with a face using a vertex twice",
+       "voxelize {dir}/m.ply --h 0.5 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 1\n", 3, 1)}},
+       {},
+       "uses vertex 1 twice (a degenerate face)"},
+      {"voxelize a mesh with a vertex index out of range",
+       "voxelize {dir}/m.ply --h 0.5 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 7\n", 3, 1)}},
+       {},
+       "out of range"},
+      {"voxelize on a grid past --max-voxels",
+       "voxelize {dir}/m.ply --h 1e-6 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n", 3, 1)}},
+       {},
+       "exceeds the limit of 4294967296"},
+      {"voxelize solid of a mesh that is not closed",
+       "voxelize {dir}/m.ply --h 0.5 --mode solid -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n", 3, 1)}},
+       {},
+       "not closed: the edge between vertices 0 and 1"},
+      {"voxelize with an unknown mode",
+       "voxelize {dir}/m.ply --h 0.5 --mode 18 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n", 3, 1)}},
+       {},
+       "--mode: voxelization mode '18' is not 6, 26, conservative or solid"},
+      {"voxelize with a step that is not positive",
+       "voxelize {dir}/m.ply --h -1 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n", 3, 1)}},
+       {},
+       "--h: -1 is not positive"},
+      {"voxelize a mesh that is not a .ply, .obj or .off",
+       "voxelize {dir}/m.stl --h 0.5 -o {dir}/v.npy",
+       {{"m.stl", "solid x\n"}},
+       {},
+       "zdg voxelize reads a .ply, .obj or .off mesh"},
+      {"voxelize --winding of a surface mode",
+       "voxelize {dir}/m.ply --h 0.5 --winding 0.5 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n", 3, 1)}},
+       {},
+       "--winding 0.5: a threshold of the solid (--mode solid)"},
+      {"voxelize --winding past its work bound",
+       "voxelize {dir}/m.ply --h 0.0008 --mode solid --winding 0.5 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 1\n", "3 0 1 2\n", 3, 1)}},
+       {},
+       "past the limit of"},
+      {"voxelize an OBJ face with an index out of range",
+       "voxelize {dir}/m.obj --h 0.5 -o {dir}/v.npy",
+       {{"m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"}},
+       {},
+       "m.obj:4: vertex index 4 out of range (3 vertices read)"},
+      {"voxelize an OFF mesh with a non-finite coordinate",
+       "voxelize {dir}/m.off --h 0.5 -o {dir}/v.npy",
+       {{"m.off", "OFF\n3 1 0\n0 0 0\ninf 0 0\n0 1 0\n3 0 1 2\n"}},
+       {},
+       "m.off:4: 'inf' is not finite"},
+      {"voxelize with an origin that is not X,Y,Z",
+       "voxelize {dir}/m.ply --h 0.5 --origin 1,2 -o {dir}/v.npy",
+       {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n", 3, 1)}},
+       {},
+       "--origin: '1,2' is not X,Y,Z"},
   };
 }
 

@@ -121,6 +121,9 @@ const std::vector<Operation>& operations() {
       {"topology persistence", "", "",
        "serve and Python: not bound yet (issue #39 names the command line); the library "
        "function is cubical_persistence (kernel/topology/cubical_persistence.hpp)"},
+      {"voxelize", "", "",
+       "serve and Python: works on files (a mesh in, a volume out); the library function is "
+       "voxelize (kernel/digitization/voxelize.hpp)"},
   };
   return ops;
 }
