@@ -4,13 +4,17 @@
 
 #ifdef ZDG_HAVE_OPENVDB
 #include <openvdb/io/File.h>
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 #endif
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <iostream>
 #include <limits>
 #include <mutex>
+#include <sstream>
 #include <vector>
 
 namespace zdg {
@@ -165,13 +169,31 @@ bool vdb_supported() {
 ScalarVolume read_vdb(const std::string& path) {
   init_openvdb();
   openvdb::GridPtrVecPtr grids;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open");
+  // The library's inline code warns on std::cerr (OPENVDB_LOG_WARN without log4cplus): the
+  // warnings of a damaged file are held back, the error is one line.
+  struct QuietCerr {
+    std::ostringstream held;
+    std::streambuf* old = std::cerr.rdbuf(held.rdbuf());
+    ~QuietCerr() { std::cerr.rdbuf(old); }
+  } quiet;
+  // A stream that throws at the first read past the end: io::File reads a truncated file
+  // without a word (the missing voxels as background), and the library would otherwise go on
+  // with the lengths it failed to read (allocations of any size).
+  in.exceptions(std::ios::failbit | std::ios::badbit);
   try {
-    openvdb::io::File file(path);
-    file.open(false); // no delayed loading: the file may be replaced after the read
-    grids = file.getGrids();
-    file.close();
+    openvdb::io::Stream stream(in, false);
+    grids = stream.getGrids();
   } catch (const openvdb::Exception& e) {
     throw IoError(path + ": not a readable OpenVDB file (" + e.what() + ")");
+  } catch (const std::ios_base::failure&) {
+    throw IoError(path + ": not a readable OpenVDB file (truncated or damaged: the data ends "
+                         "early)");
+  }
+  if (in.fail() || !grids) {
+    throw IoError(path + ": not a readable OpenVDB file (truncated or damaged: the data ends "
+                         "early)");
   }
   std::string types;
   // zdg's own files name the integer dtype they were written from ("zdg_dtype").
