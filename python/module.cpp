@@ -86,8 +86,10 @@ py::dict christoffel(py::handle p_obj, py::handle q_obj, bool upper, bool word) 
   return d;
 }
 
-// A Python int or fractions.Fraction (anything with numerator and denominator) as a rational.
+// A Python int, fractions.Fraction (anything with numerator and denominator) or text such as
+// "1000.5" or "-3/4" as a rational.
 Rational<BigInt> py_to_rational(py::handle h, const char* what) {
+  if (py::isinstance<py::str>(h)) return parse_rational<BigInt>(h.cast<std::string>());
   if (py::hasattr(h, "numerator") && py::hasattr(h, "denominator")) {
     const BigInt den = py_to_bigint(h.attr("denominator"), what);
     if (den == 0) throw InvalidArgument(std::string(what) + ": zero denominator");
@@ -600,7 +602,7 @@ PYBIND11_MODULE(_zdg, m) {
   m.def("motion_check", &motion_check_py, py::arg("a"), py::arg("b"), py::arg("c"), py::kw_only(),
         py::arg("center") = py::none(), py::arg("translation") = py::none(),
         "Whether the digitized rotation of the Pythagorean triple a^2 + b^2 = c^2 (cos = a/c, "
-        "sin = b/c) about `center` followed by `translation` (pairs of ints or Fractions; "
+        "sin = b/c) about `center` followed by `translation` (pairs of ints, Fractions or text; "
         "default 0), D(p) = floor(R (p - center) + center + translation + 1/2), is a bijection "
         "of Z^2: checked over one period of c points (c <= 2^28), past that by the theorem of "
         "Nouvel and Remila for a lattice centre. Returns {'bijective', 'method', 'period', "
