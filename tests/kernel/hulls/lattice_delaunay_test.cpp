@@ -162,18 +162,22 @@ TEST(LatticeDelaunay, VoronoiMapSitesAreDelaunayNearest) {
     }
     const LatticeDelaunay t = lattice_delaunay(coords, dim);
     const VoronoiMap vm = voronoi_map(img);
+    // The squared distance from vertex v to the point p.
+    const auto squared_distance = [](const LatticeDelaunay& tr, std::size_t v,
+                                     const std::vector<std::int64_t>& x) {
+      std::int64_t d = 0;
+      for (std::size_t k = 0; k < x.size(); ++k) {
+        const std::int64_t e = x[k] - tr.points[v * x.size() + k];
+        d += e * e;
+      }
+      return d;
+    };
     for (std::int64_t i = 0; i < img.size(); ++i) {
       img.domain().point(i, p);
       const std::size_t s = t.vertex_of_input[input_of.at(vm.site[static_cast<std::size_t>(i)])];
       std::int64_t best = -1, mine = 0;
       for (std::size_t v = 0; v < t.vertex_count(); ++v) {
-        std::int64_t d = 0;
-        for (int k = 0; k < dim; ++k) {
-          const std::int64_t e =
-              p[static_cast<std::size_t>(k)] -
-              t.points[v * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
-          d += e * e;
-        }
+        const std::int64_t d = squared_distance(t, v, p);
         if (best < 0 || d < best) best = d;
         if (v == s) mine = d;
       }
@@ -181,13 +185,7 @@ TEST(LatticeDelaunay, VoronoiMapSitesAreDelaunayNearest) {
       RC_ASSERT(delaunay_nearest(t, s, p));
       // And the certificate refuses a site that is not nearest.
       for (std::size_t v = 0; v < t.vertex_count(); ++v) {
-        std::int64_t d = 0;
-        for (int k = 0; k < dim; ++k) {
-          const std::int64_t e =
-              p[static_cast<std::size_t>(k)] -
-              t.points[v * static_cast<std::size_t>(dim) + static_cast<std::size_t>(k)];
-          d += e * e;
-        }
+        const std::int64_t d = squared_distance(t, v, p);
         if (d > best) RC_ASSERT(!delaunay_nearest(t, v, p));
       }
     }
