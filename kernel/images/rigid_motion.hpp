@@ -23,8 +23,7 @@
 //   rotation about a lattice point), the answer is the theorem of Nouvel and Remila
 //   ("Characterization of bijective discretized rotations", IWCIA 2004; Roussillon and
 //   Coeurjolly 2016): D is a bijection iff max(|a|, |b|) = c - 1, i.e. the triple is
-//   (2k+1, 2k^2+2k, 2k^2+2k+1) up to order and signs (the tests check it against the period
-//   certificate for every primitive triple with c < 3000); the witness is then searched near
+//   (2k+1, 2k^2+2k, 2k^2+2k+1) up to order and signs; the witness is then searched near
 //   the origin (two points with one image are 8-neighbours: the pairs (p, p + e) with
 //   |p|_inf <= 512, and holes with |q|_inf <= 128) and may be absent; "method": "theorem".
 //   Past 2^28 with a non-integral v: InvalidArgument.
