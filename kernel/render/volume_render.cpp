@@ -145,127 +145,6 @@ TransferFunction transfer_function_preset(const std::string& name, double lo, do
   return tf;
 }
 
-// ---- digital rays ----------------------------------------------------------------------------
-
-namespace {
-
-__extension__ typedef __int128 i128;
-constexpr std::int64_t kMaxRayTerm = std::int64_t{1} << 42;
-constexpr std::int64_t kMaxExtent = std::int64_t{1} << 20;
-
-/// A non-negative-denominator fraction of 128-bit integers (|n| < 2^65, 0 < d < 2^44 here).
-struct Q {
-  i128 n, d;
-};
-Q frac(i128 n, i128 d) {
-  return d < 0 ? Q{-n, -d} : Q{n, d};
-}
-bool lt(const Q& a, const Q& b) {
-  return a.n * b.d < b.n * a.d;
-}
-bool eq(const Q& a, const Q& b) {
-  return a.n * b.d == b.n * a.d;
-}
-i128 floor_div(i128 a, i128 b) { // b > 0
-  i128 q = a / b;
-  if (a % b != 0 && a < 0) --q;
-  return q;
-}
-
-struct Chord {
-  bool hit = false;
-  Q in{0, 1}, out{0, 1};
-};
-
-void check_ray(const DigitalRay& r, const std::array<std::int64_t, 3>& extent) {
-  if (r.denominator <= 0 || r.denominator > kMaxRayTerm)
-    throw InvalidArgument("digital ray: the denominator must lie in [1, 2^42]");
-  bool moving = false;
-  for (int a = 0; a < 3; ++a) {
-    if (r.origin[a] < -kMaxRayTerm || r.origin[a] > kMaxRayTerm || r.direction[a] < -kMaxRayTerm ||
-        r.direction[a] > kMaxRayTerm)
-      throw InvalidArgument("digital ray: origin and direction numerators must lie in "
-                            "[-2^42, 2^42]");
-    if (extent[a] < 1 || extent[a] > kMaxExtent)
-      throw InvalidArgument("digital ray: box extents must lie in [1, 2^20] (got " +
-                            std::to_string(extent[a]) + ")");
-    moving = moving || r.direction[a] != 0;
-  }
-  if (!moving) throw InvalidArgument("digital ray: the direction is zero");
-}
-
-// The open parameter interval over which the line lies in the box's interior along each moving
-// axis and in the half-open slab [-1/2, n - 1/2) along each fixed one.
-Chord chord(const DigitalRay& r, const std::array<std::int64_t, 3>& extent) {
-  const i128 den = r.denominator;
-  Chord c;
-  bool first = true;
-  for (int a = 0; a < 3; ++a) {
-    const i128 o2 = 2 * static_cast<i128>(r.origin[a]);
-    const i128 lo_plane = -den, hi_plane = (2 * static_cast<i128>(extent[a]) - 1) * den;
-    if (r.direction[a] == 0) {
-      if (o2 < lo_plane || o2 >= hi_plane) return c;
-      continue;
-    }
-    const i128 d2 = 2 * static_cast<i128>(r.direction[a]);
-    Q t1 = frac(lo_plane - o2, d2), t2 = frac(hi_plane - o2, d2);
-    if (lt(t2, t1)) std::swap(t1, t2);
-    if (first || lt(c.in, t1)) c.in = t1;
-    if (first || lt(t2, c.out)) c.out = t2;
-    first = false;
-  }
-  c.hit = lt(c.in, c.out);
-  return c;
-}
-
-template <class Visit>
-void traverse(const DigitalRay& r, const std::array<std::int64_t, 3>& extent, Visit&& visit) {
-  const Chord ch = chord(r, extent);
-  if (!ch.hit) return;
-  const i128 den = r.denominator;
-  std::array<std::int64_t, 3> v{};
-  std::array<Q, 3> next{};
-  for (int a = 0; a < 3; ++a) {
-    const i128 D = r.direction[a];
-    // P_a(t_in) + 1/2 = X / Y.
-    const i128 X = 2 * (static_cast<i128>(r.origin[a]) * ch.in.d + ch.in.n * D) + den * ch.in.d;
-    const i128 Y = 2 * den * ch.in.d;
-    i128 c = D >= 0 ? floor_div(X, Y) : -floor_div(-X, Y) - 1; // D < 0: ceil(X / Y) - 1
-    if (c < 0 || c >= extent[a]) throw Error("digital ray: entry voxel outside the box");
-    v[a] = static_cast<std::int64_t>(c);
-    if (D != 0) {
-      const i128 plane = (2 * c + (D > 0 ? 1 : -1)) * den;
-      next[a] = frac(plane - 2 * static_cast<i128>(r.origin[a]), 2 * D);
-    }
-  }
-  for (;;) {
-    visit(v);
-    int best = -1;
-    for (int a = 0; a < 3; ++a)
-      if (r.direction[a] != 0 && (best < 0 || lt(next[a], next[best]))) best = a;
-    const Q t = next[best];
-    if (!lt(t, ch.out)) return;
-    for (int a = 0; a < 3; ++a) {
-      if (r.direction[a] == 0 || !eq(next[a], t)) continue;
-      const int s = r.direction[a] > 0 ? 1 : -1;
-      v[a] += s;
-      const i128 plane = (2 * static_cast<i128>(v[a]) + s) * den;
-      next[a] =
-          frac(plane - 2 * static_cast<i128>(r.origin[a]), 2 * static_cast<i128>(r.direction[a]));
-    }
-  }
-}
-
-} // namespace
-
-std::vector<std::array<std::int64_t, 3>>
-digital_ray_voxels(const DigitalRay& ray, const std::array<std::int64_t, 3>& extent) {
-  check_ray(ray, extent);
-  std::vector<std::array<std::int64_t, 3>> out;
-  traverse(ray, extent, [&](const std::array<std::int64_t, 3>& v) { out.push_back(v); });
-  return out;
-}
-
 // ---- camera ----------------------------------------------------------------------------------
 
 namespace {
@@ -316,6 +195,8 @@ Camera make_camera(const std::array<std::int64_t, 3>& extent, const std::array<d
 }
 
 constexpr double kRayDen = double(std::int64_t{1} << 20);
+constexpr std::int64_t kMaxRayTerm = std::int64_t{1} << 42; // digital_ray.hpp's bounds
+constexpr std::int64_t kMaxExtent = std::int64_t{1} << 20;
 
 DigitalRay camera_ray(const Camera& c, const VolumeRenderOptions& o, int px, int py) {
   const double u = c.u0 + (px + 0.5 - o.width / 2.0) * c.pixel;
@@ -483,7 +364,7 @@ VolumeRendering render_volume(const ScalarVolume& volume, const TransferFunction
       if (o.mip) {
         double best = -std::numeric_limits<double>::infinity();
         std::int64_t seen = 0;
-        traverse(r, vol.n, [&](const std::array<std::int64_t, 3>& v) {
+        for_each_ray_voxel(r, vol.n, [&](const std::array<std::int64_t, 3>& v) {
           best = std::max(best, vol.at(v[0], v[1], v[2]));
           ++seen;
         });
@@ -495,7 +376,7 @@ VolumeRendering render_volume(const ScalarVolume& volume, const TransferFunction
         out.picture.set(px, static_cast<int>(py), Rgb{to8(c.r), to8(c.g), to8(c.b)});
         continue;
       }
-      const Chord ch = chord(r, vol.n);
+      const RayChord ch = digital_ray_chord(r, vol.n);
       if (!ch.hit) continue;
       const double den = double(r.denominator);
       const double org[3] = {double(r.origin[0]) / den, double(r.origin[1]) / den,

@@ -7,12 +7,8 @@
 // rendering", IEEE TVCG 1(2)). Forms: "value r g b alpha" lines ('#' comments), or
 // {"points": [[value, r, g, b, alpha], ...]}.
 //
-// Digital ray: the line (O + t D) / den (integers, den > 0) in voxel coordinates (voxel x is
-// the unit cube centred on x), clipped to the box. Its voxels are those the line crosses over
-// a positive length, in the order of t (half-open cubes decide a line in a face plane; a step
-// crosses one, two or three faces at once). Amanatides & Woo 1987, "A fast voxel traversal
-// algorithm for ray tracing", every comparison exact in 128-bit integers: |O|, |D|, den at
-// most 2^42, extents at most 2^20 (InvalidArgument otherwise). O(visited voxels).
+// Digital ray: kernel/images/digital_ray.hpp (the voxels a rational line crosses over a
+// positive length, exact). O(visited voxels).
 //
 // Camera: orthographic, render_mesh.hpp's view convention (azimuth around +z, elevation, +z
 // up), the box's projection framed; each pixel's ray rounded to den = 2^20.
@@ -25,6 +21,7 @@
 // 2D volumes are volumes of one slice.
 #pragma once
 
+#include <zdg/kernel/images/digital_ray.hpp>
 #include <zdg/kernel/images/scalar_volume.hpp>
 #include <zdg/kernel/render/picture.hpp>
 
@@ -66,17 +63,6 @@ TransferFunction read_transfer_function(const std::string& path);
 TransferFunction transfer_function_preset(const std::string& name, double lo, double hi);
 /// "grey", "ct-bone", "ct-soft-tissue".
 std::vector<std::string> transfer_function_presets();
-
-struct DigitalRay {
-  std::array<std::int64_t, 3> origin{};    ///< numerators, voxel coordinates (x, y, z)
-  std::array<std::int64_t, 3> direction{}; ///< not all zero
-  std::int64_t denominator = 1;
-};
-
-/// The voxels (x, y, z) of a box of `extent` (x, y, z) that the ray crosses over a positive
-/// length, in the order of the ray (see above); empty when it misses the box.
-std::vector<std::array<std::int64_t, 3>>
-digital_ray_voxels(const DigitalRay& ray, const std::array<std::int64_t, 3>& extent);
 
 struct VolumeRenderOptions {
   int width = 800, height = 800;
