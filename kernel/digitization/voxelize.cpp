@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -501,12 +503,15 @@ std::int64_t ceil_quotient(const BigRational& n, const BigRational& d, std::int6
   return static_cast<std::int64_t>(c);
 }
 
-Image<std::uint8_t> voxelize_solid(const PolygonMesh& mesh, const VoxelizationGrid& grid,
-                                   const Prepared& p, unsigned threads) {
-  const std::int64_t nx = grid.extents[0], ny = grid.extents[1], nz = grid.extents[2];
-  Image<std::uint8_t> out(Domain({nz, ny, nx}));
-  // Layers of centres z = 2k + 1 each triangle may cross (one layer of slack for rounding).
-  std::vector<std::int64_t> start(static_cast<std::size_t>(nz) + 1, 0);
+// The triangles each layer of centres z = 2k + 1 may cross (one layer of slack for rounding).
+struct LayerLists {
+  std::vector<std::int64_t> start, list;
+};
+
+LayerLists solid_lists(const VoxelizationGrid& grid, const Prepared& p) {
+  const std::int64_t nz = grid.extents[2];
+  LayerLists l;
+  l.start.assign(static_cast<std::size_t>(nz) + 1, 0);
   auto layers = [&](const std::array<std::int64_t, 3>& t, std::int64_t& k0, std::int64_t& k1) {
     double mn = p.coords[static_cast<std::size_t>(t[0])][2].v, mx = mn;
     for (int k = 1; k < 3; ++k) {
@@ -519,22 +524,30 @@ Image<std::uint8_t> voxelize_solid(const PolygonMesh& mesh, const VoxelizationGr
   for (const auto& t : p.tris) {
     std::int64_t k0, k1;
     layers(t, k0, k1);
-    for (std::int64_t k = k0; k <= k1; ++k) ++start[static_cast<std::size_t>(k) + 1];
+    for (std::int64_t k = k0; k <= k1; ++k) ++l.start[static_cast<std::size_t>(k) + 1];
   }
-  for (std::size_t k = 0; k < static_cast<std::size_t>(nz); ++k) start[k + 1] += start[k];
-  std::vector<std::int64_t> list(static_cast<std::size_t>(start.back()));
-  {
-    std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < p.tris.size(); ++i) {
-      std::int64_t k0, k1;
-      layers(p.tris[i], k0, k1);
-      for (std::int64_t k = k0; k <= k1; ++k)
-        list[static_cast<std::size_t>(fill[static_cast<std::size_t>(k)]++)] =
-            static_cast<std::int64_t>(i);
-    }
+  for (std::size_t k = 0; k < static_cast<std::size_t>(nz); ++k) l.start[k + 1] += l.start[k];
+  l.list.resize(static_cast<std::size_t>(l.start.back()));
+  std::vector<std::int64_t> fill(l.start.begin(), l.start.end() - 1);
+  for (std::size_t i = 0; i < p.tris.size(); ++i) {
+    std::int64_t k0, k1;
+    layers(p.tris[i], k0, k1);
+    for (std::int64_t k = k0; k <= k1; ++k)
+      l.list[static_cast<std::size_t>(fill[static_cast<std::size_t>(k)]++)] =
+          static_cast<std::int64_t>(i);
   }
-  auto& vol = out.values();
-  parallel_for(nz, threads, [&](std::int64_t k) {
+  return l;
+}
+
+// The solid's layers k in [z0, z1) into out (layer z0 first; zero on entry).
+void solid_layers(const PolygonMesh& mesh, const VoxelizationGrid& grid, const Prepared& p,
+                  const LayerLists& lists, std::int64_t z0, std::int64_t z1, std::uint8_t* vol,
+                  unsigned threads) {
+  const std::int64_t nx = grid.extents[0], ny = grid.extents[1];
+  const auto& start = lists.start;
+  const auto& list = lists.list;
+  parallel_for(z1 - z0, threads, [&](std::int64_t kk) {
+    const std::int64_t k = z0 + kk;
     std::vector<std::vector<std::pair<std::int64_t, int>>> events(static_cast<std::size_t>(ny));
     const Fe z{static_cast<double>(2 * k + 1), 0};
     for (std::int64_t li = start[static_cast<std::size_t>(k)];
@@ -576,14 +589,13 @@ Image<std::uint8_t> voxelize_solid(const PolygonMesh& mesh, const VoxelizationGr
       std::sort(ev.begin(), ev.end());
       std::int64_t w = 0;
       std::size_t at = ev.size();
-      std::uint8_t* row = vol.data() + (k * ny + j) * nx;
+      std::uint8_t* row = vol + (kk * ny + j) * nx;
       for (std::int64_t i = nx - 1; i >= 0; --i) {
         while (at > 0 && ev[at - 1].first > i) w += ev[--at].second;
         row[i] = w != 0;
       }
     }
   });
-  return out;
 }
 
 } // namespace
@@ -782,24 +794,16 @@ bool triangle_voxel_test(const std::array<Point3<double>, 3>& triangle,
   return surface_test(t, edges(t), centre, mode, u);
 }
 
-Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelizationGrid& grid,
-                             VoxelizationMode mode, unsigned threads) {
-  check_grid(grid);
-  check_mesh(mesh);
-  if (mode == VoxelizationMode::solid) check_closed_mesh(mesh);
-  Prepared p = prepare(mesh, grid);
-  if (mode == VoxelizationMode::solid) return voxelize_solid(mesh, grid, p, threads);
-  // Identical triangles once (the set is a union).
-  {
-    for (auto& t : p.tris) std::sort(t.begin(), t.end());
-    std::sort(p.tris.begin(), p.tris.end());
-    p.tris.erase(std::unique(p.tris.begin(), p.tris.end()), p.tris.end());
-  }
-  const std::int64_t nx = grid.extents[0], ny = grid.extents[1], nz = grid.extents[2];
-  Image<std::uint8_t> out(Domain({nz, ny, nx}));
-  constexpr std::int64_t kSlab = 4;
+namespace {
+
+constexpr std::int64_t kSlab = 4; // the surface modes' unit of work: 4 layers
+
+// The triangles of each group of kSlab layers (surface modes).
+LayerLists surface_lists(const VoxelizationGrid& grid, const Prepared& p) {
+  const std::int64_t nz = grid.extents[2];
   const std::int64_t slabs = (nz + kSlab - 1) / kSlab;
-  std::vector<std::int64_t> start(static_cast<std::size_t>(slabs) + 1, 0);
+  LayerLists l;
+  l.start.assign(static_cast<std::size_t>(slabs) + 1, 0);
   auto range = [&](const std::array<std::int64_t, 3>& t, std::int64_t& s0, std::int64_t& s1) {
     double mn = p.coords[static_cast<std::size_t>(t[0])][2].v, mx = mn;
     for (int k = 1; k < 3; ++k) {
@@ -814,31 +818,99 @@ Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelizationGrid& gr
   for (const auto& t : p.tris) {
     std::int64_t s0, s1;
     range(t, s0, s1);
-    for (std::int64_t s = s0; s <= s1; ++s) ++start[static_cast<std::size_t>(s) + 1];
+    for (std::int64_t s = s0; s <= s1; ++s) ++l.start[static_cast<std::size_t>(s) + 1];
   }
-  for (std::size_t s = 0; s < static_cast<std::size_t>(slabs); ++s) start[s + 1] += start[s];
-  std::vector<std::int64_t> list(static_cast<std::size_t>(start.back()));
-  {
-    std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t i = 0; i < p.tris.size(); ++i) {
-      std::int64_t s0, s1;
-      range(p.tris[i], s0, s1);
-      for (std::int64_t s = s0; s <= s1; ++s)
-        list[static_cast<std::size_t>(fill[static_cast<std::size_t>(s)]++)] =
-            static_cast<std::int64_t>(i);
+  for (std::size_t s = 0; s < static_cast<std::size_t>(slabs); ++s) l.start[s + 1] += l.start[s];
+  l.list.resize(static_cast<std::size_t>(l.start.back()));
+  std::vector<std::int64_t> fill(l.start.begin(), l.start.end() - 1);
+  for (std::size_t i = 0; i < p.tris.size(); ++i) {
+    std::int64_t s0, s1;
+    range(p.tris[i], s0, s1);
+    for (std::int64_t s = s0; s <= s1; ++s)
+      l.list[static_cast<std::size_t>(fill[static_cast<std::size_t>(s)]++)] =
+          static_cast<std::int64_t>(i);
+  }
+  return l;
+}
+
+// The voxelization in slabs of `depth` layers (a multiple of kSlab): for each, buffer(z0) gives
+// the zeroed memory of layers [z0, z1), then done(z0, z1).
+template <class Buffer, class Done>
+void voxelize_slabs(const PolygonMesh& mesh, const VoxelizationGrid& grid, VoxelizationMode mode,
+                    std::int64_t depth, unsigned threads, Buffer&& buffer, Done&& done) {
+  check_grid(grid);
+  check_mesh(mesh);
+  if (mode == VoxelizationMode::solid) check_closed_mesh(mesh);
+  Prepared p = prepare(mesh, grid);
+  const std::int64_t nx = grid.extents[0], ny = grid.extents[1], nz = grid.extents[2];
+  if (mode == VoxelizationMode::solid) {
+    const LayerLists lists = solid_lists(grid, p);
+    for (std::int64_t z0 = 0; z0 < nz; z0 += depth) {
+      const std::int64_t z1 = std::min(nz, z0 + depth);
+      solid_layers(mesh, grid, p, lists, z0, z1, buffer(z0, z1), threads);
+      done(z0, z1);
     }
+    return;
   }
-  auto& vol = out.values();
-  parallel_for(slabs, threads, [&](std::int64_t s) {
-    const std::int64_t z0 = s * kSlab, z1 = std::min(nz, z0 + kSlab);
-    std::uint8_t* slab = vol.data() + z0 * ny * nx;
-    for (std::int64_t li = start[static_cast<std::size_t>(s)];
-         li < start[static_cast<std::size_t>(s) + 1]; ++li)
-      voxelize_triangle(mesh, grid, p,
-                        p.tris[static_cast<std::size_t>(list[static_cast<std::size_t>(li)])], mode,
-                        z0, z1, slab);
-  });
-  return out;
+  // Identical triangles once (the set is a union).
+  for (auto& t : p.tris) std::sort(t.begin(), t.end());
+  std::sort(p.tris.begin(), p.tris.end());
+  p.tris.erase(std::unique(p.tris.begin(), p.tris.end()), p.tris.end());
+  const LayerLists lists = surface_lists(grid, p);
+  for (std::int64_t z0 = 0; z0 < nz; z0 += depth) {
+    const std::int64_t z1 = std::min(nz, z0 + depth);
+    std::uint8_t* vol = buffer(z0, z1);
+    const std::int64_t g0 = z0 / kSlab, g1 = (z1 + kSlab - 1) / kSlab;
+    parallel_for(g1 - g0, threads, [&](std::int64_t gi) {
+      const std::int64_t s = g0 + gi;
+      const std::int64_t a = s * kSlab, b = std::min(nz, a + kSlab);
+      std::uint8_t* slab = vol + (a - z0) * ny * nx;
+      for (std::int64_t li = lists.start[static_cast<std::size_t>(s)];
+           li < lists.start[static_cast<std::size_t>(s) + 1]; ++li)
+        voxelize_triangle(
+            mesh, grid, p,
+            p.tris[static_cast<std::size_t>(lists.list[static_cast<std::size_t>(li)])], mode, a, b,
+            slab);
+    });
+    done(z0, z1);
+  }
+}
+
+} // namespace
+
+Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelizationGrid& grid,
+                             VoxelizationMode mode, unsigned threads) {
+  check_grid(grid);
+  const std::int64_t nx = grid.extents[0], ny = grid.extents[1], nz = grid.extents[2];
+  std::optional<Image<std::uint8_t>> out; // allocated once the mesh is checked
+  voxelize_slabs(
+      mesh, grid, mode, (nz + kSlab - 1) / kSlab * kSlab, threads,
+      [&](std::int64_t z0, std::int64_t) {
+        if (!out) out.emplace(Domain({nz, ny, nx}));
+        return out->values().data() + z0 * ny * nx;
+      },
+      [](std::int64_t, std::int64_t) {});
+  return std::move(*out);
+}
+
+void voxelize_by_slabs(
+    const PolygonMesh& mesh, const VoxelizationGrid& grid, VoxelizationMode mode,
+    std::int64_t depth,
+    const std::function<void(std::int64_t, std::int64_t, const std::uint8_t*)>& slab,
+    unsigned threads) {
+  check_grid(grid);
+  if (depth < 1 || depth % kSlab != 0)
+    throw InvalidArgument("voxelize: the slab depth " + std::to_string(depth) +
+                          " is not a positive multiple of 4");
+  const std::int64_t nx = grid.extents[0], ny = grid.extents[1];
+  std::vector<std::uint8_t> buf;
+  voxelize_slabs(
+      mesh, grid, mode, depth, threads,
+      [&](std::int64_t z0, std::int64_t z1) {
+        buf.assign(static_cast<std::size_t>((z1 - z0) * ny * nx), 0);
+        return buf.data();
+      },
+      [&](std::int64_t z0, std::int64_t z1) { slab(z0, z1 - z0, buf.data()); });
 }
 
 } // namespace zdg

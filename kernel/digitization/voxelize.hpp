@@ -63,6 +63,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -93,6 +94,17 @@ VoxelizationGrid voxel_grid_for(const PolygonMesh& mesh, double h,
 /// The voxelization of the mesh in the given mode on the grid (see above).
 Image<std::uint8_t> voxelize(const PolygonMesh& mesh, const VoxelizationGrid& grid,
                              VoxelizationMode mode, unsigned threads = 0);
+
+/// The same voxels, slab by slab: slab(z0, depth, data) for z0 = 0, depth, 2 depth, ... with
+/// data the bytes [z][y][x] of the layers [z0, z0 + depth) (the last slab may be thinner), in
+/// order, so that a grid larger than memory can be streamed (kernel/images/voxel_dag.hpp).
+/// Memory: one slab plus O(F). InvalidArgument for a depth that is not a positive multiple of 4,
+/// and as voxelize().
+void voxelize_by_slabs(
+    const PolygonMesh& mesh, const VoxelizationGrid& grid, VoxelizationMode mode,
+    std::int64_t depth,
+    const std::function<void(std::int64_t, std::int64_t, const std::uint8_t*)>& slab,
+    unsigned threads = 0);
 
 /// The exact test of one voxel against one triangle in a surface mode (conservative, six,
 /// twenty_six): the predicate voxelize() applies, for oracles and tests.

@@ -432,6 +432,37 @@ RC_GTEST_PROP(Voxelize, ResultDoesNotDependOnThreads, ()) {
     RC_ASSERT(voxelize(s.mesh, s.grid, mode, 1) == voxelize(s.mesh, s.grid, mode, 4));
 }
 
+// Streaming: the slabs of any depth (a multiple of 4) concatenate to the whole voxelization,
+// in every mode (the exact predicates do not depend on where a slab starts).
+RC_GTEST_PROP(Voxelize, SlabsConcatenateToTheWholeVolume, ()) {
+  Rng rng{std::mt19937(*rc::gen::arbitrary<std::uint32_t>())};
+  const Shells s = random_shells(rng);
+  const std::int64_t depth = 4 * *rc::gen::inRange<std::int64_t>(1, 4);
+  for (const Mode mode : {Mode::six, Mode::conservative, Mode::twenty_six, Mode::solid}) {
+    const Image<std::uint8_t> whole = voxelize(s.mesh, s.grid, mode, 2);
+    std::vector<std::uint8_t> got;
+    std::int64_t next = 0;
+    voxelize_by_slabs(
+        s.mesh, s.grid, mode, depth,
+        [&](std::int64_t z0, std::int64_t n, const std::uint8_t* data) {
+          RC_ASSERT(z0 == next);
+          RC_ASSERT(n == std::min(depth, s.grid.extents[2] - z0));
+          got.insert(got.end(), data, data + n * s.grid.extents[0] * s.grid.extents[1]);
+          next += n;
+        },
+        2);
+    RC_ASSERT(got == whole.values());
+  }
+}
+
+TEST(Voxelize, SlabDepthMustBeAMultipleOfFour) {
+  Rng rng{std::mt19937(7)};
+  const Shells s = random_shells(rng);
+  const auto ignore = [](std::int64_t, std::int64_t, const std::uint8_t*) {};
+  EXPECT_THROW(voxelize_by_slabs(s.mesh, s.grid, Mode::six, 6, ignore), InvalidArgument);
+  EXPECT_THROW(voxelize_by_slabs(s.mesh, s.grid, Mode::six, 0, ignore), InvalidArgument);
+}
+
 // ---- worked examples: lattice-aligned boxes ----
 
 // Grid units: the box [A, B]^3. Closed forms, per axis: m = floor(B) - ceil(A) + 2 voxels meet
