@@ -53,6 +53,8 @@ void add_motion_commands(CLI::App& app, Context& ctx);
 /// zdg topology persistence (cli/topology_persistence_command.cpp), added by add_topology_commands.
 void add_topology_persistence_command(CLI::App& topology);
 void add_voxelize_commands(CLI::App& app, Context& ctx);
+/// zdg dag, and zdg render dag (added to the render command: after add_render_commands).
+void add_dag_commands(CLI::App& app, Context& ctx);
 
 /// The extension of a path in lower case ("a/B.PLY" -> ".ply"), for the checks of the
 /// output and input formats.

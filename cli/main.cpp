@@ -160,6 +160,7 @@ int main(int argc, char** argv) {
     zdg::cli::add_convex_commands(app, ctx);
     zdg::cli::add_motion_commands(app, ctx);
     zdg::cli::add_voxelize_commands(app, ctx);
+    zdg::cli::add_dag_commands(app, ctx);
     make_integer_options_decimal(app);
     try {
       app.parse(argc, argv);

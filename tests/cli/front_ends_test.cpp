@@ -124,6 +124,13 @@ const std::vector<Operation>& operations() {
       {"voxelize", "", "",
        "serve and Python: works on files (a mesh in, a volume out); the library function is "
        "voxelize (kernel/digitization/voxelize.hpp)"},
+      {"dag", "", "",
+       "serve and Python: not bound yet; the library is kernel/images/voxel_dag.hpp "
+       "(build_voxel_dag, "
+       "VoxelDagBuilder, ray_hits)"},
+      {"render dag", "", "",
+       "serve and Python: writes a picture file; the library function is render_dag "
+       "(kernel/render/dag_render.hpp)"},
   };
   return ops;
 }
