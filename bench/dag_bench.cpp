@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <random>
 
 namespace {
@@ -42,7 +43,8 @@ zdg::PolygonMesh scene_mesh(int noise) {
 
 std::vector<VoxelDag> build(std::int64_t side, int noise, unsigned threads) {
   const zdg::PolygonMesh mesh = scene_mesh(noise);
-  const zdg::VoxelizationGrid grid = zdg::voxel_grid_for(mesh, 2.04 / double(side - 4));
+  const zdg::VoxelizationGrid grid =
+      zdg::voxel_grid_for(mesh, 2.04 / double(side - 4), std::nullopt, std::int64_t{1} << 40);
   zdg::VoxelDagBuilder dag(grid.extents, VoxelDagKind::dag);
   zdg::VoxelDagBuilder ss(grid.extents, VoxelDagKind::ssvdag);
   zdg::voxelize_by_slabs(
@@ -114,7 +116,13 @@ void FirstHits(benchmark::State& state) {
   state.counters["rays"] = double(rays);
 }
 
-BENCHMARK(FirstHits)->Arg(1024)->Arg(2048)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(FirstHits)
+    ->Arg(512)
+    ->Arg(1024)
+    ->Arg(2048)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
 
 } // namespace
 

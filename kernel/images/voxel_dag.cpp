@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 
 namespace zdg {
@@ -410,9 +411,40 @@ bool VoxelDag::contains(const std::array<std::int64_t, 3>& v) const {
 
 namespace {
 
+__extension__ typedef __int128 i128;
+
+// A parameter n / d (d > 0) with its double approximation v: comparisons are decided on v when
+// the gap exceeds v's error bound (|v - n/d| <= 2^-51.9 |n/d|: n rounded once, d < 2^53 exact,
+// one division), and exactly on the 128-bit cross products otherwise.
+struct Time {
+  i128 n, d;
+  double v;
+};
+Time make_time(i128 n, i128 d) {
+  if (d < 0) {
+    n = -n;
+    d = -d;
+  }
+  return {n, d, static_cast<double>(n) / static_cast<double>(d)};
+}
+inline bool lt(const Time& a, const Time& b) {
+  const double gap = b.v - a.v, tol = (std::abs(a.v) + std::abs(b.v)) * 0x1p-50;
+  if (gap > tol) return true;
+  if (gap < -tol) return false;
+  return a.n * b.d < b.n * a.d;
+}
+inline bool eq(const Time& a, const Time& b) {
+  const double gap = b.v - a.v, tol = (std::abs(a.v) + std::abs(b.v)) * 0x1p-50;
+  if (gap > tol || gap < -tol) return false;
+  return a.n * b.d == b.n * a.d;
+}
+
+// A piece of a node's chord in one child: its ends are the node's entry, exit or mid-plane
+// parameters (pointers into the caller's frame: no copies on the way down).
 struct Piece {
+  const Time* start;
+  const Time* end;
   unsigned slot;
-  RayTime start, end;
   int axis;
 };
 
@@ -421,56 +453,65 @@ struct RayWalk {
   const std::vector<std::uint32_t>& words;
   const std::vector<std::uint64_t>& leaves;
   const DigitalRay& r;
-  std::vector<DagRayHit>& out;
+  std::vector<DagRayHit>* out;     // all hits, up to max; or
+  std::optional<DagRayHit>* first; // the first only
   std::size_t max;
+  std::size_t found = 0;
+  std::array<i128, 3> o2{}, d2{}; // 2 O, 2 D
 
-  // The pieces of (tin, tout) in the children of size h of the cube at c, in order.
-  int split(const std::array<std::int64_t, 3>& c, std::int64_t h, const RayTime& tin, int ain,
-            const RayTime& tout, Piece* pieces) const {
-    __extension__ typedef __int128 i128;
-    std::array<RayTime, 3> tm{};
-    std::array<int, 3> cut{};
+  bool full() const { return found >= max; }
+  void emit(const std::array<std::int64_t, 3>& v, int axis) {
+    ++found;
+    if (first)
+      *first = DagRayHit{v, axis};
+    else
+      out->push_back({v, axis});
+  }
+
+  // The pieces of (tin, tout) in the children of size h of the cube at c, in order; tm receives
+  // the mid-plane parameters the pieces point to.
+  int split(const std::array<std::int64_t, 3>& c, std::int64_t h, const Time& tin, int ain,
+            const Time& tout, Time* tm, Piece* pieces) const {
+    int cut[3];
     int n = 0;
-    unsigned fixed = 0;
+    unsigned slot = 0;
+    int axis = ain;
     for (int a = 0; a < 3; ++a) {
       const auto ua = static_cast<std::size_t>(a);
-      if (r.direction[ua] == 0) {
-        const i128 plane = (2 * static_cast<i128>(c[ua] + h) - 1) * r.denominator;
-        if (2 * static_cast<i128>(r.origin[ua]) >= plane) fixed |= 1u << a;
+      const i128 plane = (2 * static_cast<i128>(c[ua] + h) - 1) * r.denominator;
+      if (d2[ua] == 0) {
+        if (o2[ua] >= plane) slot |= 1u << a;
         continue;
       }
-      tm[ua] = ray_plane_time(r, a, c[ua] + h);
-      if (tin < tm[ua] && tm[ua] < tout) {
-        int i = n++;
-        while (i > 0 &&
-               tm[ua] < tm[static_cast<std::size_t>(cut[static_cast<std::size_t>(i - 1)])]) {
-          cut[static_cast<std::size_t>(i)] = cut[static_cast<std::size_t>(i - 1)];
-          --i;
-        }
-        cut[static_cast<std::size_t>(i)] = a;
+      tm[a] = make_time(plane - o2[ua], d2[ua]);
+      const bool after_in = lt(tin, tm[a]);
+      // The child's side at the entry: above the mid-plane when it was crossed before (D > 0)
+      // or will be crossed after (D < 0) the entry.
+      if (after_in == (d2[ua] < 0)) slot |= 1u << a;
+      if (!after_in) {
+        if (a < axis && eq(tm[a], tin)) axis = a; // crossed at the entry: the lowest axis
+        continue;
       }
+      if (!lt(tm[a], tout)) continue;
+      int i = n++;
+      while (i > 0 && lt(tm[a], tm[cut[i - 1]])) {
+        cut[i] = cut[i - 1];
+        --i;
+      }
+      cut[i] = a;
     }
     int count = 0;
-    RayTime start = tin;
-    int axis = ain;
-    for (int a = 0; a < 3; ++a) // a mid-plane crossed at the entry: the lowest axis enters
-      if (a < axis && r.direction[static_cast<std::size_t>(a)] != 0 &&
-          same_time(tm[static_cast<std::size_t>(a)], tin))
-        axis = a;
+    const Time* start = &tin;
     for (int k = 0; k <= n; ++k) {
-      const RayTime end =
-          k < n ? tm[static_cast<std::size_t>(cut[static_cast<std::size_t>(k)])] : tout;
-      if (!(start < end)) continue; // the same parameter as the previous cut: an edge or corner
-      unsigned slot = fixed;
-      for (int a = 0; a < 3; ++a) {
-        const auto ua = static_cast<std::size_t>(a);
-        if (r.direction[ua] == 0) continue;
-        const bool upper = r.direction[ua] > 0 ? !(start < tm[ua]) : !(tm[ua] < end);
-        if (upper) slot |= 1u << a;
+      const Time* end = k < n ? &tm[cut[k]] : &tout;
+      // A piece of zero length (two cuts at one parameter: an edge or a corner) is skipped; the
+      // next piece keeps the lower axis.
+      if (k == 0 || !eq(*start, *end)) {
+        pieces[count++] = {start, end, slot, axis};
+        start = end;
+        if (k < n) axis = cut[k];
       }
-      pieces[count++] = {slot, start, end, axis};
-      start = end;
-      if (k < n) axis = cut[static_cast<std::size_t>(k)];
+      if (k < n) slot ^= 1u << cut[k];
     }
     return count;
   }
@@ -480,29 +521,29 @@ struct RayWalk {
     return {c[0] + (s & 1 ? h : 0), c[1] + (s & 2 ? h : 0), c[2] + (s & 4 ? h : 0)};
   }
 
-  bool full() const { return out.size() >= max; }
-
-  void leaf(std::uint64_t mask, unsigned m, const std::array<std::int64_t, 3>& c,
-            const RayTime& tin, int ain, const RayTime& tout) {
+  void leaf(std::uint64_t mask, unsigned m, const std::array<std::int64_t, 3>& c, const Time& tin,
+            int ain, const Time& tout) {
+    Time t2[3];
     Piece p2[4];
-    const int n2 = split(c, 2, tin, ain, tout, p2);
+    const int n2 = split(c, 2, tin, ain, tout, t2, p2);
     for (int i = 0; i < n2 && !full(); ++i) {
       if ((mask & kSubCube[p2[i].slot ^ m]) == 0) continue;
       const auto c1 = child(c, p2[i].slot, 2);
+      Time t1[3];
       Piece p1[4];
-      const int n1 = split(c1, 1, p2[i].start, p2[i].axis, p2[i].end, p1);
+      const int n1 = split(c1, 1, *p2[i].start, p2[i].axis, *p2[i].end, t1, p1);
       for (int j = 0; j < n1 && !full(); ++j) {
         const auto v = child(c1, p1[j].slot, 1);
         const unsigned bit =
             stored_bit(static_cast<unsigned>(v[0] & 3), static_cast<unsigned>(v[1] & 3),
                        static_cast<unsigned>(v[2] & 3), m);
-        if ((mask >> bit) & 1) out.push_back({v, p1[j].axis});
+        if ((mask >> bit) & 1) emit(v, p1[j].axis);
       }
     }
   }
 
   void node(std::uint32_t ref, int level, unsigned m, const std::array<std::int64_t, 3>& c,
-            const RayTime& tin, int ain, const RayTime& tout) {
+            const Time& tin, int ain, const Time& tout) {
     m ^= ref & 7;
     if (level == 2) {
       leaf(leaves[ref >> 3], m, c, tin, ain, tout);
@@ -510,35 +551,46 @@ struct RayWalk {
     }
     const std::uint32_t* w = words.data() + (ref >> 3);
     const std::int64_t h = std::int64_t{1} << (level - 1);
+    Time t[3];
     Piece p[4];
-    const int n = split(c, h, tin, ain, tout, p);
+    const int n = split(c, h, tin, ain, tout, t, p);
     for (int i = 0; i < n && !full(); ++i) {
       const unsigned s = p[i].slot ^ m;
       if (!((w[0] >> s) & 1)) continue;
-      node(w[child_offset(w[0], s)], level - 1, m, child(c, p[i].slot, h), p[i].start, p[i].axis,
-           p[i].end);
+      node(w[child_offset(w[0], s)], level - 1, m, child(c, p[i].slot, h), *p[i].start, p[i].axis,
+           *p[i].end);
     }
+  }
+
+  void run(std::uint32_t root, int depth, std::int64_t side) {
+    const std::array<std::int64_t, 3> box{side, side, side};
+    check_digital_ray(r, box);
+    if (root == kEmpty || max == 0) return;
+    const RayChord ch = digital_ray_chord(r, box);
+    if (!ch.hit) return;
+    for (std::size_t a = 0; a < 3; ++a) {
+      o2[a] = 2 * static_cast<i128>(r.origin[a]);
+      d2[a] = 2 * static_cast<i128>(r.direction[a]);
+    }
+    const Time tin = make_time(ch.in.n, ch.in.d), tout = make_time(ch.out.n, ch.out.d);
+    node(root, depth, 0, {0, 0, 0}, tin, ch.in_axis, tout);
   }
 };
 
 } // namespace
 
 std::vector<DagRayHit> VoxelDag::ray_hits(const DigitalRay& ray, std::size_t max_hits) const {
-  const std::array<std::int64_t, 3> box{side(), side(), side()};
-  check_digital_ray(ray, box);
   std::vector<DagRayHit> out;
-  if (root_ == kEmpty || max_hits == 0) return out;
-  const RayChord ch = digital_ray_chord(ray, box);
-  if (!ch.hit) return out;
-  RayWalk walk{words_, leaves_, ray, out, max_hits};
-  walk.node(root_, depth_, 0, {0, 0, 0}, ch.in, ch.in_axis, ch.out);
+  RayWalk walk{words_, leaves_, ray, &out, nullptr, max_hits};
+  walk.run(root_, depth_, side());
   return out;
 }
 
 std::optional<DagRayHit> VoxelDag::first_hit(const DigitalRay& ray) const {
-  const auto h = ray_hits(ray, 1);
-  if (h.empty()) return std::nullopt;
-  return h.front();
+  std::optional<DagRayHit> first;
+  RayWalk walk{words_, leaves_, ray, nullptr, &first, 1};
+  walk.run(root_, depth_, side());
+  return first;
 }
 
 VoxelDagStats VoxelDag::stats() const {
