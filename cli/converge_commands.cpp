@@ -12,10 +12,12 @@
 //                --samples exp:60:90:5 -o DIR   (a samples sweep: N points sampled on the
 //                                               shape, errors against N; sampled estimators)
 //   zdg converge --list
+//   mpirun -np P zdg converge ... --mpi   (the runs on P MPI ranks, largest first, gathered
+//                                         by rank 0: the same outputs; cli/mpi_sweep.hpp)
 //
 // Flags and TOML files are read into the same settings and validated by one function
 // (validate_experiment_settings): a flag given on the command line overrides the file.
-//   zdg paper cviu2014-ii2d -o DIR [--quick]
+//   zdg paper cviu2014-ii2d -o DIR [--quick] [--mpi]
 //   zdg laplacians [--shape sphere1] [--h 0.1] [--operator NAME]... [--cube 20] [--json]
 //     (the property table of the Laplacians, convergence/laplacian_comparison.hpp: a markdown
 //     table on stdout, or JSON; papers/laplacian-comparison/run.py reads it)

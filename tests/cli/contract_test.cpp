@@ -1431,6 +1431,11 @@ std::vector<BadInput> bad_inputs() {
        {{"m.ply", ply_mesh("0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n", 3, 1)}},
        {},
        "--origin: '1,2' is not X,Y,Z"},
+      {"converge --mpi without an MPI launcher (or in a zdg built without MPI)",
+       "converge --shape ball:5 --estimator gauss-area --h 0.5 -o {dir}/o --mpi",
+       {},
+       {},
+       "--mpi: "},
   };
 }
 
