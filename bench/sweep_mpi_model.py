@@ -3,8 +3,8 @@
 
 Reads a results.csv of `zdg converge` or `zdg paper` (column `seconds`: each run's own time),
 groups its runs into the jobs `zdg converge --mpi` hands out (one (shape, h, translation) per
-estimator, or of the estimators that share a computation: --shared NAME,... names them; the
-3D integral invariants ii-mean, ii-k1, ii-k2 by default), and replays the hand-out of
+estimator, or of the estimators that share a computation: the 3D integral invariants ii-*, the
+jets jet-*, the corrected normal currents cnc-*; Estimator::shared_computation), and replays the hand-out of
 cli/mpi_sweep.hpp: jobs in plan order (finest h first, then shape, then translation: the
 largest-first order when the shapes share their box, as the CVIU 2014 3D shapes do), each to
 the first rank that is free. --copies K counts each job K times (a sweep measured with one
@@ -20,16 +20,23 @@ import csv
 import heapq
 from collections import OrderedDict
 
-DEFAULT_SHARED = "ii-mean,ii-k1,ii-k2,ii-gaussian,ii-k1-direction,ii-k2-direction"
+def shared_tag(name, dimension):
+    """The estimators' shared computation (convergence/estimators_*.cpp), or None."""
+    if name.startswith("ii-") and dimension == 3:
+        return "ii-3d"
+    for prefix in ("jet-", "cnc-"):
+        if name.startswith(prefix):
+            return prefix + "3d"
+    return None
 
 
-def jobs_of(path, shared):
+def jobs_of(path):
     jobs = OrderedDict()
     shapes = []
     with open(path, newline="") as f:
         for row in csv.DictReader(f):
             name = row["estimator"].split(":")[0]
-            group = "shared" if name in shared else row["estimator"]
+            group = shared_tag(name, len(row["offset"].split())) or row["estimator"]
             if row["shape"] not in shapes:
                 shapes.append(row["shape"])
             level = float(row["h"]) if row["h"] else -float(row.get("samples") or 0)
@@ -56,9 +63,8 @@ def main():
     ap.add_argument("--ranks", default="1,2,4,64")
     ap.add_argument("--copies", type=int, default=1)
     ap.add_argument("--scale", type=float, default=1.0)
-    ap.add_argument("--shared", default=DEFAULT_SHARED)
     a = ap.parse_args()
-    one = jobs_of(a.csv, set(a.shared.split(",")))
+    one = jobs_of(a.csv)
     costs = [c * a.scale for c in one for _ in range(a.copies)]
     total, largest = sum(costs), max(costs)
     print(f"{len(costs)} jobs, sum {total:.1f} s, largest {largest:.2f} s")
