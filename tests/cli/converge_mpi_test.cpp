@@ -129,6 +129,20 @@ TEST(ConvergeMpi, OutputsEqualTheSingleProcessSweep) {
   const auto r = test::run_mpi(3, args + " --mpi");
   EXPECT_EQ(r.status, ref.status) << r.err;
   EXPECT_EQ(strip(r.out), strip(ref.out));
+  // The figures: drawn by rank 0 from the gathered results.csv and summary.json (by the script
+  // that draws the single process's; they differ only in the panel of the seconds per run).
+  if (fs::exists("/usr/bin/python3")) {
+    const auto plotted = test::run_mpi(
+        2, "paper gauss-area --quick --threads 1 --quiet --force --mpi -o " + quoted(dir / "fig"));
+    EXPECT_EQ(plotted.status, 0) << plotted.err;
+    if (plotted.out.find("plot:") != std::string::npos) { // matplotlib is there
+      for (const char* name : {"convergence.png", "convergence.svg", "convergence.html"}) {
+        EXPECT_GT(fs::file_size(dir / "fig" / name), 0u) << name;
+      }
+    } else {
+      EXPECT_NE(plotted.err.find("the plot could not be drawn"), std::string::npos) << plotted.err;
+    }
+  }
   fs::remove_all(dir);
 }
 
