@@ -12,10 +12,12 @@
 //                --samples exp:60:90:5 -o DIR   (a samples sweep: N points sampled on the
 //                                               shape, errors against N; sampled estimators)
 //   zdg converge --list
+//   mpirun -np P zdg converge ... --mpi   (the runs on P MPI ranks, largest first, gathered
+//                                         by rank 0: the same outputs; cli/mpi_sweep.hpp)
 //
 // Flags and TOML files are read into the same settings and validated by one function
 // (validate_experiment_settings): a flag given on the command line overrides the file.
-//   zdg paper cviu2014-ii2d -o DIR [--quick]
+//   zdg paper cviu2014-ii2d -o DIR [--quick] [--mpi]
 //   zdg laplacians [--shape sphere1] [--h 0.1] [--operator NAME]... [--cube 20] [--json]
 //     (the property table of the Laplacians, convergence/laplacian_comparison.hpp: a markdown
 //     table on stdout, or JSON; papers/laplacian-comparison/run.py reads it)
@@ -28,6 +30,8 @@
 // bad input.
 #include <zdg/arith/error.hpp>
 #include <zdg/cli/commands.hpp>
+#include <zdg/cli/mpi_session.hpp>
+#include <zdg/cli/mpi_sweep.hpp>
 #include <zdg/convergence/config.hpp>
 #include <zdg/convergence/estimator.hpp>
 #include <zdg/convergence/experiment.hpp>
@@ -44,6 +48,8 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <new>
+#include <optional>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -61,7 +67,7 @@ struct ConvergeOptions {
   std::optional<std::string> h, samples, k, alpha, box, title, translations, fit_levels, threads,
       seed, tolerance;
   std::string output;
-  bool json = false, quiet = false, list = false, force = false, no_plot = false;
+  bool json = false, quiet = false, list = false, force = false, no_plot = false, mpi = false;
 };
 
 std::string source_dir() {
@@ -395,39 +401,27 @@ void list_json() {
   print_json({{"shapes", shapes}, {"estimators", ests}});
 }
 
-void run_converge(ConvergeOptions o, Context& ctx) {
-  if (o.list) {
-    if (o.json) {
-      list_json();
+// The progress line on stderr (a terminal only, not with --quiet); none otherwise.
+ProgressFn progress_line(const ConvergeOptions& o) {
+  if (o.quiet || isatty(2) == 0) return {};
+  return [](std::size_t done, std::size_t total, const RunRecord& r) {
+    std::cerr << "\r[" << done << "/" << total << "] " << r.shape << " " << r.estimator;
+    if (r.samples > 0) {
+      std::cerr << " N=" << r.samples;
     } else {
-      print_list();
+      std::cerr << " h=" << std::setprecision(4) << r.h;
     }
-    return;
-  }
-  ExperimentConfig config = make_config(o);
-  if (o.output.empty() && !o.json) throw InvalidArgument("no output directory given (-o DIR)");
-  // Every output is checked (and DIR created) before any work.
-  std::unique_ptr<ConvergeOutputs> outputs;
-  if (!o.output.empty()) {
-    outputs = std::make_unique<ConvergeOutputs>(o.output, o.force, !o.no_plot, published_csv(o));
-  }
-  const fs::path dir(o.output);
-  const bool show = !o.quiet && isatty(2) != 0;
-  ProgressFn progress;
-  if (show) {
-    progress = [](std::size_t done, std::size_t total, const RunRecord& r) {
-      std::cerr << "\r[" << done << "/" << total << "] " << r.shape << " " << r.estimator;
-      if (r.samples > 0) {
-        std::cerr << " N=" << r.samples;
-      } else {
-        std::cerr << " h=" << std::setprecision(4) << r.h;
-      }
-      std::cerr << " t=" << r.translation << "   " << std::flush;
-      if (done == total) std::cerr << '\n';
-    };
-  }
-  ExperimentResult result = run_experiment(config, progress);
+    std::cerr << " t=" << r.translation << "   " << std::flush;
+    if (done == total) std::cerr << '\n';
+  };
+}
 
+// Writes the outputs of a finished experiment (results.csv, summary.json, the plot: committed
+// together) and prints its fits (text or --json). Returns the exit status: 1 when a theory
+// check failed, 0 otherwise.
+int report_converge(const ConvergeOptions& o, const ExperimentConfig& config,
+                    const ExperimentResult& result, ConvergeOutputs* outputs) {
+  const fs::path dir(o.output);
   nlohmann::json summary{
       {"config", config_json(config, result, o)},
       {"fits", fits_json(result, config.samples_sweep())},
@@ -439,7 +433,7 @@ void run_converge(ConvergeOptions o, Context& ctx) {
         {"grid_step", "the double nearest to each h, used as an exact dyadic rational"},
         {"seed", config.seed}}}};
   bool plotted = false; // the plot line is printed only for a plot that was drawn
-  if (outputs) {
+  if (outputs != nullptr) {
     std::ostringstream csv;
     write_results_csv(result, csv);
     plotted = outputs->write(csv.str(), summary.dump(2) + "\n");
@@ -475,7 +469,107 @@ void run_converge(ConvergeOptions o, Context& ctx) {
       }
     }
   }
-  if (!result.all_pass) ctx.exit_code = 1;
+  return result.all_pass ? 0 : 1;
+}
+
+// A failure's one line, as cli/main.cpp prints an error (for the MPI ranks, which print their
+// own: a rank that fails must not leave the others waiting).
+std::string error_line(const std::string& what) {
+  std::string line = "zdg: " + (what.empty() ? std::string("unknown error") : what);
+  for (char& c : line) {
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  }
+  return line;
+}
+
+// `zdg converge|paper ... --mpi` (issue #40, cli/mpi_sweep.hpp): one rank of an MPI job. Every
+// rank validates the experiment (the same flags and files: the same plan) and rank 0 checks its
+// outputs (creating DIR); a failure there is agreed on and reported once, by the lowest rank
+// that met it. The runs are handed out by rank 0 and gathered there; rank 0 alone writes the
+// outputs (staged, committed together) and prints. A rank's failure in a run: rank 0 prints
+// its line, removes the staged outputs (and a DIR it created), then every rank exits with 2.
+void run_converge_mpi(const ConvergeOptions& o, Context& ctx) {
+  MpiSession mpi; // refuses a zdg built without MPI, or a process not started by mpirun
+  const int rank = mpi.rank(), P = mpi.size();
+  if (o.list) {
+    if (rank == 0) {
+      if (o.json) {
+        list_json();
+      } else {
+        print_list();
+      }
+    }
+    return;
+  }
+  std::string failure;
+  ExperimentConfig config;
+  std::optional<ExperimentPlan> plan;
+  std::unique_ptr<ConvergeOutputs> outputs;
+  try {
+    config = make_config(o);
+    if (o.output.empty() && !o.json) throw InvalidArgument("no output directory given (-o DIR)");
+    plan.emplace(plan_experiment(config));
+    if (rank == 0 && !o.output.empty()) {
+      outputs = std::make_unique<ConvergeOutputs>(o.output, o.force, !o.no_plot, published_csv(o));
+    }
+  } catch (const std::bad_alloc&) {
+    failure = "out of memory";
+  } catch (const std::exception& e) {
+    failure = e.what();
+    if (failure.empty()) failure = "unknown error";
+  }
+  const auto first_failed = static_cast<int>(mpi.min_over_ranks(failure.empty() ? P : rank));
+  if (first_failed < P) {
+    if (rank == first_failed) std::cerr << error_line(failure) << std::endl;
+    outputs.reset(); // rank 0's staged files and created DIR, before any rank exits
+    mpi.max_over_ranks(0);
+    ctx.exit_code = 2;
+    return;
+  }
+  RankSweep sweep =
+      run_plan_on_ranks(mpi, *plan, config, rank == 0 ? progress_line(o) : ProgressFn());
+  int status = 0;
+  if (rank == 0) {
+    try {
+      if (!sweep.failure.empty()) throw Error(sweep.failure);
+      status = report_converge(
+          o, config, experiment_result(*plan, config, std::move(sweep.runs), sweep.threads),
+          outputs.get());
+    } catch (const std::bad_alloc&) {
+      std::cerr << error_line("out of memory") << std::endl;
+      status = 2;
+    } catch (const std::exception& e) {
+      std::cerr << error_line(e.what()) << std::endl;
+      status = 2;
+    }
+    outputs.reset(); // (committed, or removed with a DIR it created)
+    std::cout.flush();
+  }
+  ctx.exit_code = finish_on_ranks(mpi, status);
+}
+
+void run_converge(ConvergeOptions o, Context& ctx) {
+  if (o.mpi) {
+    run_converge_mpi(o, ctx);
+    return;
+  }
+  if (o.list) {
+    if (o.json) {
+      list_json();
+    } else {
+      print_list();
+    }
+    return;
+  }
+  ExperimentConfig config = make_config(o);
+  if (o.output.empty() && !o.json) throw InvalidArgument("no output directory given (-o DIR)");
+  // Every output is checked (and DIR created) before any work.
+  std::unique_ptr<ConvergeOutputs> outputs;
+  if (!o.output.empty()) {
+    outputs = std::make_unique<ConvergeOutputs>(o.output, o.force, !o.no_plot, published_csv(o));
+  }
+  const ExperimentResult result = run_experiment(config, progress_line(o));
+  if (report_converge(o, config, result, outputs.get()) != 0) ctx.exit_code = 1;
 }
 
 // A flag kept as text when given (its value is checked with the TOML values).
@@ -494,6 +588,10 @@ void add_run_options(CLI::App* cmd, ConvergeOptions& o) {
   cmd->add_flag("--quiet", o.quiet, "No progress on stderr");
   cmd->add_flag("--force", o.force, "Replace results already in the output directory");
   cmd->add_flag("--no-plot", o.no_plot, "Do not draw convergence.png/.svg/.html");
+  cmd->add_flag("--mpi", o.mpi,
+                "One rank of an MPI job (mpirun -np P zdg ... --mpi): the runs handed out to "
+                "the ranks, largest first; rank 0 writes the same outputs (--threads: per rank, "
+                "0: the cores shared among the ranks of a machine)");
 }
 
 } // namespace
@@ -646,6 +744,15 @@ void add_converge_commands(CLI::App& app, Context& ctx) {
       fs::path dir = fs::path(source_dir()) / "papers" / *name;
       fs::path file = dir / (*quick ? "quick.toml" : "config.toml");
       if (!fs::exists(file) && fs::exists(dir / "run.py")) {
+        if (o->mpi) { // refused once, by rank 0
+          MpiSession mpi;
+          if (mpi.rank() != 0) {
+            ctx.exit_code = 2;
+            return;
+          }
+          throw InvalidArgument("--mpi: zdg paper " + *name + " runs a script (papers/" + *name +
+                                "/run.py), not a sweep; run it without --mpi");
+        }
         run_paper_script(dir / "run.py", o->output, *quick, o->force);
         return;
       }

@@ -4,8 +4,10 @@
 #include <zdg/cli/mpi_session.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cstdlib>
+#include <thread>
 #include <vector>
 
 #ifdef ZDG_HAVE_MPI
@@ -50,11 +52,14 @@ MpiSession::MpiSession() {
     throw InvalidArgument("--mpi: not started by an MPI launcher (run it as mpirun -np P zdg ... "
                           "--mpi)");
   }
-  int ready = 0;
+  int ready = 0, level = MPI_THREAD_SINGLE;
   MPI_Initialized(&ready);
-  if (ready == 0 && MPI_Init(nullptr, nullptr) != MPI_SUCCESS) {
+  if (ready == 0 &&
+      MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &level) != MPI_SUCCESS) {
     throw IoError("--mpi: MPI_Init failed");
   }
+  if (ready != 0) MPI_Query_thread(&level);
+  serialized_ = level >= MPI_THREAD_SERIALIZED;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
   MPI_Comm local;
@@ -112,6 +117,40 @@ std::string MpiSession::broadcast(const std::string& text, int root) {
 void MpiSession::abort(int status) {
   MPI_Abort(MPI_COMM_WORLD, status);
   std::_Exit(status);
+}
+
+void MpiSession::send(int to, int tag, const std::string& bytes) {
+  if (bytes.size() > static_cast<std::size_t>(INT_MAX)) {
+    throw InvalidArgument("--mpi: a message of " + std::to_string(bytes.size()) +
+                          " bytes exceeds MPI's int counts");
+  }
+  const int code =
+      MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD);
+  if (code != MPI_SUCCESS) throw IoError("--mpi: MPI_Send failed: " + mpi_error(code));
+}
+
+std::optional<MpiSession::Message> MpiSession::try_receive(int from, int tag) {
+  int arrived = 0;
+  MPI_Status st;
+  MPI_Iprobe(from < 0 ? MPI_ANY_SOURCE : from, tag < 0 ? MPI_ANY_TAG : tag, MPI_COMM_WORLD,
+             &arrived, &st);
+  if (arrived == 0) return std::nullopt;
+  int n = 0;
+  MPI_Get_count(&st, MPI_BYTE, &n);
+  Message m{st.MPI_SOURCE, st.MPI_TAG, std::string(static_cast<std::size_t>(n), '\0')};
+  const int code =
+      MPI_Recv(m.bytes.data(), n, MPI_BYTE, m.source, m.tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  if (code != MPI_SUCCESS) throw IoError("--mpi: MPI_Recv failed: " + mpi_error(code));
+  return m;
+}
+
+MpiSession::Message MpiSession::receive(int from, int tag) {
+  auto pause = std::chrono::microseconds(100);
+  for (;;) {
+    if (auto m = try_receive(from, tag)) return std::move(*m);
+    std::this_thread::sleep_for(pause);
+    pause = std::min<std::chrono::microseconds>(pause * 2, std::chrono::milliseconds(2));
+  }
 }
 
 void MpiSession::read(const std::string& path, std::uint64_t offset, void* data,
@@ -192,6 +231,13 @@ std::string MpiSession::broadcast(const std::string& text, int) {
 }
 void MpiSession::abort(int status) {
   std::_Exit(status);
+}
+void MpiSession::send(int, int, const std::string&) {}
+std::optional<MpiSession::Message> MpiSession::try_receive(int, int) {
+  return std::nullopt;
+}
+MpiSession::Message MpiSession::receive(int, int) {
+  return {};
 }
 void MpiSession::read(const std::string&, std::uint64_t, void*, std::uint64_t) {}
 void MpiSession::write_rows(const std::string&, std::uint64_t, std::uint64_t, std::uint64_t,

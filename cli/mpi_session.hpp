@@ -1,6 +1,8 @@
 // One rank of an MPI job, for `zdg transform dt|voronoi --mpi` (issue #15): the collective
 // operations of the distributed transform (kernel/transforms/distributed_transform.hpp) over
-// MPI_COMM_WORLD, and the MPI-IO reads and writes of the .npy slabs and column blocks. mpi.h is
+// MPI_COMM_WORLD, and the MPI-IO reads and writes of the .npy slabs and column blocks; for
+// `zdg converge|paper --mpi` (issue #40, cli/mpi_sweep.hpp): tagged messages between ranks. The
+// session asks for MPI_THREAD_SERIALIZED (one thread at a time may call MPI). mpi.h is
 // included by cli/mpi_session.cpp only; a zdg built without MPI (no
 // libopenmpi-dev at configure time) compiles the same class with every call refused.
 #pragma once
@@ -8,6 +10,7 @@
 #include <zdg/kernel/transforms/distributed_transform.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace zdg::cli {
@@ -41,6 +44,25 @@ public:
   /// which the others, waiting in a collective step, could not see.
   [[noreturn]] void abort(int status);
 
+  /// Whether threads may call the session one at a time (MPI_THREAD_SERIALIZED granted).
+  bool serialized() const { return serialized_; }
+
+  /// A message between two ranks: its sender, its tag and its bytes.
+  struct Message {
+    int source = 0, tag = 0;
+    std::string bytes;
+  };
+  /// Sends `bytes` (at most 2^31 - 1) to rank `to` with tag `tag` (0..32767) (MPI_Send).
+  void send(int to, int tag, const std::string& bytes);
+  /// The next message from rank `from` (-1: any rank) with tag `tag` (-1: any tag) when one
+  /// has arrived (MPI_Iprobe, then MPI_Recv of its size), none otherwise; messages of one
+  /// sender arrive in the order sent.
+  std::optional<Message> try_receive(int from, int tag);
+  /// Waits for such a message, polling with sleeps of 0.1 to 2 ms: a rank that waits leaves
+  /// its core to the ranks that compute (MPI's blocking receive spins on it, which an
+  /// oversubscribed machine pays for).
+  Message receive(int from, int tag);
+
   /// Reads `bytes` bytes of the file from byte `offset` (independent MPI-IO reads, in pieces
   /// of at most 1 GiB); IoError on failure.
   void read(const std::string& path, std::uint64_t offset, void* data, std::uint64_t bytes);
@@ -52,6 +74,7 @@ public:
 
 private:
   int rank_ = 0, size_ = 1, local_size_ = 1;
+  bool serialized_ = false;
 };
 
 } // namespace zdg::cli

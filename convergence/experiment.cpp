@@ -307,111 +307,128 @@ bool record_order(const RunRecord& a, const RunRecord& b) {
 
 } // namespace
 
-std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConfig& config,
-                                const ProgressFn& progress, unsigned* workers) {
+std::vector<ExperimentJob> plan_jobs(const ExperimentPlan& plan, const ExperimentConfig& config) {
   // One job per run, except that the entries whose estimators share a computation (the 3D
   // integral invariants) run as one job per (h, shape, translation), one after the other on
   // one thread: their cache then computes the shared part once. As separate jobs (the
   // translations of one entry in a row), a computation of the finest levels of the CVIU 2014
   // 3D sweep (up to 420 MB) was evicted before the next entry needed it and made again.
-  struct Job {
-    std::size_t shape;
-    std::vector<std::size_t> entries;
-    double h;
-    std::int64_t samples;
-    int translation;
-    std::size_t first; // index of its first record
-  };
-  std::vector<Job> jobs;
-  std::size_t runs = 0;
+  std::vector<ExperimentJob> jobs;
   // The levels (h, N), finest first: the smallest h, or the largest N.
   std::vector<std::pair<double, std::int64_t>> levels;
   for (auto it = plan.hs.rbegin(); it != plan.hs.rend(); ++it) levels.emplace_back(*it, 0);
   for (auto it = plan.samples.rbegin(); it != plan.samples.rend(); ++it)
     levels.emplace_back(0.0, *it);
-  for (auto it = levels.begin(); it != levels.end(); ++it) {
+  for (const auto& [h, samples] : levels) {
     for (std::size_t s = 0; s < plan.shapes.size(); ++s) {
-      std::vector<std::vector<std::size_t>> shared; // entries by tag, in order of appearance
+      const Shape& shape = *plan.shapes[s];
+      double points = static_cast<double>(samples);
+      if (samples == 0) {
+        points = 1;
+        const std::vector<double> origin(static_cast<std::size_t>(shape.dimension()), 0.0);
+        for (const auto& [lo, hi] : run_box(config, shape, origin, h)) points *= (hi - lo) / h + 1;
+      }
+      std::vector<std::vector<std::size_t>> groups; // one entry, or the entries sharing a tag
       for (std::size_t e = 0; e < plan.entries.size(); ++e) {
         const std::string& tag = plan.entries[e].estimator->shared_computation;
-        if (tag.empty()) {
-          for (int t = 0; t < plan.runs_per_level; ++t) {
-            jobs.push_back({s, {e}, it->first, it->second, t, runs});
-            ++runs;
-          }
-          continue;
-        }
-        auto group = std::find_if(shared.begin(), shared.end(), [&](const auto& g) {
-          return plan.entries[g.front()].estimator->shared_computation == tag;
+        auto group = std::find_if(groups.begin(), groups.end(), [&](const auto& g) {
+          return !tag.empty() && plan.entries[g.front()].estimator->shared_computation == tag;
         });
-        if (group == shared.end()) {
-          shared.push_back({e});
+        if (group == groups.end()) {
+          groups.push_back({e});
         } else {
           group->push_back(e);
         }
       }
-      for (const auto& group : shared) {
+      for (const auto& group : groups) {
         for (int t = 0; t < plan.runs_per_level; ++t) {
-          jobs.push_back({s, group, it->first, it->second, t, runs});
-          runs += group.size();
+          jobs.push_back({s, group, h, samples, t, points * static_cast<double>(group.size())});
         }
       }
     }
   }
-  std::vector<RunRecord> records(runs);
+  std::stable_sort(jobs.begin(), jobs.end(),
+                   [](const ExperimentJob& a, const ExperimentJob& b) { return a.size > b.size; });
+  return jobs;
+}
+
+std::vector<RunRecord> job_records(const ExperimentPlan& plan, const ExperimentConfig& config,
+                                   const ExperimentJob& job) {
+  const Shape& shape = *plan.shapes[job.shape];
+  std::vector<RunRecord> records;
+  for (const std::size_t e : job.entries) {
+    const EstimatorEntry& entry = plan.entries[e];
+    RunRecord r;
+    r.shape_index = job.shape;
+    r.entry_index = e;
+    r.shape = shape.spec();
+    r.estimator = entry.label;
+    r.h = job.h;
+    r.samples = job.samples;
+    r.translation = job.translation;
+    r.offset = config.translations == 0 || job.samples > 0
+                   ? std::vector<double>(static_cast<std::size_t>(shape.dimension()), 0.0)
+                   : random_translation(config.seed, job.translation, shape.dimension(), job.h);
+    r.k = entry.on_shape(job.shape).k;
+    r.alpha = entry.on_shape(job.shape).alpha;
+    records.push_back(std::move(r));
+  }
+  return records;
+}
+
+std::vector<RunRecord> run_job(const ExperimentPlan& plan, const ExperimentConfig& config,
+                               const ExperimentJob& job) {
+  const Shape& shape = *plan.shapes[job.shape];
+  std::vector<RunRecord> records = job_records(plan, config, job);
+  for (auto& r : records) {
+    const EstimatorParameters& p = plan.entries[r.entry_index].on_shape(job.shape);
+    RunInput in{shape,   job.h,    r.offset,    run_box(config, shape, r.offset, job.h),
+                r.k,     r.alpha,  p.degree,    p.function,
+                p.count, p.choice, job.samples, sampling_seed(config.seed, job.translation),
+                p.sigma};
+    auto t0 = std::chrono::steady_clock::now();
+    r.errors = plan.entries[r.entry_index].estimator->run(in);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!std::isfinite(r.errors.linf) || !std::isfinite(r.errors.l2)) {
+      throw Error("estimator '" + r.estimator + "' produced a non-finite error on '" + r.shape +
+                  (job.samples > 0 ? "' at N = " + std::to_string(job.samples)
+                                   : "' at h = " + std::to_string(job.h)) +
+                  " (translation " + std::to_string(job.translation) + ")");
+    }
+  }
+  return records;
+}
+
+void sort_runs(std::vector<RunRecord>& runs) {
+  std::sort(runs.begin(), runs.end(), record_order);
+}
+
+std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConfig& config,
+                                const ProgressFn& progress, unsigned* workers) {
+  const std::vector<ExperimentJob> jobs = plan_jobs(plan, config);
+  std::size_t total = 0;
+  for (const auto& job : jobs) total += job.entries.size();
+  std::vector<std::vector<RunRecord>> done_jobs(jobs.size());
   std::atomic<std::size_t> done{0};
   std::mutex mutex;
   if (workers != nullptr) *workers = worker_count(config.threads, std::int64_t(jobs.size()));
   parallel_for(std::int64_t(jobs.size()), config.threads, [&](std::int64_t ji) {
-    const Job& job = jobs[std::size_t(ji)];
-    const Shape& shape = *plan.shapes[job.shape];
-    for (std::size_t j = 0; j < job.entries.size(); ++j) {
-      const std::size_t i = job.first + j;
-      const EstimatorEntry& entry = plan.entries[job.entries[j]];
-      RunRecord r;
-      r.shape_index = job.shape;
-      r.entry_index = job.entries[j];
-      r.shape = shape.spec();
-      r.estimator = entry.label;
-      r.h = job.h;
-      r.samples = job.samples;
-      r.translation = job.translation;
-      r.offset = config.translations == 0 || job.samples > 0
-                     ? std::vector<double>(static_cast<std::size_t>(shape.dimension()), 0.0)
-                     : random_translation(config.seed, job.translation, shape.dimension(), job.h);
-      r.k = entry.on_shape(job.shape).k;
-      r.alpha = entry.on_shape(job.shape).alpha;
-      RunInput in{shape,
-                  job.h,
-                  r.offset,
-                  run_box(config, shape, r.offset, job.h),
-                  r.k,
-                  r.alpha,
-                  entry.on_shape(job.shape).degree,
-                  entry.on_shape(job.shape).function,
-                  entry.on_shape(job.shape).count,
-                  entry.on_shape(job.shape).choice,
-                  job.samples,
-                  sampling_seed(config.seed, job.translation),
-                  entry.on_shape(job.shape).sigma};
-      auto t0 = std::chrono::steady_clock::now();
-      r.errors = entry.estimator->run(in);
-      r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      if (!std::isfinite(r.errors.linf) || !std::isfinite(r.errors.l2)) {
-        throw Error("estimator '" + entry.label + "' produced a non-finite error on '" + r.shape +
-                    (job.samples > 0 ? "' at N = " + std::to_string(job.samples)
-                                     : "' at h = " + std::to_string(job.h)) +
-                    " (translation " + std::to_string(job.translation) + ")");
-      }
-      records[i] = std::move(r);
-      std::size_t n = done.fetch_add(1) + 1;
+    const auto j = static_cast<std::size_t>(ji);
+    done_jobs[j] = run_job(plan, config, jobs[j]);
+    for (const auto& r : done_jobs[j]) {
+      const std::size_t n = done.fetch_add(1) + 1;
       if (progress) {
         std::lock_guard<std::mutex> lock(mutex);
-        progress(n, records.size(), records[i]);
+        progress(n, total, r);
       }
     }
   });
-  std::sort(records.begin(), records.end(), record_order);
+  std::vector<RunRecord> records;
+  records.reserve(total);
+  for (auto& job : done_jobs) {
+    for (auto& r : job) records.push_back(std::move(r));
+  }
+  sort_runs(records);
   return records;
 }
 
@@ -508,14 +525,23 @@ std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
   return fits;
 }
 
-ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn& progress) {
-  const ExperimentPlan plan = plan_experiment(config);
+ExperimentResult experiment_result(const ExperimentPlan& plan, const ExperimentConfig& config,
+                                   std::vector<RunRecord> runs, unsigned threads) {
   ExperimentResult result;
   result.entries = plan.entries;
-  result.runs = run_plan(plan, config, progress, &result.threads);
+  sort_runs(runs);
+  result.runs = std::move(runs);
+  result.threads = threads;
   result.fits = fit_experiment(plan, aggregate_levels(result.runs), config.fit_levels,
                                config.tolerance, result.all_pass);
   return result;
+}
+
+ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn& progress) {
+  const ExperimentPlan plan = plan_experiment(config);
+  unsigned threads = 1;
+  std::vector<RunRecord> runs = run_plan(plan, config, progress, &threads);
+  return experiment_result(plan, config, std::move(runs), threads);
 }
 
 void write_results_csv(const ExperimentResult& result, std::ostream& out) {

@@ -13,10 +13,11 @@
 // The steps, each a function (run_experiment composes them):
 //   plan_experiment    validation: shapes parse, entries resolve, dimensions agree, grid steps
 //                      sorted decreasing without repeats, counts in range. O(input).
-//   run_plan           scheduling: one job per run, finest grid steps first (the longest jobs,
-//                      for load balance) over `threads` workers (kernel/parallel/parallel_for.hpp);
-//                      the runs of one (h, shape, translation) whose estimators share a
-//                      computation (Estimator::shared_computation) are one job.
+//   run_plan           scheduling: one job per run (plan_jobs), largest first (for load balance)
+//                      over `threads` workers (kernel/parallel/parallel_for.hpp); the runs of
+//                      one (h, shape, translation) whose estimators share a computation
+//                      (Estimator::shared_computation) are one job (run_job); a front end may
+//                      hand the same jobs to other processes (`zdg converge --mpi`).
 //   aggregate_levels   aggregation per (shape, entry, h), after sorting the records: O(n log n)
 //                      for n runs.
 //   fit_experiment     the fits per norm on the finest levels, and the theory verdicts.
@@ -165,8 +166,42 @@ using ProgressFn = std::function<void(std::size_t, std::size_t, const RunRecord&
 /// unknown or repeated shapes and entries, mismatched dimensions, counts out of range.
 ExperimentPlan plan_experiment(const ExperimentConfig& config);
 
-/// Scheduling: runs every job of the plan; records in the order of ExperimentResult::runs.
-/// `workers`, when given, receives the number of workers used.
+/// One job of run_plan: the run of one entry at one (level, shape, translation), or the runs of
+/// the entries whose estimators share a computation (Estimator::shared_computation), one after
+/// the other on one thread (their cache then makes the shared part once).
+struct ExperimentJob {
+  std::size_t shape = 0;
+  std::vector<std::size_t> entries; // into the plan, in the plan's order
+  double h = 0;                     // 0 in a samples sweep
+  std::int64_t samples = 0;         // 0 in a grid-step sweep
+  int translation = 0;
+  // The estimate that orders the jobs largest first: the grid points of the untranslated run's
+  // digitization box (the sample count N in a samples sweep) times the number of entries.
+  double size = 0;
+};
+
+/// The jobs of the plan, largest first (ExperimentJob::size decreasing; ties in the order of
+/// the levels, finest first, then shape, entry, translation): the order a dynamic scheduler
+/// hands them out in, so that the longest runs do not come last. O(J log J) for J jobs.
+std::vector<ExperimentJob> plan_jobs(const ExperimentPlan& plan, const ExperimentConfig& config);
+
+/// The records of a job without their measurements (errors and seconds zero): shape, entry,
+/// h, N, translation, offset, k and alpha, one per entry of the job, in the job's order.
+std::vector<RunRecord> job_records(const ExperimentPlan& plan, const ExperimentConfig& config,
+                                   const ExperimentJob& job);
+
+/// Runs a job on the calling thread: job_records with the errors and the seconds measured.
+/// Throws Error for a non-finite error, and what the estimator throws.
+std::vector<RunRecord> run_job(const ExperimentPlan& plan, const ExperimentConfig& config,
+                               const ExperimentJob& job);
+
+/// Sorts records into the order of ExperimentResult::runs (shape, entry, h decreasing or N
+/// increasing, translation): the order does not depend on which worker ran what. O(n log n).
+void sort_runs(std::vector<RunRecord>& runs);
+
+/// Scheduling: runs every job of the plan (plan_jobs, largest first, over `threads` workers of
+/// parallel_for); records in the order of ExperimentResult::runs. `workers`, when given,
+/// receives the number of workers used.
 std::vector<RunRecord> run_plan(const ExperimentPlan& plan, const ExperimentConfig& config,
                                 const ProgressFn& progress = {}, unsigned* workers = nullptr);
 
@@ -180,6 +215,11 @@ std::vector<LevelErrors> aggregate_levels(std::vector<RunRecord> runs);
 std::vector<FitRecord> fit_experiment(const ExperimentPlan& plan,
                                       const std::vector<LevelErrors>& levels, int fit_levels,
                                       double tolerance, bool& all_pass);
+
+/// The result of a plan's runs (every run of the plan, in any order; `threads`: the workers
+/// that ran them): sort_runs, aggregate_levels, fit_experiment.
+ExperimentResult experiment_result(const ExperimentPlan& plan, const ExperimentConfig& config,
+                                   std::vector<RunRecord> runs, unsigned threads);
 
 /// plan_experiment, run_plan, aggregate_levels, fit_experiment.
 ExperimentResult run_experiment(const ExperimentConfig& config, const ProgressFn& progress = {});

@@ -1492,6 +1492,11 @@ std::vector<BadInput> bad_inputs() {
        {{"cube.npy", cube_npy()}},
        {},
        "--png-size 10x10: picture size 10x10 (200x150 .. 8192x8192)"},
+      {"converge --mpi without an MPI launcher (or in a zdg built without MPI)",
+       "converge --shape ball:5 --estimator gauss-area --h 0.5 -o {dir}/o --mpi",
+       {},
+       {},
+       "--mpi: "},
   };
 }
 

@@ -31,50 +31,8 @@ struct Files {
   std::string path(const std::string& name) const { return (dir / name).string(); }
 };
 
-// `mpiexec -np P zdg ARGS` through the shell, stdout and stderr captured. OpenMPI refuses to
-// run as root (CI containers) unless told, and more ranks than cores unless oversubscribed;
-// under the sanitizers, OpenMPI's own allocations left at exit are not zdg's leaks. Each
-// launch gets its own session directory: OpenMPI 4 puts every job of a user under
-// $TMPDIR/ompi.HOST.UID, and two launches creating it at once (two tests in parallel under
-// ctest -j) fail with "mkdir ... File exists" (seen in CI). The path is short, as the
-// launcher's sockets live below it.
-test::CliResult run_mpi(int ranks, const std::string& args, const Files& f) {
-  char session[] = "/tmp/zdg-ompi-XXXXXX";
-  if (::mkdtemp(session) == nullptr) throw std::runtime_error("run_mpi: mkdtemp failed");
-  std::string env = "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-                    "OMPI_MCA_rmaps_base_oversubscribe=1 ";
-  env += std::string("TMPDIR=") + session + " OMPI_MCA_orte_tmpdir_base=" + session + " ";
-  if (std::getenv("ZDG_SANITIZE") != nullptr) {
-    env += "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 ";
-  }
-  // A hang (ranks left waiting in a collective step) fails the test in two minutes (status
-  // 124) instead of stalling the suite.
-  const std::string cmd = "timeout -k 10 120 env " + env + "'" + test::mpiexec_path() + "' -np " +
-                          std::to_string(ranks) + " --oversubscribe '" + test::cli_path() + "' " +
-                          args + " <" + f("stdin") + " >" + f("stdout") + " 2>" + f("stderr");
-  { std::ofstream(f.path("stdin")); }
-  const int raw = std::system(cmd.c_str());
-  std::error_code ec;
-  std::filesystem::remove_all(session, ec);
-  test::CliResult r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
-  r.out = test::read_file(f.path("stdout"));
-  r.err = test::read_file(f.path("stderr"));
-  return r;
-}
-
-bool mpi_built() {
-  return test::mpiexec_path()[0] != '\0';
-}
-
-// The lines of zdg's own messages ("zdg: ...") in a stderr that also holds mpiexec's banners.
-int zdg_lines(const std::string& err) {
-  int n = 0;
-  for (std::size_t at = 0; (at = err.find("zdg: ", at)) != std::string::npos; ++at) {
-    if (at == 0 || err[at - 1] == '\n') ++n;
-  }
-  return n;
-}
+using test::mpi_built;
+using test::zdg_lines;
 
 // A random mask (items of the dtype's width) with background density `percent`.
 template <class X>
@@ -121,10 +79,8 @@ TEST(MpiTransform, OutputsEqualTheSingleProcessCommand) {
       ASSERT_EQ(ref.status, 0) << ref.err;
       const std::string expect = test::read_file(f.path("ref.npy"));
       for (int P = 1; P <= 4; ++P) {
-        auto r = run_mpi(P,
-                         "transform " + cmd + " " + f("in.npy") + " -o " + f("out.npy") +
-                             " --force --mpi --json " + c.options,
-                         f);
+        auto r = test::run_mpi(P, "transform " + cmd + " " + f("in.npy") + " -o " + f("out.npy") +
+                                      " --force --mpi --json " + c.options);
         ASSERT_EQ(r.status, 0) << cmd << " " << c.options << " P = " << P << ": " << r.err;
         EXPECT_EQ(test::read_file(f.path("out.npy")), expect)
             << cmd << " " << c.options << ", P = " << P;
@@ -168,7 +124,7 @@ TEST(MpiTransform, ErrorsAreOneLineAndNoOutput) {
        "--out-of-core"},
   };
   for (const auto& c : cases) {
-    auto r = run_mpi(3, c.args, f);
+    auto r = test::run_mpi(3, c.args);
     EXPECT_EQ(r.status, 2) << c.args << ": " << r.err;
     EXPECT_EQ(zdg_lines(r.err), 1) << c.args << ": " << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
@@ -181,7 +137,7 @@ TEST(MpiTransform, ErrorsAreOneLineAndNoOutput) {
   // An existing output is refused without --force and left as it was.
   write_npy(f.path("out.npy"), make_npy<std::uint8_t>({1}, std::vector<std::uint8_t>{7}));
   const std::string before = test::read_file(f.path("out.npy"));
-  auto r = run_mpi(2, "transform dt " + f("in.npy") + " -o " + f("out.npy") + " --mpi", f);
+  auto r = test::run_mpi(2, "transform dt " + f("in.npy") + " -o " + f("out.npy") + " --mpi");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
   EXPECT_EQ(test::read_file(f.path("out.npy")), before);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 namespace {
 
@@ -263,4 +264,97 @@ TEST(Experiment, ThreadsZeroIsAllCoresAndTheCountUsedIsReported) {
   }
   c.threads = 1025;
   EXPECT_THROW(zdg::run_experiment(c), zdg::InvalidArgument);
+}
+
+// Issue #40, the jobs a scheduler hands out (threads or MPI ranks): every run of the plan is in
+// exactly one job, the jobs come largest first (their size estimate non-increasing), and the
+// entries that share a computation (the 3D integral invariants) are one job per (level, shape,
+// translation).
+TEST(Experiment, JobsHoldEveryRunOnceLargestFirst) {
+  zdg::test::check_property([] {
+    const std::vector<std::string> shapes = {"ellipse:20,7", "ball:5", "flower:20,7,6"};
+    const std::vector<std::string> estimators = {"gauss-area", "ii-curvature", "mlp-length"};
+    zdg::ExperimentConfig c;
+    for (const auto& s : shapes) {
+      if (*rc::gen::arbitrary<bool>()) c.shapes.push_back(s);
+    }
+    for (const auto& e : estimators) {
+      if (*rc::gen::arbitrary<bool>()) c.estimators.push_back(e);
+    }
+    if (c.shapes.empty()) c.shapes.push_back(shapes[0]);
+    if (c.estimators.empty()) c.estimators.push_back(estimators[0]);
+    const int levels = *rc::gen::inRange(1, 5);
+    for (int l = 0; l < levels; ++l) c.hs.push_back(1.0 / (1 + *rc::gen::inRange(0, 40)));
+    c.translations = *rc::gen::inRange(0, 4);
+    const auto plan = zdg::plan_experiment(c);
+    const auto jobs = zdg::plan_jobs(plan, c);
+    std::vector<std::tuple<std::size_t, std::size_t, double, int>> got, want;
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+      if (j > 0) RC_ASSERT(jobs[j - 1].size >= jobs[j].size);
+      RC_ASSERT(jobs[j].size > 0);
+      RC_ASSERT(jobs[j].entries.size() == 1u); // none of these estimators shares a computation
+      for (const auto e : jobs[j].entries)
+        got.emplace_back(jobs[j].shape, e, jobs[j].h, jobs[j].translation);
+    }
+    for (std::size_t s = 0; s < plan.shapes.size(); ++s)
+      for (std::size_t e = 0; e < plan.entries.size(); ++e)
+        for (const double h : plan.hs)
+          for (int t = 0; t < plan.runs_per_level; ++t) want.emplace_back(s, e, h, t);
+    std::sort(got.begin(), got.end());
+    std::sort(want.begin(), want.end());
+    RC_ASSERT(got == want);
+  });
+}
+
+// The jobs run one by one (run_job), in any order, give run_plan's records to the last bit but
+// the seconds (what a rank of `zdg converge --mpi` runs and sends), and experiment_result
+// gives run_experiment's fits; the shared 3D integral invariants are one job.
+TEST(Experiment, JobsRunAloneInAnyOrderGiveTheSweep) {
+  zdg::ExperimentConfig c;
+  c.shapes = {"sphere1"};
+  c.estimators = {"ii-mean", "gauss-volume", "ii-k1"};
+  c.hs = {0.5, 0.35};
+  c.k_text = "1";
+  c.translations = 2;
+  c.seed = 40;
+  c.threads = 2;
+  const auto plan = zdg::plan_experiment(c);
+  const auto jobs = zdg::plan_jobs(plan, c);
+  ASSERT_EQ(jobs.size(), 8u); // 2 levels x 2 translations x {ii-mean + ii-k1, gauss-volume}
+  EXPECT_EQ(jobs[0].h, 0.35); // the finer level first
+  std::vector<zdg::RunRecord> runs;
+  for (std::size_t j = jobs.size(); j-- > 0;) { // smallest first: another order
+    const auto records = zdg::run_job(plan, c, jobs[j]);
+    ASSERT_EQ(records.size(), jobs[j].entries.size());
+    if (records.size() == 2) {
+      EXPECT_EQ(records[0].estimator, "ii-mean");
+      EXPECT_EQ(records[1].estimator, "ii-k1");
+    }
+    const auto bare = zdg::job_records(plan, c, jobs[j]);
+    for (std::size_t i = 0; i < records.size(); ++i) {
+      EXPECT_EQ(bare[i].offset, records[i].offset);
+      EXPECT_EQ(bare[i].errors.n, 0);
+    }
+    runs.insert(runs.end(), records.begin(), records.end());
+  }
+  const auto alone = zdg::experiment_result(plan, c, runs, 1);
+  const auto sweep = zdg::run_experiment(c);
+  ASSERT_EQ(alone.runs.size(), sweep.runs.size());
+  for (std::size_t i = 0; i < sweep.runs.size(); ++i) {
+    const auto &a = alone.runs[i], &b = sweep.runs[i];
+    EXPECT_EQ(a.shape, b.shape);
+    EXPECT_EQ(a.estimator, b.estimator);
+    EXPECT_EQ(a.h, b.h);
+    EXPECT_EQ(a.translation, b.translation);
+    EXPECT_EQ(a.offset, b.offset);
+    EXPECT_EQ(a.errors.linf, b.errors.linf);
+    EXPECT_EQ(a.errors.l2, b.errors.l2);
+    EXPECT_EQ(a.errors.mean, b.errors.mean);
+    EXPECT_EQ(a.errors.n, b.errors.n);
+  }
+  ASSERT_EQ(alone.fits.size(), sweep.fits.size());
+  for (std::size_t i = 0; i < sweep.fits.size(); ++i) {
+    EXPECT_EQ(alone.fits[i].fit.slope, sweep.fits[i].fit.slope);
+    EXPECT_EQ(alone.fits[i].pass, sweep.fits[i].pass);
+  }
 }
