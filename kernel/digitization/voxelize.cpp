@@ -503,40 +503,54 @@ std::int64_t ceil_quotient(const BigRational& n, const BigRational& d, std::int6
   return static_cast<std::int64_t>(c);
 }
 
-// The triangles each layer of centres z = 2k + 1 may cross (one layer of slack for rounding).
+// Triangles by bucket (of layers): bucket b holds list[start[b] .. start[b + 1]).
 struct LayerLists {
   std::vector<std::int64_t> start, list;
 };
 
-LayerLists solid_lists(const VoxelizationGrid& grid, const Prepared& p) {
-  const std::int64_t nz = grid.extents[2];
+// The triangles of each of `buckets` buckets, each triangle in the buckets [b0, b1] that
+// range(t, b0, b1) gives (counting sort: O(F + entries)).
+template <class Range>
+LayerLists bucket_lists(const Prepared& p, std::int64_t buckets, Range&& range) {
   LayerLists l;
-  l.start.assign(static_cast<std::size_t>(nz) + 1, 0);
-  auto layers = [&](const std::array<std::int64_t, 3>& t, std::int64_t& k0, std::int64_t& k1) {
-    double mn = p.coords[static_cast<std::size_t>(t[0])][2].v, mx = mn;
-    for (int k = 1; k < 3; ++k) {
-      mn = std::min(mn, p.coords[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])][2].v);
-      mx = std::max(mx, p.coords[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])][2].v);
-    }
-    k0 = clamp_floor((mn - 1) / 2 - 1, 0, nz);
-    k1 = clamp_floor((mx - 1) / 2 + 1, -1, nz - 1);
-  };
+  l.start.assign(static_cast<std::size_t>(buckets) + 1, 0);
   for (const auto& t : p.tris) {
-    std::int64_t k0, k1;
-    layers(t, k0, k1);
-    for (std::int64_t k = k0; k <= k1; ++k) ++l.start[static_cast<std::size_t>(k) + 1];
+    std::int64_t b0, b1;
+    range(t, b0, b1);
+    for (std::int64_t b = b0; b <= b1; ++b) ++l.start[static_cast<std::size_t>(b) + 1];
   }
-  for (std::size_t k = 0; k < static_cast<std::size_t>(nz); ++k) l.start[k + 1] += l.start[k];
+  for (std::size_t b = 0; b < static_cast<std::size_t>(buckets); ++b) l.start[b + 1] += l.start[b];
   l.list.resize(static_cast<std::size_t>(l.start.back()));
   std::vector<std::int64_t> fill(l.start.begin(), l.start.end() - 1);
   for (std::size_t i = 0; i < p.tris.size(); ++i) {
-    std::int64_t k0, k1;
-    layers(p.tris[i], k0, k1);
-    for (std::int64_t k = k0; k <= k1; ++k)
-      l.list[static_cast<std::size_t>(fill[static_cast<std::size_t>(k)]++)] =
+    std::int64_t b0, b1;
+    range(p.tris[i], b0, b1);
+    for (std::int64_t b = b0; b <= b1; ++b)
+      l.list[static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++)] =
           static_cast<std::int64_t>(i);
   }
   return l;
+}
+
+// The z range of a triangle's doubled grid coordinates.
+void z_range(const Prepared& p, const std::array<std::int64_t, 3>& t, double& mn, double& mx) {
+  mn = mx = p.coords[static_cast<std::size_t>(t[0])][2].v;
+  for (int k = 1; k < 3; ++k) {
+    mn = std::min(mn, p.coords[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])][2].v);
+    mx = std::max(mx, p.coords[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])][2].v);
+  }
+}
+
+// The triangles each layer of centres z = 2k + 1 may cross (one layer of slack for rounding).
+LayerLists solid_lists(const VoxelizationGrid& grid, const Prepared& p) {
+  const std::int64_t nz = grid.extents[2];
+  return bucket_lists(
+      p, nz, [&](const std::array<std::int64_t, 3>& t, std::int64_t& k0, std::int64_t& k1) {
+        double mn, mx;
+        z_range(p, t, mn, mx);
+        k0 = clamp_floor((mn - 1) / 2 - 1, 0, nz);
+        k1 = clamp_floor((mx - 1) / 2 + 1, -1, nz - 1);
+      });
 }
 
 // The solid's layers k in [z0, z1) into out (layer z0 first; zero on entry).
@@ -801,36 +815,16 @@ constexpr std::int64_t kSlab = 4; // the surface modes' unit of work: 4 layers
 // The triangles of each group of kSlab layers (surface modes).
 LayerLists surface_lists(const VoxelizationGrid& grid, const Prepared& p) {
   const std::int64_t nz = grid.extents[2];
-  const std::int64_t slabs = (nz + kSlab - 1) / kSlab;
-  LayerLists l;
-  l.start.assign(static_cast<std::size_t>(slabs) + 1, 0);
-  auto range = [&](const std::array<std::int64_t, 3>& t, std::int64_t& s0, std::int64_t& s1) {
-    double mn = p.coords[static_cast<std::size_t>(t[0])][2].v, mx = mn;
-    for (int k = 1; k < 3; ++k) {
-      mn = std::min(mn, p.coords[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])][2].v);
-      mx = std::max(mx, p.coords[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])][2].v);
-    }
-    const std::int64_t k0 = clamp_floor((mn - 3) / 2 - 1, 0, nz);
-    const std::int64_t k1 = clamp_floor((mx + 1) / 2 + 1, -1, nz - 1);
-    s0 = k0 / kSlab;
-    s1 = k1 < 0 ? -1 : k1 / kSlab;
-  };
-  for (const auto& t : p.tris) {
-    std::int64_t s0, s1;
-    range(t, s0, s1);
-    for (std::int64_t s = s0; s <= s1; ++s) ++l.start[static_cast<std::size_t>(s) + 1];
-  }
-  for (std::size_t s = 0; s < static_cast<std::size_t>(slabs); ++s) l.start[s + 1] += l.start[s];
-  l.list.resize(static_cast<std::size_t>(l.start.back()));
-  std::vector<std::int64_t> fill(l.start.begin(), l.start.end() - 1);
-  for (std::size_t i = 0; i < p.tris.size(); ++i) {
-    std::int64_t s0, s1;
-    range(p.tris[i], s0, s1);
-    for (std::int64_t s = s0; s <= s1; ++s)
-      l.list[static_cast<std::size_t>(fill[static_cast<std::size_t>(s)]++)] =
-          static_cast<std::int64_t>(i);
-  }
-  return l;
+  return bucket_lists(
+      p, (nz + kSlab - 1) / kSlab,
+      [&](const std::array<std::int64_t, 3>& t, std::int64_t& s0, std::int64_t& s1) {
+        double mn, mx;
+        z_range(p, t, mn, mx);
+        const std::int64_t k0 = clamp_floor((mn - 3) / 2 - 1, 0, nz);
+        const std::int64_t k1 = clamp_floor((mx + 1) / 2 + 1, -1, nz - 1);
+        s0 = k0 / kSlab;
+        s1 = k1 < 0 ? -1 : k1 / kSlab;
+      });
 }
 
 // The voxelization in slabs of `depth` layers (a multiple of kSlab): for each, buffer(z0) gives
