@@ -6,10 +6,12 @@
 #include <zdg/kernel/parallel/populate_pages.hpp>
 #include <zdg/kernel/transforms/separable_engine.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <type_traits>
 
 namespace zdg {
@@ -18,6 +20,20 @@ namespace {
 
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The largest of n values, by `threads` workers.
+template <class T>
+T max_of(const T* values, std::int64_t n, unsigned threads) {
+  T mx = 0;
+  std::mutex lock;
+  parallel_chunks(n, threads, [&](std::int64_t b, std::int64_t e) {
+    T m = 0;
+    for (std::int64_t i = b; i < e; ++i) m = std::max(m, values[i]);
+    const std::lock_guard<std::mutex> hold(lock);
+    mx = std::max(mx, m);
+  });
+  return mx;
 }
 
 template <class T>
@@ -53,16 +69,29 @@ NpyTransformResult lean_dt_as(const NpyTransformOptions& o, const NpyLayout& lay
     out.finish();
     return r;
   }
+  const unsigned workers = worker_count(opt.threads, dom.size());
+  if (o.shared_output ? *o.shared_output : shared_mapping_fits(out.size())) {
+    // In memory, in the output file's pages (mapped by the workers): no buffer, no copy. The
+    // header (written above) is padded to 64 bytes (npy_header_bytes): the values are aligned.
+    {
+      const SharedMapping map(out, workers);
+      T* values = reinterpret_cast<T*>(map.data() + header.size());
+      distance_transform_into<T>(dom, mask, item, opt, values, o.pass_progress);
+      r.seconds = since(t0);
+      r.max_value = max_of(values, dom.size(), workers);
+    }
+    out.finish();
+    return r;
+  }
   // In memory: the values in a buffer of the output's type (not zero-filled: the transform
   // writes every value), then one sequential write.
   std::unique_ptr<T[]> values(new T[n]);
   // mapped (in huge pages where offered) by all the workers before the passes write it
-  populate_pages(values.get(), n * sizeof(T), worker_count(opt.threads, dom.size()));
+  populate_pages(values.get(), n * sizeof(T), workers);
   distance_transform_into<T>(dom, mask, item, opt, values.get(), o.pass_progress);
   r.seconds = since(t0);
   // The largest value and the write, in pieces by all the workers (write_values_max).
-  r.max_value = write_values_max<T>(out, header.size(), values.get(), dom.size(),
-                                    worker_count(opt.threads, dom.size()));
+  r.max_value = write_values_max<T>(out, header.size(), values.get(), dom.size(), workers);
   values.reset();
   out.finish();
   return r;
