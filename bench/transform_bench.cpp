@@ -54,6 +54,7 @@
 #include <spawn.h>
 #include <string>
 #include <sys/wait.h>
+#include <type_traits>
 #include <unistd.h>
 #include <vector>
 
@@ -228,6 +229,40 @@ void Random3dPortable(benchmark::State& st) {
   portable_against_bound(st, random_half(st.range(0)));
 }
 
+// The engine widths side by side (issue #40 item 4). Arguments: d (2: a disc of radius
+// 1800 n / 4096 in n^2, 3: a ball of radius 0.45 n in n^3), n, p (0 = linf), threads, the
+// narrowest engine (min_engine_bits: 0 = the narrowest that holds the values, 64 = int64 at
+// least), vectorized passes allowed (1) or not (0: the portable loop). The transform into a
+// buffer allocated once, uint32 where the values fit it and the engine is int32, uint64
+// otherwise (so that the int64 engine works in place, as int32 does in uint32). Counter
+// "int64": whether the engine ran on int64.
+void DtWidth(benchmark::State& st) {
+  const auto img =
+      st.range(0) == 2 ? disc(st.range(1), 1800 * st.range(1) / 4096) : ball(st.range(1));
+  zdg::TransformOptions opt;
+  opt.metric = zdg::Metric{static_cast<int>(st.range(2))};
+  opt.threads = static_cast<unsigned>(st.range(3));
+  opt.min_engine_bits = static_cast<unsigned>(st.range(4));
+  const bool was = zdg::detail::set_envelope_simd(st.range(5) != 0);
+  const auto width = zdg::detail::envelope_bounds(img.domain(), opt, zdg::BigInt(0)).width;
+  const auto run = [&]<class T>(std::type_identity<T>) {
+    std::vector<T> out;
+    zdg::assign_populated(out, static_cast<std::size_t>(img.size()), opt.threads);
+    for (auto _ : st) {
+      zdg::distance_transform_into<T>(img.domain(), img.values().data(), 1, opt, out.data());
+      benchmark::DoNotOptimize(out.data());
+    }
+  };
+  if (width == zdg::detail::ValueWidth::I32) {
+    run(std::type_identity<std::uint32_t>{});
+  } else {
+    run(std::type_identity<std::uint64_t>{});
+  }
+  zdg::detail::set_envelope_simd(was);
+  report(st, img.size());
+  st.counters["int64"] = width == zdg::detail::ValueWidth::I64 ? 1 : 0;
+}
+
 void Dt3dNew(benchmark::State& st) {
   auto img = ball(st.range(0));
   auto opt = options(st);
@@ -394,6 +429,22 @@ BENCHMARK(Dt3d)
     ->Args({512, 2, 1})
     ->Args({512, 2, 2})
     ->Args({512, 3, 2})
+    ->MinWarmUpTime(1.0)
+    ->MinTime(2.0)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(DtWidth)
+    ->Args({2, 4096, 2, 2, 0, 1})
+    ->Args({2, 4096, 2, 2, 64, 1})
+    ->Args({2, 4096, 3, 2, 0, 1})
+    ->Args({2, 4096, 3, 2, 0, 0})
+    ->Args({3, 512, 2, 2, 0, 1})
+    ->Args({3, 512, 2, 2, 64, 1})
+    ->Args({3, 512, 3, 2, 0, 1})
+    ->Args({3, 512, 3, 2, 64, 1})
+    ->Args({3, 512, 3, 2, 64, 0})
+    ->Args({3, 672, 2, 2, 0, 1})
+    ->Args({3, 672, 3, 2, 0, 1})
     ->MinWarmUpTime(1.0)
     ->MinTime(2.0)
     ->Unit(benchmark::kMillisecond)
