@@ -1249,6 +1249,40 @@ void fused_mask_pass_avx512(const Domain& dom, bool periodic_columns,
     }
   });
 }
+
+// The int64 engine's first two passes in int32 where their values allow it (issue #40 item 4):
+// after the mask pass and the pass along axis d - 2, every value is the 2D transform of its
+// slice, bounded by the slice's own bounds (envelope_bounds on the slice's two axes: m_{d-1}^p
+// + m_{d-2}^p, intermediates below 2 (that + L^p) + 2 L); when those fit the int32 engine, a
+// slice is transformed by the int32 vectorized passes (fused_mask_pass_avx512's) in a scratch
+// slice, then widened into f (inf to inf), the same integers as the int64 passes. The last
+// passes run in int64. For a 3D l3 on 672^3 (int64 engine: the full bound is 2.4e9) the slices'
+// bound is 1.8e9: two of the three passes move and compute half the bytes.
+template <int K>
+void fused_mask_pass_narrow(const Domain& dom, bool periodic_columns,
+                            const LineMetric<K, std::int32_t>& m, const std::uint8_t* mask,
+                            std::int64_t* f, std::int64_t inf, unsigned threads) {
+  const int d = dom.dim();
+  const std::int64_t n = dom.extent(d - 1), rows = dom.extent(d - 2);
+  const std::int64_t slices = dom.size() / (n * rows);
+  const std::int64_t len = periodic_columns ? 3 * rows : rows;
+  constexpr std::int32_t inf32 = std::numeric_limits<std::int32_t>::max();
+  parallel_chunks(slices, threads, [&](std::int64_t begin, std::int64_t end) {
+    SimdTables tables;
+    std::vector<std::int32_t> slice(static_cast<std::size_t>(rows * n));
+    for (std::int64_t o = begin; o < end; ++o) {
+      // (the slice at f's rows, so that the int32 passes see the same mask lines)
+      mask_lines_avx512<K>(mask + o * rows * n, slice.data(), n, 0, rows, m, inf32);
+      envelope_columns_avx512<K>(slice.data(), n, n, rows, periodic_columns, inf32, m.p,
+                                 tables.get(len));
+      std::int64_t* out = f + o * rows * n;
+      for (std::int64_t i = 0; i < rows * n; ++i) {
+        const std::int32_t v = slice[static_cast<std::size_t>(i)];
+        out[i] = v == inf32 ? inf : v;
+      }
+    }
+  });
+}
 #endif
 
 template <class V>
@@ -1514,7 +1548,29 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
       if (mask != nullptr && d >= 3 &&
           simd_mask_lines64(item, opt.periodic(d - 1), sites, dom.extent(d - 1)) &&
           use_simd64(opt.periodic(d - 2) ? 3 * dom.extent(d - 2) : dom.extent(d - 2))) {
-        fused_mask_pass8<K>(dom, opt.periodic(d - 2), m.p, mask, f, inf, threads);
+        // The slices' own bounds (their two axes, no weights): int32 when they allow it.
+        TransformOptions slice_opt = opt;
+        slice_opt.min_engine_bits = 0;
+        slice_opt.torus.clear();
+        if (!opt.torus.empty()) slice_opt.torus = {opt.torus[d - 2], opt.torus[d - 1]};
+        const Domain slice_dom({dom.extent(d - 2), dom.extent(d - 1)});
+        if (use_simd() &&
+            envelope_bounds(slice_dom, slice_opt, BigInt(0)).width == ValueWidth::I32) {
+          std::vector<std::int32_t> pw32(pw.size());
+          for (std::size_t t = 0; t < pw.size(); ++t) {
+            // (t^p < 2^31 for every t on the slice's lines: the bound above)
+            pw32[t] = t <= static_cast<std::size_t>(std::max(dom.extent(d - 1), dom.extent(d - 2)))
+                          ? static_cast<std::int32_t>(pw[t])
+                          : 0;
+          }
+          LineMetric<K, std::int32_t> m32;
+          m32.pw = pw32.data();
+          m32.p = m.p;
+          m32.inv_pow2 = m.inv_pow2;
+          fused_mask_pass_narrow<K>(dom, opt.periodic(d - 2), m32, mask, f, inf, threads);
+        } else {
+          fused_mask_pass8<K>(dom, opt.periodic(d - 2), m.p, mask, f, inf, threads);
+        }
         fused = true;
       }
     }

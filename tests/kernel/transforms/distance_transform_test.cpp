@@ -254,7 +254,8 @@ TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
 
 // The int64 engine's vectorized passes (kernel/transforms/separable_engine.cpp: 8 lines per
 // AVX-512 vector, the mask pass widened from the int32 one, l2 and l_p separators by exact
-// tests from a floating-point guess) give the values of the scalar sweep to the bit: distance
+// tests from a floating-point guess; in 3D the first two passes in int32 where the slices'
+// bounds allow it, else in int64) give the values of the scalar sweep to the bit: distance
 // transforms for l1, l2 .. l9 and linf forced onto the int64 engine (min_engine_bits = 64; l8
 // and l9 on lines of 70 points reach 70^9 ~ 2^55), torus axes, and value mode with weights up
 // to the largest the int64 engine takes on the domain (need just below 2^63: the sums and
