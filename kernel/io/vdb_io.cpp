@@ -33,7 +33,7 @@ void write_vdb(const std::string& path, const ScalarVolume& /*volume*/) {
 
 namespace {
 
-// The module's path: where this build put it, else where it is installed (both set by CMake).
+// The module, loaded once (the paths tried: below); IoError naming the first failure.
 const VdbModule& vdb_module(const std::string& path) {
   static const VdbModule* module = nullptr;
   static std::string failure;
@@ -49,7 +49,22 @@ const VdbModule& vdb_module(const std::string& path) {
         [](const NpyArray& a) { return a.count(); },
         [](const ScalarVolume& v, std::int64_t i) { return v.value(i); },
         [](const ScalarVolume& v) { v.validate(); }};
-    for (const char* file : {ZDG_VDB_MODULE_BUILD, ZDG_VDB_MODULE_INSTALL}) {
+    // Where this build put it, where it is installed, then beside the program or library
+    // holding this code and in its ../lib/zdg (a relocated installation).
+    std::vector<std::string> files{ZDG_VDB_MODULE_BUILD, ZDG_VDB_MODULE_INSTALL};
+    Dl_info self{};
+    if (::dladdr(reinterpret_cast<void*>(&vdb_supported), &self) != 0 &&
+        self.dli_fname != nullptr && std::string(self.dli_fname).find('/') != std::string::npos) {
+      const std::string here(self.dli_fname);
+      const std::string dir = here.substr(0, here.find_last_of('/') + 1);
+      const std::string name =
+          std::string(ZDG_VDB_MODULE_INSTALL)
+              .substr(std::string(ZDG_VDB_MODULE_INSTALL).find_last_of('/') + 1);
+      files.push_back(dir + name);
+      files.push_back(dir + "../lib/zdg/" + name);
+    }
+    for (const std::string& path_of : files) {
+      const char* file = path_of.c_str();
       void* h = ::dlopen(file, RTLD_NOW | RTLD_LOCAL);
       if (h == nullptr) {
         const char* why = ::dlerror();
