@@ -6,12 +6,10 @@
 #include <zdg/kernel/parallel/populate_pages.hpp>
 #include <zdg/kernel/transforms/separable_engine.hpp>
 
-#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <type_traits>
 
 namespace zdg {
@@ -20,20 +18,6 @@ namespace {
 
 double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-// The largest of n values, by `threads` workers.
-template <class T>
-T max_of(const T* values, std::int64_t n, unsigned threads) {
-  T mx = 0;
-  std::mutex lock;
-  parallel_chunks(n, threads, [&](std::int64_t b, std::int64_t e) {
-    T m = 0;
-    for (std::int64_t i = b; i < e; ++i) m = std::max(m, values[i]);
-    const std::lock_guard<std::mutex> hold(lock);
-    mx = std::max(mx, m);
-  });
-  return mx;
 }
 
 template <class T>
@@ -76,9 +60,10 @@ NpyTransformResult lean_dt_as(const NpyTransformOptions& o, const NpyLayout& lay
     {
       const SharedMapping map(out, workers);
       T* values = reinterpret_cast<T*>(map.data() + header.size());
-      distance_transform_into<T>(dom, mask, item, opt, values, o.pass_progress);
+      std::uint64_t mx = 0; // (taken by the last pass while its lines are in cache)
+      distance_transform_into<T>(dom, mask, item, opt, values, o.pass_progress, &mx);
       r.seconds = since(t0);
-      r.max_value = max_of(values, dom.size(), workers);
+      r.max_value = mx;
     }
     out.finish();
     return r;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <string>
 
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -1298,8 +1299,31 @@ struct Scratch {
 template <int K, class V>
 void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
                    const LineMetric<K, V>& m, V* f, const V& inf, std::vector<std::int64_t>* sites,
-                   unsigned threads, std::int64_t jb = 0, std::int64_t je = -1) {
+                   unsigned threads, std::int64_t jb = 0, std::int64_t je = -1,
+                   std::uint64_t* max_out = nullptr) {
   const std::int64_t n = dom.extent(a), st = dom.stride(a);
+  // max_out (int32 and int64 values >= 0): the largest finite value the pass writes, taken from
+  // each unit of lines right after its envelopes, while the unit is still in cache.
+  std::mutex max_lock;
+  const auto unit_max = [&](const V* at, std::int64_t stride, std::int64_t w, std::uint64_t& mx) {
+    if constexpr (std::is_integral_v<V>) {
+      for (std::int64_t x = 0; x < n; ++x) {
+        const V* row = at + x * stride;
+        for (std::int64_t b = 0; b < w; ++b) {
+          if (row[b] != inf) mx = std::max(mx, static_cast<std::uint64_t>(row[b]));
+        }
+      }
+    } else {
+      (void)at;
+      (void)stride;
+      (void)w;
+      (void)mx;
+    }
+  };
+  const auto merge_max = [&](std::uint64_t mx) {
+    const std::lock_guard<std::mutex> hold(max_lock);
+    *max_out = std::max(*max_out, mx);
+  };
   if (je < 0) je = st;
   if (je <= jb) return;
   const std::int64_t outer = dom.size() / (n * st);
@@ -1321,12 +1345,15 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
       const std::int64_t per_outer = (je - origin + kChunk - 1) / kChunk;
       parallel_chunks(outer * per_outer, threads, [&](std::int64_t begin, std::int64_t end) {
         SimdTables tables;
+        std::uint64_t mx = 0;
         for (std::int64_t unit = begin; unit < end; ++unit) {
           const std::int64_t o = unit / per_outer, c = origin + (unit % per_outer) * kChunk;
           const std::int64_t j0 = std::max(jb, c), j1 = std::min(je, c + kChunk);
           envelope_columns_avx512<K>(fp + o * n * st + j0, st, j1 - j0, n, periodic, inf, m.p,
                                      tables.get(len));
+          if (max_out != nullptr) unit_max(fp + o * n * st + j0, st, j1 - j0, mx);
         }
+        if (max_out != nullptr) merge_max(mx);
       });
       return;
     }
@@ -1339,12 +1366,15 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
       const std::int64_t per_outer = (je - origin + kChunk - 1) / kChunk;
       parallel_chunks(outer * per_outer, threads, [&](std::int64_t begin, std::int64_t end) {
         SimdTables8 tables;
+        std::uint64_t mx = 0;
         for (std::int64_t unit = begin; unit < end; ++unit) {
           const std::int64_t o = unit / per_outer, c = origin + (unit % per_outer) * kChunk;
           const std::int64_t j0 = std::max(jb, c), j1 = std::min(je, c + kChunk);
           envelope_columns8<K>(fp + o * n * st + j0, st, j1 - j0, n, periodic, inf, m.p,
                                tables.get(len));
+          if (max_out != nullptr) unit_max(fp + o * n * st + j0, st, j1 - j0, mx);
         }
+        if (max_out != nullptr) merge_max(mx);
       });
       return;
     }
@@ -1352,6 +1382,7 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
 #endif
   parallel_chunks(outer * nblocks, threads, [&](std::int64_t begin, std::int64_t end) {
     Scratch<V> sc;
+    std::uint64_t mx = 0;
     const auto ub = static_cast<std::size_t>(bw_max);
     const auto ulen = static_cast<std::size_t>(len), un = static_cast<std::size_t>(n);
     sc.buf.assign(ub * ulen, V{});
@@ -1406,6 +1437,7 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
         V* row = fp + base + x * st;
         for (std::int64_t b = 0; b < bw; ++b) row[b] = bp[b * len + x];
       }
+      if (max_out != nullptr) unit_max(fp + base, st, bw, mx);
       if (sp != nullptr) {
         for (std::int64_t x = 0; x < n; ++x) {
           std::int64_t* row = sp + base + x * st;
@@ -1416,6 +1448,7 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
         }
       }
     }
+    if (max_out != nullptr) merge_max(mx);
   });
 }
 
@@ -1593,7 +1626,7 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
   }
   if (part.axis0 && d >= 2) {
     envelope_pass(dom, 0, opt.periodic(0), part.from_mask, m, f, inf, sites, threads,
-                  part.column_begin, part.column_end);
+                  part.column_begin, part.column_end, part.max_value);
     if (part.after_pass) part.after_pass(0);
   }
 }

@@ -107,6 +107,10 @@ struct EnvelopePart {
   bool slices = true, axis0 = true, from_mask = true;
   std::int64_t column_begin = 0, column_end = -1;
   std::function<void(int axis)> after_pass; // optional: called after each pass, with its axis
+  /// Optional, for int32 and int64 values >= 0 (a distance transform): raised to the largest
+  /// finite value the pass along axis 0 writes (d >= 2), read from each unit of lines while it
+  /// is in cache instead of by a scan of the whole output after.
+  std::uint64_t* max_value = nullptr;
 };
 
 template <class V>

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -319,6 +320,45 @@ TEST(DistanceTransform, VectorizedInt64EnvelopeEqualsPortable) {
     detail::set_envelope_simd(true);
     detail::separable_envelope<std::int64_t>(dom, opt, nullptr, c.data(), inf, nullptr);
     RC_ASSERT(a == c);
+  });
+}
+
+// distance_transform_into's max_value (taken by the last pass, unit by unit, while its lines
+// are in cache; by a scan in 1D; by the conversion when the engine is wider than T) is the
+// largest value of the output (oracle: std::max_element), on every engine path: vectorized and
+// portable, int32 and int64 engines (min_engine_bits), uint32 and uint64 outputs, 1 to 3 axes,
+// tori, 1 and 2 threads.
+TEST(DistanceTransform, MaxValueIsTheLargestValueWritten) {
+  const AllowSimdAtExit allow;
+  test::check_property([] {
+    std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
+    auto pick = [&](int lo, int hi) {
+      return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1));
+    };
+    const int d = pick(1, 3);
+    std::vector<std::int64_t> ext;
+    for (int k = 0; k < d; ++k) ext.push_back(pick(1, d == 1 ? 300 : d == 2 ? 70 : 30));
+    const Domain dom(ext);
+    TransformOptions opt;
+    opt.metric = Metric{pick(0, 3)};
+    for (int k = 0; k < d; ++k) opt.torus.push_back(pick(0, 2) == 0);
+    opt.threads = static_cast<unsigned>(pick(1, 2));
+    opt.min_engine_bits = pick(0, 1) == 0 ? 0 : 64;
+    std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+    const int density = pick(0, 100);
+    for (auto& x : v) x = pick(0, 99) < density ? 1 : 0;
+    v[rng() % v.size()] = 0;
+    detail::set_envelope_simd(pick(0, 1) == 0);
+    const auto check = [&]<class T>(std::type_identity<T>) {
+      std::vector<T> out(v.size());
+      std::uint64_t mx = 12345;
+      distance_transform_into<T>(dom, v.data(), 1, opt, out.data(), {}, &mx);
+      RC_ASSERT(mx == static_cast<std::uint64_t>(*std::max_element(out.begin(), out.end())));
+    };
+    if (distance_transform_max_value(dom, opt) <= BigInt(4294967295ULL)) {
+      check(std::type_identity<std::uint32_t>{});
+    }
+    check(std::type_identity<std::uint64_t>{});
   });
 }
 
