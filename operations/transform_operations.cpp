@@ -53,16 +53,30 @@ NpyTransformResult lean_dt_as(const NpyTransformOptions& o, const NpyLayout& lay
     out.finish();
     return r;
   }
+  const unsigned workers = worker_count(opt.threads, dom.size());
+  if (o.shared_output ? *o.shared_output : shared_mapping_fits(out.size())) {
+    // In memory, in the output file's pages (mapped by the workers): no buffer, no copy. The
+    // header (written above) is padded to 64 bytes (npy_header_bytes): the values are aligned.
+    {
+      const SharedMapping map(out, workers);
+      T* values = reinterpret_cast<T*>(map.data() + header.size());
+      std::uint64_t mx = 0; // (taken by the last pass while its lines are in cache)
+      distance_transform_into<T>(dom, mask, item, opt, values, o.pass_progress, &mx);
+      r.seconds = since(t0);
+      r.max_value = mx;
+    }
+    out.finish();
+    return r;
+  }
   // In memory: the values in a buffer of the output's type (not zero-filled: the transform
   // writes every value), then one sequential write.
   std::unique_ptr<T[]> values(new T[n]);
   // mapped (in huge pages where offered) by all the workers before the passes write it
-  populate_pages(values.get(), n * sizeof(T), worker_count(opt.threads, dom.size()));
+  populate_pages(values.get(), n * sizeof(T), workers);
   distance_transform_into<T>(dom, mask, item, opt, values.get(), o.pass_progress);
   r.seconds = since(t0);
   // The largest value and the write, in pieces by all the workers (write_values_max).
-  r.max_value = write_values_max<T>(out, header.size(), values.get(), dom.size(),
-                                    worker_count(opt.threads, dom.size()));
+  r.max_value = write_values_max<T>(out, header.size(), values.get(), dom.size(), workers);
   values.reset();
   out.finish();
   return r;

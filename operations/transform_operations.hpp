@@ -1,7 +1,8 @@
 // The lean distance transform of zdg transform dt (issue #15): an .npy file in, an .npy file
 // out, without holding either as an image. The input is mapped and read in place (items of any
 // integer width or bool: background where all bytes are 0, as npy_to_mask reads them); the
-// values are computed in one buffer of the output's type, or out of core within a memory
+// values are computed in one buffer of the output's type (the output file's own pages, mapped,
+// when it is well below the kernel's dirty-page threshold), or out of core within a memory
 // budget (kernel/transforms/out_of_core_transform.hpp), and written once, in the narrowest
 // unsigned dtype that holds the largest possible value (distance_transform_max_value). The
 // peak memory is about the input's bytes plus the output's (in memory), or the budget (out of
@@ -38,6 +39,10 @@ struct NpyTransformOptions {
   std::optional<std::uint64_t> memory_budget;
   std::function<void(const OutOfCoreProgress&)> out_of_core_progress;
   std::function<void(int, int)> pass_progress; ///< (passes done, passes) in memory
+  /// In memory, the values are computed in the output file's own pages through a shared mapping
+  /// (true: no buffer beside them, no copy) or in a buffer then written (false); by default the
+  /// first where the output fits shared_mapping_fits (kernel/io/mapped_file.hpp). The same bytes.
+  std::optional<bool> shared_output;
 };
 
 struct NpyTransformResult {

@@ -3,10 +3,12 @@
 #include <zdg/arith/error.hpp>
 #include <zdg/kernel/io/input_file.hpp>
 #include <zdg/kernel/parallel/parallel_for.hpp>
+#include <zdg/kernel/parallel/populate_pages.hpp>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <mutex>
 
 #include <fcntl.h>
@@ -109,6 +111,52 @@ void ReservedFile::finish() {
 
 ReservedFile::~ReservedFile() {
   if (fd_ >= 0) ::close(fd_);
+}
+
+SharedMapping::SharedMapping(const ReservedFile& file, unsigned threads) : size_(file.size_) {
+  if (size_ == 0) return;
+  if (file.fd_ < 0) throw IoError(file.path_ + ": cannot map a closed file");
+  void* p = ::mmap(nullptr, static_cast<std::size_t>(size_), PROT_READ | PROT_WRITE, MAP_SHARED,
+                   file.fd_, 0);
+  if (p == MAP_FAILED) fail(file.path_, "cannot map the file into memory", errno);
+  data_ = static_cast<unsigned char*>(p);
+  populate_pages(data_, static_cast<std::size_t>(size_), threads);
+}
+
+SharedMapping::~SharedMapping() {
+  if (data_ != nullptr) ::munmap(data_, static_cast<std::size_t>(size_));
+}
+
+namespace {
+
+// The first number in a one-line file of /proc, or -1.
+std::int64_t proc_number(const char* path) {
+  std::ifstream f(path);
+  std::int64_t v = -1;
+  if (!(f >> v)) return -1;
+  return v;
+}
+
+} // namespace
+
+bool shared_mapping_fits(std::uint64_t bytes) {
+  std::int64_t threshold = proc_number("/proc/sys/vm/dirty_background_bytes");
+  if (threshold <= 0) {
+    const std::int64_t ratio = proc_number("/proc/sys/vm/dirty_background_ratio");
+    std::ifstream info("/proc/meminfo");
+    std::string key;
+    std::int64_t kb = -1;
+    while (info >> key) {
+      if (key == "MemAvailable:") {
+        info >> kb;
+        break;
+      }
+      info.ignore(1 << 10, '\n');
+    }
+    if (ratio <= 0 || kb <= 0) return false;
+    threshold = kb / 100 * 1024 * ratio;
+  }
+  return bytes <= static_cast<std::uint64_t>(threshold) / 2;
 }
 
 template <class T>

@@ -12,8 +12,12 @@
 // Outputs are written with pwrite, not through a shared mapping: the passes of a transform
 // modify every value several times, and a mapped output larger than the kernel's dirty-page
 // threshold is written back to the disk again at each modification (measured: 700 GB written
-// for a 4 GB output). All failures are IoError naming the file and the reason. Cost: the
-// mapping is O(1), its pages are read as they are touched (the resident set counts them).
+// for a 4 GB output). Below it (shared_mapping_fits: half the background threshold, where the
+// kernel starts writing back), SharedMapping maps a ReservedFile for writing, so that values
+// computed in place are the file's pages with no buffer beside them and no copy (issue #40
+// item 3: a 512^3 uint32 output, 537 MB). All failures are IoError naming the file and the
+// reason. Cost: the mapping is O(1), its pages are read as they are touched (the resident set
+// counts them).
 #pragma once
 
 #include <cstddef>
@@ -57,10 +61,36 @@ public:
   void finish();
 
 private:
+  friend class SharedMapping;
   std::string path_;
   std::uint64_t size_ = 0;
   int fd_ = -1;
 };
+
+/// The whole of an open ReservedFile mapped for reading and writing (MAP_SHARED): what is stored
+/// through data() lands in the file's pages in the page cache, written back by the kernel as a
+/// write's would be (its blocks are reserved: no disk-full error can follow). The pages are
+/// advised for huge pages and mapped by `threads` workers at construction (populate_pages).
+/// Unmapped by the destructor; close the file after. IoError when the mapping fails.
+class SharedMapping {
+public:
+  SharedMapping(const ReservedFile& file, unsigned threads);
+  ~SharedMapping();
+  SharedMapping(const SharedMapping&) = delete;
+  SharedMapping& operator=(const SharedMapping&) = delete;
+
+  unsigned char* data() const { return data_; }
+
+private:
+  unsigned char* data_ = nullptr;
+  std::uint64_t size_ = 0;
+};
+
+/// Whether an output of `bytes` may be written through a SharedMapping: at most half the
+/// kernel's background dirty-page threshold (/proc/sys/vm/dirty_background_bytes, else
+/// dirty_background_ratio percent of MemAvailable), so that the kernel does not write it back
+/// while it is still being modified. False where these cannot be read.
+bool shared_mapping_fits(std::uint64_t bytes);
 
 /// Writes n values of T (little-endian, as in memory) at byte `offset` of `out`, in pieces of
 /// 4 MiB by `threads` workers (positional writes of disjoint ranges), and returns the largest

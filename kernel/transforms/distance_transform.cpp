@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <mutex>
 #include <string>
 
 namespace zdg {
@@ -56,7 +57,8 @@ void throw_no_background(const TransformOptions& opt) {
 template <class T>
 void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,
                              const TransformOptions& opt, T* out,
-                             const std::function<void(int, int)>& progress) {
+                             const std::function<void(int, int)>& progress,
+                             std::uint64_t* max_value) {
   detail::require_mask_item_bytes(mask_item_bytes, "distance transform");
   auto bounds = detail::envelope_bounds(dom, opt, BigInt(0));
   require_background(dom, mask, opt, mask_item_bytes);
@@ -72,9 +74,19 @@ void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int ma
     V inf = detail::envelope_infinity<V>(bounds);
     if constexpr (std::is_integral_v<V> && std::is_integral_v<T> && sizeof(V) == sizeof(T)) {
       // Same width: work in the output buffer (signed and unsigned variants may alias; the
-      // final values are >= 0 and finite since there is background).
+      // final values are >= 0 and finite since there is background). The largest value from
+      // the last pass (axis 0) while its lines are in cache; in 1D, by a scan.
+      std::uint64_t mx = 0;
+      if (max_value != nullptr && dom.dim() >= 2) whole.max_value = &mx;
       detail::separable_envelope_part<V>(dom, opt, mask, reinterpret_cast<V*>(out), inf, nullptr,
                                          mask_item_bytes, whole);
+      if (max_value != nullptr) {
+        if (dom.dim() < 2) {
+          for (std::int64_t i = 0; i < dom.size(); ++i)
+            mx = std::max(mx, static_cast<std::uint64_t>(out[i]));
+        }
+        *max_value = mx;
+      }
       return;
     }
     std::vector<V> f;
@@ -83,10 +95,21 @@ void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int ma
     detail::separable_envelope_part<V>(dom, opt, mask, f.data(), inf, nullptr, mask_item_bytes,
                                        whole);
     const V* fp = f.data();
+    std::mutex lock;
+    std::uint64_t mx = 0;
     parallel_chunks(dom.size(), detail::resolve_threads(opt.threads, dom.size()),
                     [&](std::int64_t b, std::int64_t e) {
-                      for (std::int64_t i = b; i < e; ++i) out[i] = convert_value<T>(fp[i]);
+                      std::uint64_t m = 0;
+                      for (std::int64_t i = b; i < e; ++i) {
+                        out[i] = convert_value<T>(fp[i]);
+                        if constexpr (!std::is_same_v<T, BigInt>) {
+                          m = std::max(m, static_cast<std::uint64_t>(out[i]));
+                        }
+                      }
+                      const std::lock_guard<std::mutex> hold(lock);
+                      mx = std::max(mx, m);
                     });
+    if (max_value != nullptr) *max_value = mx;
   });
 }
 
@@ -104,19 +127,19 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
 
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
                                       const TransformOptions&, std::uint8_t*,
-                                      const std::function<void(int, int)>&);
+                                      const std::function<void(int, int)>&, std::uint64_t*);
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
                                       const TransformOptions&, std::uint16_t*,
-                                      const std::function<void(int, int)>&);
+                                      const std::function<void(int, int)>&, std::uint64_t*);
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
                                       const TransformOptions&, std::uint32_t*,
-                                      const std::function<void(int, int)>&);
+                                      const std::function<void(int, int)>&, std::uint64_t*);
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
                                       const TransformOptions&, std::uint64_t*,
-                                      const std::function<void(int, int)>&);
+                                      const std::function<void(int, int)>&, std::uint64_t*);
 template void distance_transform_into(const Domain&, const std::uint8_t*, int,
                                       const TransformOptions&, std::int64_t*,
-                                      const std::function<void(int, int)>&);
+                                      const std::function<void(int, int)>&, std::uint64_t*);
 template Image<std::uint8_t> distance_transform(const Image<std::uint8_t>&,
                                                 const TransformOptions&);
 template Image<std::uint16_t> distance_transform(const Image<std::uint8_t>&,

@@ -30,10 +30,13 @@ Image<T> distance_transform(const Image<std::uint8_t>& shape, const TransformOpt
 /// out[0 .. dom.size()). T: std::uint8_t .. std::uint64_t or std::int64_t. Extra memory: the
 /// engine's line buffers, and a temporary when its width differs from T's. Errors as above.
 /// progress (optional): called after each of the d passes with (passes done, d), same thread.
+/// max_value (optional): set to the largest value written, taken while the last pass's lines are
+/// in cache (no scan of the output after).
 template <class T>
 void distance_transform_into(const Domain& dom, const std::uint8_t* mask, int mask_item_bytes,
                              const TransformOptions& opt, T* out,
-                             const std::function<void(int done, int total)>& progress = {});
+                             const std::function<void(int done, int total)>& progress = {},
+                             std::uint64_t* max_value = nullptr);
 
 /// Throws InvalidArgument when `shape` has no background point (value 0).
 void require_background(const Image<std::uint8_t>& shape, const TransformOptions& opt);

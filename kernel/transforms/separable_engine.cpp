@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <string>
 
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -718,6 +719,393 @@ bool envelope_avx512_supported() {
   static const bool ok = __builtin_cpu_supports("avx512f");
   return ok;
 }
+
+// ---- The int64 engine in 8 lanes (AVX-512F and DQ) -------------------------------------------
+//
+// The same sweep as envelope_block_avx512, one line per 64-bit lane (8 adjacent lines: a row of a
+// block is one 64-byte cache line), for the values past the int32 engine (need >= 2^31: l3 on
+// lines of 1,000 or more points, l2 on volumes past about 30,000 a side, weights past 2^30).
+// Every value and every intermediate below is an int64 bounded by `need` (separable_engine.hpp)
+// as in the scalar loop, except the floating-point guesses, which only choose where the exact
+// tests look:
+// - l1 and linf: their closed forms (an arithmetic shift is the floor of a halving);
+// - l2 and l_p: the last t in [t_top, end) where the top still wins, found by exact integer
+//   tests g_u(t) < g_s(t) in every lane (the predicate is monotone in t): a guess (for l2 the
+//   quotient ((u - s)(u + s) + f_u - f_s) / (2 (u - s)) in double, right or one off; for l3 the
+//   closed-form root as in separator16; else the midpoint), two tests at the guess and the next
+//   point, a gallop from there, then bisection. The answer is the scalar sep's, exactly.
+// The stack tables: one 64-bit entry per row and lane for the element below (site + 1 in the
+// high half, segment start in the low half: lines under 2^30 points) and one for its value.
+// Positions and differences of positions fit 32 bits, so |t - s|^2 is one signed 32 x 32 -> 64
+// product (vpmuldq); higher powers multiply in 64 bits (vpmullq, AVX-512DQ).
+
+// (the maskz_ forms with every lane: GCC 12's plain forms warn -Wmaybe-uninitialized)
+constexpr __mmask8 kAll8 = 0xFF;
+
+template <int K>
+__attribute__((target("avx512f,avx512dq"), always_inline)) inline __m512i eval8(__m512i f,
+                                                                                __m512i dx, int p) {
+  if constexpr (K == kL2) {
+    (void)p;
+    return _mm512_add_epi64(f, _mm512_maskz_mul_epi32(kAll8, dx, dx));
+  } else {
+    const __m512i a = _mm512_maskz_abs_epi64(kAll8, dx);
+    if constexpr (K == kL1) {
+      (void)p;
+      return _mm512_add_epi64(f, a);
+    } else if constexpr (K == kLinf) {
+      (void)p;
+      return _mm512_maskz_max_epi64(kAll8, f, a);
+    } else {
+      __m512i r = _mm512_maskz_mul_epi32(kAll8, a, a);
+      for (int k = 2; k < p; ++k) r = _mm512_maskz_mullo_epi64(kAll8, r, a);
+      return _mm512_add_epi64(f, r);
+    }
+  }
+}
+
+// The lanes where u is strictly below the top at y (g_u(y) < g_s(y)).
+template <int K>
+__attribute__((target("avx512f,avx512dq"), always_inline)) inline __mmask8
+u_wins8(__m512i y, __m512i vu, __m512i fu, __m512i ts, __m512i tf, int p) {
+  return _mm512_cmplt_epi64_mask(eval8<K>(fu, _mm512_sub_epi64(y, vu), p),
+                                 eval8<K>(tf, _mm512_sub_epi64(y, ts), p));
+}
+
+// The separator of the tops (ts, tt, tf) and u (fu) in the lanes of `full` (see above): for l1
+// and linf before the clamp to [t_top, end - 1] (`far`: lanes where u never wins), for l2 and
+// l_p the clamped one.
+template <int K>
+__attribute__((target("avx512f,avx512dq"), always_inline)) inline __m512i
+separator8(__m512i vu, __m512i fu, __m512i ts, __m512i tt, __m512i tf, __m512i vhi, int p,
+           __mmask8 full, __mmask8& far) {
+  const __m512i one = _mm512_set1_epi64(1);
+  far = 0;
+  if constexpr (K == kL1) {
+    (void)tt;
+    (void)vhi;
+    (void)p;
+    const __m512i df = _mm512_sub_epi64(fu, tf);
+    far = full & _mm512_cmpge_epi64_mask(df, _mm512_sub_epi64(vu, ts));
+    return _mm512_maskz_srai_epi64(kAll8, _mm512_add_epi64(df, _mm512_add_epi64(vu, ts)), 1);
+  } else if constexpr (K == kLinf) {
+    (void)tt;
+    (void)vhi;
+    (void)p;
+    (void)full;
+    const __m512i mid = _mm512_maskz_srai_epi64(kAll8, _mm512_add_epi64(vu, ts), 1);
+    const __mmask8 le = _mm512_cmple_epi64_mask(tf, fu);
+    const __m512i a_le = _mm512_add_epi64(ts, fu), a_gt = _mm512_sub_epi64(vu, tf);
+    return _mm512_mask_mov_epi64(_mm512_maskz_min_epi64(kAll8, a_gt, mid), le,
+                                 _mm512_maskz_max_epi64(kAll8, a_le, mid));
+  } else if constexpr (K == kL2) {
+    (void)p;
+    // clamp(floor(num / den), t_top, end - 1), num = (u - s)(u + s) + f_u - f_s, den = 2 (u - s):
+    // the quotient in double is a guess q (clamped to the segment first, so that q den fits),
+    // then the exact remainder num - q den moves q down while it is negative (the top wins at
+    // t_top: num >= t_top den, so q stays >= t_top) and up while it is >= den (up to end - 1).
+    const __m512i diff = _mm512_sub_epi64(vu, ts), den = _mm512_add_epi64(diff, diff);
+    const __m512i num = _mm512_add_epi64(
+        _mm512_maskz_mul_epi32(kAll8, diff, _mm512_add_epi64(vu, ts)), _mm512_sub_epi64(fu, tf));
+    const __m512d q =
+        _mm512_div_pd(_mm512_maskz_cvtepi64_pd(kAll8, num), _mm512_maskz_cvtepi64_pd(kAll8, den));
+    const __m512d lo = _mm512_maskz_cvtepi64_pd(kAll8, tt);
+    const __m512d hi = _mm512_maskz_cvtepi64_pd(kAll8, _mm512_sub_epi64(vhi, one));
+    __m512i x = _mm512_maskz_cvt_roundpd_epi64(
+        kAll8, _mm512_maskz_min_pd(kAll8, _mm512_maskz_max_pd(kAll8, q, lo), hi),
+        _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+    const __m512i last = _mm512_sub_epi64(vhi, one);
+    __m512i rem = _mm512_sub_epi64(num, _mm512_maskz_mul_epi32(kAll8, x, den));
+    for (;;) {
+      const __mmask8 down = full & _mm512_cmplt_epi64_mask(rem, _mm512_setzero_si512());
+      const __mmask8 up =
+          full & _mm512_cmpge_epi64_mask(rem, den) & _mm512_cmplt_epi64_mask(x, last);
+      if ((down | up) == 0) break;
+      x = _mm512_mask_sub_epi64(x, down, x, one);
+      rem = _mm512_mask_add_epi64(rem, down, rem, den);
+      x = _mm512_mask_add_epi64(x, up, x, one);
+      rem = _mm512_mask_sub_epi64(rem, up, rem, den);
+    }
+    return x;
+  } else {
+    __m512i x0 = _mm512_maskz_srai_epi64(kAll8, _mm512_add_epi64(ts, vu), 1);
+    const __m512d dd = _mm512_maskz_cvtepi64_pd(kAll8, _mm512_sub_epi64(vu, ts));
+    const __m512d cc = _mm512_maskz_cvtepi64_pd(kAll8, _mm512_sub_epi64(fu, tf));
+    if (p == 3) {
+      // the root of c + |t - u|^3 - |t - s|^3 outside [s, u] (separator16), in double
+      const __m512d d3 = _mm512_mul_pd(_mm512_mul_pd(dd, dd), dd);
+      const __m512d ac = _mm512_abs_pd(cc);
+      const __m512d disc = _mm512_sub_pd(_mm512_div_pd(_mm512_mul_pd(_mm512_set1_pd(12.0), ac), dd),
+                                         _mm512_mul_pd(_mm512_set1_pd(3.0), _mm512_mul_pd(dd, dd)));
+      const __m512d a = _mm512_mul_pd(
+          _mm512_sub_pd(
+              _mm512_maskz_sqrt_pd(kAll8, _mm512_maskz_max_pd(kAll8, disc, _mm512_setzero_pd())),
+              _mm512_mul_pd(_mm512_set1_pd(3.0), dd)),
+          _mm512_set1_pd(1.0 / 6.0));
+      const __m512i ai = _mm512_maskz_cvt_roundpd_epi64(
+          kAll8, _mm512_maskz_min_pd(kAll8, a, _mm512_set1_pd(4.0e18)),
+          _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+      const __mmask8 right = _mm512_cmp_pd_mask(cc, d3, _CMP_GE_OQ);
+      const __mmask8 left =
+          _mm512_cmp_pd_mask(cc, _mm512_sub_pd(_mm512_setzero_pd(), d3), _CMP_LE_OQ);
+      x0 = _mm512_mask_mov_epi64(x0, right, _mm512_add_epi64(vu, ai));
+      x0 = _mm512_mask_mov_epi64(x0, left, _mm512_sub_epi64(_mm512_sub_epi64(ts, ai), one));
+    }
+    x0 = _mm512_maskz_min_epi64(kAll8, _mm512_maskz_max_epi64(kAll8, x0, tt),
+                                _mm512_sub_epi64(vhi, one));
+    const __m512i x1 = _mm512_add_epi64(x0, one);
+    const __mmask8 top0 = full & static_cast<__mmask8>(~u_wins8<K>(x0, vu, fu, ts, tf, p));
+    const __mmask8 in1 = _mm512_cmplt_epi64_mask(x1, vhi);
+    const __mmask8 top1 = in1 & static_cast<__mmask8>(~u_wins8<K>(x1, vu, fu, ts, tf, p));
+    __m512i lo = _mm512_mask_mov_epi64(tt, top0, x0);
+    lo = _mm512_mask_mov_epi64(lo, top0 & top1, x1);
+    __m512i hi = _mm512_mask_mov_epi64(vhi, full & static_cast<__mmask8>(~top0), x0);
+    hi = _mm512_mask_mov_epi64(hi, top0 & in1 & static_cast<__mmask8>(~top1), x1);
+    __mmask8 up = top0 & top1, down = full & static_cast<__mmask8>(~top0);
+    for (__m512i step = one; up != 0; step = _mm512_add_epi64(step, step)) {
+      const __m512i y = _mm512_add_epi64(lo, step);
+      const __mmask8 test = up & _mm512_cmplt_epi64_mask(y, vhi);
+      const __mmask8 tw = test & static_cast<__mmask8>(~u_wins8<K>(y, vu, fu, ts, tf, p));
+      lo = _mm512_mask_mov_epi64(lo, tw, y);
+      hi = _mm512_mask_mov_epi64(hi, test & static_cast<__mmask8>(~tw), y);
+      up = tw;
+    }
+    for (__m512i step = one; down != 0; step = _mm512_add_epi64(step, step)) {
+      const __m512i y = _mm512_sub_epi64(hi, step);
+      const __mmask8 test = down & _mm512_cmpgt_epi64_mask(y, tt);
+      const __mmask8 tw = test & static_cast<__mmask8>(~u_wins8<K>(y, vu, fu, ts, tf, p));
+      lo = _mm512_mask_mov_epi64(lo, tw, y);
+      hi = _mm512_mask_mov_epi64(hi, test & static_cast<__mmask8>(~tw), y);
+      down = test & static_cast<__mmask8>(~tw);
+    }
+    for (;;) {
+      const __mmask8 open = full & _mm512_cmpgt_epi64_mask(_mm512_sub_epi64(hi, lo), one);
+      if (open == 0) break;
+      const __m512i mid =
+          _mm512_add_epi64(lo, _mm512_maskz_srai_epi64(kAll8, _mm512_sub_epi64(hi, lo), 1));
+      const __mmask8 uw = open & u_wins8<K>(mid, vu, fu, ts, tf, p);
+      hi = _mm512_mask_mov_epi64(hi, uw, mid);
+      lo = _mm512_mask_mov_epi64(lo, open & static_cast<__mmask8>(~uw), mid);
+    }
+    return lo;
+  }
+}
+
+// Pops the lanes of `go`: the element below the top, from row ts of the tables (P: site + 1 and
+// segment start, BF: value).
+__attribute__((target("avx512f,avx512dq"), always_inline)) inline void
+below8(__m512i& ts, __m512i& tt, __m512i& tf, __mmask8 go, const std::int64_t* P,
+       const std::int64_t* BF) {
+  const __m512i lane = _mm512_setr_epi64(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m512i at = _mm512_add_epi64(_mm512_maskz_slli_epi64(kAll8, ts, 3), lane);
+  const __m512i pk = _mm512_mask_i64gather_epi64(_mm512_setzero_si512(), go, at, P, 8);
+  tf = _mm512_mask_i64gather_epi64(tf, go, at, BF, 8);
+  ts = _mm512_mask_sub_epi64(ts, go, _mm512_maskz_srli_epi64(kAll8, pk, 32), _mm512_set1_epi64(1));
+  tt = _mm512_mask_and_epi64(tt, go, pk, _mm512_set1_epi64(0xFFFFFFFFLL));
+}
+
+// The envelopes of NB blocks of 8 adjacent lines in int64 (envelope_block_avx512's sweep, peaks
+// left out as there). src: the first block's first value, rows st values apart, bw lanes used in
+// all; written in place. tables: 3 NB len 8 int64, 64-byte aligned.
+template <int K, int NB>
+__attribute__((target("avx512f,avx512dq"))) void
+envelope_block8(std::int64_t* src, std::int64_t st, int bw, std::int64_t n, bool periodic,
+                std::int64_t inf, int p, std::int64_t* tables) {
+  const std::int64_t len = periodic ? 3 * n : n, qlo = periodic ? n : 0, qhi = qlo + n;
+  const __m512i vinf = _mm512_set1_epi64(inf), zero = _mm512_setzero_si512();
+  const __m512i one = _mm512_set1_epi64(1);
+  __mmask8 used[NB];
+  std::int64_t *F[NB], *P[NB], *BF[NB];
+  for (int b = 0; b < NB; ++b) {
+    const int w = std::clamp(bw - 8 * b, 0, 8);
+    used[b] = static_cast<__mmask8>((1u << w) - 1u);
+    F[b] = tables + 3 * b * len * 8;
+    P[b] = F[b] + len * 8;
+    BF[b] = P[b] + len * 8;
+  }
+  constexpr std::int64_t kAhead = 16;
+  const bool ahead = st > 8 * NB;
+  const std::int64_t* R[NB];
+  const std::int64_t rs = periodic ? 8 : st;
+  for (int b = 0; b < NB; ++b) R[b] = periodic ? F[b] : src + 8 * b;
+  if (periodic) {
+    for (std::int64_t x = 0; x < n; ++x) {
+      for (int b = 0; b < NB; ++b) {
+        const __m512i row = _mm512_mask_loadu_epi64(vinf, used[b], src + x * st + 8 * b);
+        _mm512_store_si512(F[b] + x * 8, row);
+        _mm512_store_si512(F[b] + (n + x) * 8, row);
+        _mm512_store_si512(F[b] + (2 * n + x) * 8, row);
+      }
+    }
+  }
+  __m512i ts[NB], tt[NB], tf[NB];
+  for (int b = 0; b < NB; ++b) {
+    ts[b] = _mm512_set1_epi64(-1);
+    tt[b] = zero;
+    tf[b] = zero;
+  }
+  const __m512i vhi = _mm512_set1_epi64(qhi), vhi1 = _mm512_set1_epi64(qhi - 1);
+  const __m512i vqlo = _mm512_set1_epi64(qlo);
+  __m512i prev[NB], cur[NB];
+  for (int b = 0; b < NB; ++b) {
+    prev[b] = vinf;
+    cur[b] = _mm512_mask_loadu_epi64(vinf, used[b], R[b]);
+  }
+  for (std::int64_t u = 0; u < len; ++u) {
+    const __m512i vu = _mm512_set1_epi64(u);
+    __m512i fu[NB];
+    __mmask8 active[NB], pop[NB];
+    bool any = false;
+    if (!periodic && ahead && u + kAhead < n) {
+      for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (u + kAhead) * st + 8 * b);
+    }
+    for (int b = 0; b < NB; ++b) {
+      // rows u - 1, u, u + 1 of the block kept in registers: one load per row
+      fu[b] = cur[b];
+      const __m512i after =
+          u + 1 < len ? _mm512_mask_loadu_epi64(vinf, used[b], R[b] + (u + 1) * rs) : vinf;
+      active[b] = _mm512_cmpneq_epi64_mask(fu[b], vinf);
+      if (u > 0 && u + 1 < len) {
+        const __mmask8 peak =
+            _mm512_cmpge_epi64_mask(fu[b], prev[b]) & _mm512_cmpge_epi64_mask(fu[b], after);
+        active[b] &= static_cast<__mmask8>(~peak);
+      }
+      prev[b] = cur[b];
+      cur[b] = after;
+      any |= active[b] != 0;
+    }
+    if (!any) continue;
+    for (;;) {
+      bool popped = false;
+      for (int b = 0; b < NB; ++b) {
+        const __mmask8 cand = active[b] & _mm512_cmpge_epi64_mask(ts[b], zero);
+        const __m512i gtop = eval8<K>(tf[b], _mm512_sub_epi64(tt[b], ts[b]), p);
+        const __m512i gu = eval8<K>(fu[b], _mm512_sub_epi64(tt[b], vu), p);
+        pop[b] = _mm512_mask_cmpgt_epi64_mask(cand, gtop, gu);
+        popped |= pop[b] != 0;
+      }
+      if (!popped) break;
+      for (int b = 0; b < NB; ++b) below8(ts[b], tt[b], tf[b], pop[b], P[b], BF[b]);
+    }
+    for (int b = 0; b < NB; ++b) {
+      if (active[b] == 0) continue;
+      const __mmask8 empty = active[b] & _mm512_cmplt_epi64_mask(ts[b], zero);
+      const __mmask8 full = active[b] & static_cast<__mmask8>(~empty);
+      __m512i w = vqlo;
+      __mmask8 push = empty;
+      if (full != 0) {
+        __mmask8 far = 0;
+        __m512i r = separator8<K>(vu, fu[b], ts[b], tt[b], tf[b], vhi, p, full, far);
+        if constexpr (K == kL1 || K == kLinf) {
+          r = _mm512_maskz_min_epi64(kAll8, _mm512_maskz_max_epi64(kAll8, r, tt[b]), vhi1);
+          r = _mm512_mask_mov_epi64(r, far, vhi1);
+        }
+        push |= full & _mm512_cmplt_epi64_mask(r, vhi1);
+        w = _mm512_mask_mov_epi64(w, full, _mm512_add_epi64(r, one));
+      }
+      if (push == 0) continue;
+      const __m512i pk =
+          _mm512_or_si512(_mm512_maskz_slli_epi64(kAll8, _mm512_add_epi64(ts[b], one), 32),
+                          _mm512_and_si512(tt[b], _mm512_set1_epi64(0xFFFFFFFFLL)));
+      _mm512_store_si512(P[b] + u * 8, pk);
+      _mm512_store_si512(BF[b] + u * 8, tf[b]);
+      ts[b] = _mm512_mask_mov_epi64(ts[b], push, vu);
+      tt[b] = _mm512_mask_mov_epi64(tt[b], push, w);
+      tf[b] = _mm512_mask_mov_epi64(tf[b], push, fu[b]);
+    }
+  }
+  __mmask8 some[NB];
+  for (int b = 0; b < NB; ++b) some[b] = _mm512_cmpge_epi64_mask(ts[b], zero);
+  for (std::int64_t x = qhi; x-- > qlo;) {
+    if (ahead && x - kAhead >= qlo) {
+      for (int b = 0; b < NB; ++b) __builtin_prefetch(src + (x - kAhead - qlo) * st + 8 * b, 1);
+    }
+    const __m512i vx = _mm512_set1_epi64(x);
+    __mmask8 down[NB];
+    bool moved = false;
+    for (int b = 0; b < NB; ++b) {
+      down[b] = _mm512_mask_cmpgt_epi64_mask(some[b], tt[b], vx);
+      moved |= down[b] != 0;
+    }
+    if (moved) {
+      for (int b = 0; b < NB; ++b) below8(ts[b], tt[b], tf[b], down[b], P[b], BF[b]);
+    }
+    for (int b = 0; b < NB; ++b) {
+      __m512i g = eval8<K>(tf[b], _mm512_sub_epi64(vx, ts[b]), p);
+      g = _mm512_mask_mov_epi64(vinf, some[b], g);
+      g = _mm512_maskz_min_epi64(kAll8, g, _mm512_mask_loadu_epi64(vinf, used[b], R[b] + x * rs));
+      _mm512_mask_storeu_epi64(src + (x - qlo) * st + 8 * b, used[b], g);
+    }
+  }
+}
+
+// The mask pass of one line into int64: the distances to the sites by mask_line_avx512<kL1>
+// (int32, lines under 2^28 points), then their metric lengths in 64 bits. d: n int32 of scratch,
+// rounded up to a multiple of 8.
+template <int K>
+__attribute__((target("avx512f,avx512dq"))) void
+mask_line8(const std::uint8_t* mk, std::int64_t* out, std::int64_t n, int p, std::int64_t inf,
+           std::int32_t* d, std::uint64_t* bits) {
+  constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::max();
+  mask_line_avx512<kL1>(mk, d, n, nullptr, kNone, bits);
+  const __m512i vnone = _mm512_set1_epi64(kNone), vinf = _mm512_set1_epi64(inf);
+  for (std::int64_t x = 0; x < n; x += 8) {
+    const __mmask8 valid =
+        n - x >= 8 ? static_cast<__mmask8>(0xFF) : static_cast<__mmask8>((1u << (n - x)) - 1u);
+    const __m512i dx = _mm512_maskz_cvtepi32_epi64(
+        kAll8, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(d + x)));
+    __m512i g = eval8<K>(_mm512_setzero_si512(), dx, p); // (linf: max(0, d) = d)
+    g = _mm512_mask_mov_epi64(g, _mm512_cmpeq_epi64_mask(dx, vnone), vinf);
+    _mm512_mask_storeu_epi64(out + x, valid, g);
+  }
+}
+
+// The largest finite value (values >= 0, inf excluded) of n rows of w values, `stride` apart,
+// in 16 or 8 lanes (envelope_pass's max_value, on a unit of lines just written, in cache).
+__attribute__((target("avx512f"))) std::uint64_t rows_max_avx512(const std::int32_t* at,
+                                                                 std::int64_t stride,
+                                                                 std::int64_t w, std::int64_t n,
+                                                                 std::int32_t inf) {
+  const __m512i vinf = _mm512_set1_epi32(inf);
+  __m512i acc = _mm512_setzero_si512();
+  for (std::int64_t x = 0; x < n; ++x) {
+    const std::int32_t* row = at + x * stride;
+    for (std::int64_t b = 0; b < w; b += 16) {
+      const __mmask16 in = w - b >= 16 ? static_cast<__mmask16>(0xFFFF)
+                                       : static_cast<__mmask16>((1u << (w - b)) - 1u);
+      const __m512i v = _mm512_maskz_loadu_epi32(in, row + b);
+      acc = _mm512_mask_max_epi32(acc, _mm512_mask_cmpneq_epi32_mask(in, v, vinf), acc, v);
+    }
+  }
+  alignas(64) std::int32_t lanes[16];
+  _mm512_store_si512(lanes, acc);
+  return static_cast<std::uint64_t>(*std::max_element(lanes, lanes + 16));
+}
+
+__attribute__((target("avx512f"))) std::uint64_t rows_max_avx512(const std::int64_t* at,
+                                                                 std::int64_t stride,
+                                                                 std::int64_t w, std::int64_t n,
+                                                                 std::int64_t inf) {
+  const __m512i vinf = _mm512_set1_epi64(inf);
+  __m512i acc = _mm512_setzero_si512();
+  for (std::int64_t x = 0; x < n; ++x) {
+    const std::int64_t* row = at + x * stride;
+    for (std::int64_t b = 0; b < w; b += 8) {
+      const __mmask8 in =
+          w - b >= 8 ? static_cast<__mmask8>(0xFF) : static_cast<__mmask8>((1u << (w - b)) - 1u);
+      const __m512i v = _mm512_maskz_loadu_epi64(in, row + b);
+      acc = _mm512_mask_max_epi64(acc, _mm512_mask_cmpneq_epi64_mask(in, v, vinf), acc, v);
+    }
+  }
+  alignas(64) std::int64_t lanes[8];
+  _mm512_store_si512(lanes, acc);
+  return static_cast<std::uint64_t>(*std::max_element(lanes, lanes + 8));
+}
+
+bool envelope_avx512dq_supported() {
+  static const bool ok = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+  return ok;
+}
 #endif
 
 std::atomic<bool> g_envelope_simd{true};
@@ -734,6 +1122,20 @@ bool simd_mask_lines(int item, bool periodic, const std::vector<std::int64_t>* s
   return item == 1 && !periodic && sites == nullptr && n < (std::int64_t{1} << 28) && use_simd();
 }
 
+// The int64 engine's vectorized passes run: allowed, offered by the CPU (AVX-512F and DQ), and
+// lines (of len points, 3 n on a torus) under 2^30 points: positions fit the 32-bit halves of
+// the stack entries and of the products.
+bool use_simd64(std::int64_t len) {
+  return g_envelope_simd.load(std::memory_order_relaxed) && envelope_avx512dq_supported() &&
+         len < (std::int64_t{1} << 30);
+}
+
+// The vectorized int64 mask pass takes the same lines.
+bool simd_mask_lines64(int item, bool periodic, const std::vector<std::int64_t>* sites,
+                       std::int64_t n) {
+  return item == 1 && !periodic && sites == nullptr && n < (std::int64_t{1} << 28) && use_simd64(n);
+}
+
 // The mask pass of lines [begin, end) of n points (vectorized).
 template <int K>
 void mask_lines_avx512(const std::uint8_t* mask, std::int32_t* f, std::int64_t n,
@@ -747,6 +1149,73 @@ void mask_lines_avx512(const std::uint8_t* mask, std::int32_t* f, std::int64_t n
 #endif
 
 #if defined(ZDG_ENVELOPE_AVX512)
+// The mask pass of lines [begin, end) of n points into int64 (vectorized).
+template <int K>
+void mask_lines8(const std::uint8_t* mask, std::int64_t* f, std::int64_t n, std::int64_t begin,
+                 std::int64_t end, int p, std::int64_t inf) {
+  std::vector<std::uint64_t> bits(static_cast<std::size_t>((n + 63) / 64));
+  std::vector<std::int32_t> d(static_cast<std::size_t>((n + 7) / 8 * 8));
+  for (std::int64_t line = begin; line < end; ++line) {
+    mask_line8<K>(mask + line * n, f + line * n, n, p, inf, d.data(), bits.data());
+  }
+}
+
+constexpr int kSimdBlocks8 = 4; // blocks of 8 lines advancing together (int64)
+
+// Scratch of envelope_columns8 for lines of len points (64-byte aligned).
+struct SimdTables8 {
+  std::vector<std::int64_t> buf;
+  std::int64_t* get(std::int64_t len) {
+    const auto need = static_cast<std::size_t>(3 * kSimdBlocks8 * len * 8 + 8);
+    if (buf.size() < need) buf.assign(need, 0);
+    std::int64_t* q = buf.data();
+    return q + (8 - (reinterpret_cast<std::uintptr_t>(q) / 8) % 8) % 8;
+  }
+};
+
+// The envelopes of the columns [0, cw) of lines of n points starting at base, rows `stride`
+// apart, in int64: units of kSimdBlocks8 blocks of 8 columns starting on 64-byte boundaries (a
+// narrower first block up to the first boundary), as envelope_columns_avx512.
+template <int K>
+void envelope_columns8(std::int64_t* base, std::int64_t stride, std::int64_t cw, std::int64_t n,
+                       bool periodic, std::int64_t inf, int p, std::int64_t* tables) {
+  constexpr std::int64_t kWide = 8 * kSimdBlocks8;
+  const auto addr = reinterpret_cast<std::uintptr_t>(base) / sizeof(std::int64_t);
+  const std::int64_t lead = std::min<std::int64_t>(cw, (8 - addr % 8) % 8);
+  if (lead > 0)
+    envelope_block8<K, 1>(base, stride, static_cast<int>(lead), n, periodic, inf, p, tables);
+  for (std::int64_t j0 = lead; j0 < cw; j0 += kWide) {
+    const std::int64_t bw = std::min(kWide, cw - j0);
+    std::int64_t* at = base + j0;
+    const int w = static_cast<int>(bw);
+    if (bw <= 8) {
+      envelope_block8<K, 1>(at, stride, w, n, periodic, inf, p, tables);
+    } else if (bw <= 16) {
+      envelope_block8<K, 2>(at, stride, w, n, periodic, inf, p, tables);
+    } else {
+      envelope_block8<K, kSimdBlocks8>(at, stride, w, n, periodic, inf, p, tables);
+    }
+  }
+}
+
+// The mask pass and the envelope pass of axis d - 2 fused slice by slice, in int64 (as
+// fused_mask_pass_avx512).
+template <int K>
+void fused_mask_pass8(const Domain& dom, bool periodic_columns, int p, const std::uint8_t* mask,
+                      std::int64_t* f, std::int64_t inf, unsigned threads) {
+  const int d = dom.dim();
+  const std::int64_t n = dom.extent(d - 1), rows = dom.extent(d - 2);
+  const std::int64_t slices = dom.size() / (n * rows);
+  const std::int64_t len = periodic_columns ? 3 * rows : rows;
+  parallel_chunks(slices, threads, [&](std::int64_t begin, std::int64_t end) {
+    SimdTables8 tables;
+    for (std::int64_t o = begin; o < end; ++o) {
+      mask_lines8<K>(mask, f, n, o * rows, (o + 1) * rows, p, inf);
+      envelope_columns8<K>(f + o * rows * n, n, n, rows, periodic_columns, inf, p, tables.get(len));
+    }
+  });
+}
+
 constexpr int kSimdBlocks = 4; // blocks of 16 lines advancing together
 
 // Scratch of envelope_columns_avx512 for lines of len points (64-byte aligned).
@@ -823,6 +1292,40 @@ void fused_mask_pass_avx512(const Domain& dom, bool periodic_columns,
     }
   });
 }
+
+// The int64 engine's first two passes in int32 where their values allow it (issue #40 item 4):
+// after the mask pass and the pass along axis d - 2, every value is the 2D transform of its
+// slice, bounded by the slice's own bounds (envelope_bounds on the slice's two axes: m_{d-1}^p
+// + m_{d-2}^p, intermediates below 2 (that + L^p) + 2 L); when those fit the int32 engine, a
+// slice is transformed by the int32 vectorized passes (fused_mask_pass_avx512's) in a scratch
+// slice, then widened into f (inf to inf), the same integers as the int64 passes. The last
+// passes run in int64. For a 3D l3 on 672^3 (int64 engine: the full bound is 2.4e9) the slices'
+// bound is 1.8e9: two of the three passes move and compute half the bytes.
+template <int K>
+void fused_mask_pass_narrow(const Domain& dom, bool periodic_columns,
+                            const LineMetric<K, std::int32_t>& m, const std::uint8_t* mask,
+                            std::int64_t* f, std::int64_t inf, unsigned threads) {
+  const int d = dom.dim();
+  const std::int64_t n = dom.extent(d - 1), rows = dom.extent(d - 2);
+  const std::int64_t slices = dom.size() / (n * rows);
+  const std::int64_t len = periodic_columns ? 3 * rows : rows;
+  constexpr std::int32_t inf32 = std::numeric_limits<std::int32_t>::max();
+  parallel_chunks(slices, threads, [&](std::int64_t begin, std::int64_t end) {
+    SimdTables tables;
+    std::vector<std::int32_t> slice(static_cast<std::size_t>(rows * n));
+    for (std::int64_t o = begin; o < end; ++o) {
+      // (the slice at f's rows, so that the int32 passes see the same mask lines)
+      mask_lines_avx512<K>(mask + o * rows * n, slice.data(), n, 0, rows, m, inf32);
+      envelope_columns_avx512<K>(slice.data(), n, n, rows, periodic_columns, inf32, m.p,
+                                 tables.get(len));
+      std::int64_t* out = f + o * rows * n;
+      for (std::int64_t i = 0; i < rows * n; ++i) {
+        const std::int32_t v = slice[static_cast<std::size_t>(i)];
+        out[i] = v == inf32 ? inf : v;
+      }
+    }
+  });
+}
 #endif
 
 template <class V>
@@ -838,8 +1341,42 @@ struct Scratch {
 template <int K, class V>
 void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
                    const LineMetric<K, V>& m, V* f, const V& inf, std::vector<std::int64_t>* sites,
-                   unsigned threads, std::int64_t jb = 0, std::int64_t je = -1) {
+                   unsigned threads, std::int64_t jb = 0, std::int64_t je = -1,
+                   std::uint64_t* max_out = nullptr) {
   const std::int64_t n = dom.extent(a), st = dom.stride(a);
+  // max_out (int32 and int64 values >= 0): the largest finite value the pass writes, taken from
+  // each unit of lines right after its envelopes, while the unit is still in cache.
+  std::mutex max_lock;
+  const auto unit_max = [&](const V* at, std::int64_t stride, std::int64_t w, std::uint64_t& mx) {
+    if constexpr (std::is_integral_v<V>) {
+#if defined(ZDG_ENVELOPE_AVX512)
+      if constexpr (std::is_same_v<V, std::int32_t> || std::is_same_v<V, std::int64_t>) {
+        if (envelope_avx512_supported()) {
+          mx = std::max(mx, rows_max_avx512(at, stride, w, n, inf));
+          return;
+        }
+      }
+#endif
+      V top = 0;
+      for (std::int64_t x = 0; x < n; ++x) {
+        const V* row = at + x * stride;
+        for (std::int64_t b = 0; b < w; ++b) {
+          const V v = row[b];
+          top = v != inf && v > top ? v : top;
+        }
+      }
+      mx = std::max(mx, static_cast<std::uint64_t>(top));
+    } else {
+      (void)at;
+      (void)stride;
+      (void)w;
+      (void)mx;
+    }
+  };
+  const auto merge_max = [&](std::uint64_t mx) {
+    const std::lock_guard<std::mutex> hold(max_lock);
+    *max_out = std::max(*max_out, mx);
+  };
   if (je < 0) je = st;
   if (je <= jb) return;
   const std::int64_t outer = dom.size() / (n * st);
@@ -861,12 +1398,36 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
       const std::int64_t per_outer = (je - origin + kChunk - 1) / kChunk;
       parallel_chunks(outer * per_outer, threads, [&](std::int64_t begin, std::int64_t end) {
         SimdTables tables;
+        std::uint64_t mx = 0;
         for (std::int64_t unit = begin; unit < end; ++unit) {
           const std::int64_t o = unit / per_outer, c = origin + (unit % per_outer) * kChunk;
           const std::int64_t j0 = std::max(jb, c), j1 = std::min(je, c + kChunk);
           envelope_columns_avx512<K>(fp + o * n * st + j0, st, j1 - j0, n, periodic, inf, m.p,
                                      tables.get(len));
+          if (max_out != nullptr) unit_max(fp + o * n * st + j0, st, j1 - j0, mx);
         }
+        if (max_out != nullptr) merge_max(mx);
+      });
+      return;
+    }
+  }
+  if constexpr (std::is_same_v<V, std::int64_t>) {
+    if (sp == nullptr && st > 1 && use_simd64(len)) {
+      constexpr std::int64_t kChunk = 128; // columns of a unit (int64: the same bytes)
+      const auto addr = reinterpret_cast<std::uintptr_t>(fp + jb) / sizeof(V);
+      const std::int64_t origin = jb - static_cast<std::int64_t>(addr % 8);
+      const std::int64_t per_outer = (je - origin + kChunk - 1) / kChunk;
+      parallel_chunks(outer * per_outer, threads, [&](std::int64_t begin, std::int64_t end) {
+        SimdTables8 tables;
+        std::uint64_t mx = 0;
+        for (std::int64_t unit = begin; unit < end; ++unit) {
+          const std::int64_t o = unit / per_outer, c = origin + (unit % per_outer) * kChunk;
+          const std::int64_t j0 = std::max(jb, c), j1 = std::min(je, c + kChunk);
+          envelope_columns8<K>(fp + o * n * st + j0, st, j1 - j0, n, periodic, inf, m.p,
+                               tables.get(len));
+          if (max_out != nullptr) unit_max(fp + o * n * st + j0, st, j1 - j0, mx);
+        }
+        if (max_out != nullptr) merge_max(mx);
       });
       return;
     }
@@ -874,6 +1435,7 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
 #endif
   parallel_chunks(outer * nblocks, threads, [&](std::int64_t begin, std::int64_t end) {
     Scratch<V> sc;
+    std::uint64_t mx = 0;
     const auto ub = static_cast<std::size_t>(bw_max);
     const auto ulen = static_cast<std::size_t>(len), un = static_cast<std::size_t>(n);
     sc.buf.assign(ub * ulen, V{});
@@ -928,6 +1490,7 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
         V* row = fp + base + x * st;
         for (std::int64_t b = 0; b < bw; ++b) row[b] = bp[b * len + x];
       }
+      if (max_out != nullptr) unit_max(fp + base, st, bw, mx);
       if (sp != nullptr) {
         for (std::int64_t x = 0; x < n; ++x) {
           std::int64_t* row = sp + base + x * st;
@@ -938,6 +1501,7 @@ void envelope_pass(const Domain& dom, int a, bool periodic, bool nonnegative,
         }
       }
     }
+    if (max_out != nullptr) merge_max(mx);
   });
 }
 
@@ -1024,6 +1588,14 @@ void mask_pass(const Domain& dom, bool periodic, const LineMetric<K, V>& m,
       return;
     }
   }
+  if constexpr (std::is_same_v<V, std::int64_t>) {
+    if (simd_mask_lines64(item, periodic, sites, n)) {
+      parallel_chunks(lines, threads, [&](std::int64_t begin, std::int64_t end) {
+        mask_lines8<K>(mask, fp, n, begin, end, m.p, inf);
+      });
+      return;
+    }
+  }
 #endif
   if (item == 1) {
     lines_with([](const std::uint8_t* mk, std::int64_t x) { return mk[x] == 0; });
@@ -1058,6 +1630,36 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
         fused = true;
       }
     }
+    if constexpr (std::is_same_v<V, std::int64_t>) {
+      if (mask != nullptr && d >= 3 &&
+          simd_mask_lines64(item, opt.periodic(d - 1), sites, dom.extent(d - 1)) &&
+          use_simd64(opt.periodic(d - 2) ? 3 * dom.extent(d - 2) : dom.extent(d - 2))) {
+        // The slices' own bounds (their two axes, no weights): int32 when they allow it.
+        TransformOptions slice_opt = opt;
+        slice_opt.min_engine_bits = 0;
+        slice_opt.torus.clear();
+        if (!opt.torus.empty()) slice_opt.torus = {opt.torus[d - 2], opt.torus[d - 1]};
+        const Domain slice_dom({dom.extent(d - 2), dom.extent(d - 1)});
+        if (use_simd() &&
+            envelope_bounds(slice_dom, slice_opt, BigInt(0)).width == ValueWidth::I32) {
+          std::vector<std::int32_t> pw32(pw.size());
+          for (std::size_t t = 0; t < pw.size(); ++t) {
+            // (t^p < 2^31 for every t on the slice's lines: the bound above)
+            pw32[t] = t <= static_cast<std::size_t>(std::max(dom.extent(d - 1), dom.extent(d - 2)))
+                          ? static_cast<std::int32_t>(pw[t])
+                          : 0;
+          }
+          LineMetric<K, std::int32_t> m32;
+          m32.pw = pw32.data();
+          m32.p = m.p;
+          m32.inv_pow2 = m.inv_pow2;
+          fused_mask_pass_narrow<K>(dom, opt.periodic(d - 2), m32, mask, f, inf, threads);
+        } else {
+          fused_mask_pass8<K>(dom, opt.periodic(d - 2), m.p, mask, f, inf, threads);
+        }
+        fused = true;
+      }
+    }
 #endif
     if (!fused && mask != nullptr) {
       mask_pass(dom, opt.periodic(d - 1), m, mask, item, f, inf, sites, threads);
@@ -1077,7 +1679,7 @@ void run_passes(const Domain& dom, const TransformOptions& opt, const std::uint8
   }
   if (part.axis0 && d >= 2) {
     envelope_pass(dom, 0, opt.periodic(0), part.from_mask, m, f, inf, sites, threads,
-                  part.column_begin, part.column_end);
+                  part.column_begin, part.column_end, part.max_value);
     if (part.after_pass) part.after_pass(0);
   }
 }

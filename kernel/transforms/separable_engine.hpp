@@ -21,7 +21,8 @@
 // Lines of non-contiguous axes are processed in blocks of adjacent lines (gathered into a
 // small buffer) so that every cache line read is used; passes split their lines over threads.
 // With AVX-512F the int32 engine without sites runs vectorized (separable_engine.cpp), the same
-// integers; portable envelopes skip local peaks when only values are asked (details:
+// integers, and with AVX-512F and DQ the int64 engine too (8 lines per vector, lines under 2^30
+// points); portable envelopes skip local peaks when only values are asked (details:
 // docs/NOTES.md, "kernel/transforms/separable_engine.hpp").
 //
 // Width: every value and intermediate is bounded at entry by
@@ -68,11 +69,12 @@ void require_mask_item_bytes(int mask_item_bytes, const char* who);
 
 /// Allows (the default) or forbids the vectorized passes (AVX-512F, the int32 engine without
 /// sites: the first pass of a one-byte mask, and the envelopes of lines of non-contiguous
-/// axes, 16 lines per vector); returns the previous setting. The results are the same either
-/// way: the tests compare both.
+/// axes, 16 lines per vector; AVX-512F and DQ, the int64 engine without sites: the same, 8
+/// lines per vector); returns the previous setting. The results are the same either way: the
+/// tests compare both.
 bool set_envelope_simd(bool allowed);
 
-/// Whether this CPU runs the vectorized envelope (AVX-512F).
+/// Whether this CPU runs the vectorized envelope (AVX-512F; the int64 one also needs DQ).
 bool envelope_simd_available();
 
 /// Worker threads actually used for n points.
@@ -105,6 +107,10 @@ struct EnvelopePart {
   bool slices = true, axis0 = true, from_mask = true;
   std::int64_t column_begin = 0, column_end = -1;
   std::function<void(int axis)> after_pass; // optional: called after each pass, with its axis
+  /// Optional, for int32 and int64 values >= 0 (a distance transform): raised to the largest
+  /// finite value the pass along axis 0 writes (d >= 2), read from each unit of lines while it
+  /// is in cache instead of by a scan of the whole output after.
+  std::uint64_t* max_value = nullptr;
 };
 
 template <class V>

@@ -42,6 +42,9 @@ TEST(NpyDistanceTransform, FileEqualsTheInMemoryTransformInAndOutOfCore) {
     o.transform.metric = metric;
     o.transform.threads = 1;
     o.out_of_core = *rc::gen::arbitrary<bool>();
+    // in memory: through the output's mapped pages, a buffer and its write, or either
+    o.shared_output = *rc::gen::element(std::optional<bool>{}, std::optional<bool>{true},
+                                        std::optional<bool>{false});
     if (o.out_of_core) o.memory_budget = 4096; // tiny: many slabs
     const auto r = npy_distance_transform(o);
     RC_ASSERT(r.has_value());

@@ -53,6 +53,39 @@ TEST(MappedFile, WhatIsWrittenThroughTheMapIsInTheFile) {
   fs::remove_all(dir);
 }
 
+// SharedMapping: bytes stored through the mapping (a pattern over 5 MiB, past the 4 MiB under
+// which populate_pages does nothing, and a small file) are the file's bytes once it is
+// unmapped and closed, next to a header written with write(); an empty file maps to nothing.
+TEST(MappedFile, WhatIsStoredThroughASharedMappingIsInTheFile) {
+  const fs::path dir = test::scratch_dir("mapped-shared");
+  const std::string path = (dir / "out.bin").string();
+  for (const std::uint64_t size : {std::uint64_t{5} << 20, std::uint64_t{1000}, std::uint64_t{0}}) {
+    {
+      ReservedFile out(path, size);
+      const unsigned char head[4] = {'z', 'd', 'g', '!'};
+      if (size > 0) out.write(0, head, 4);
+      {
+        const SharedMapping map(out, 3);
+        ASSERT_EQ(map.data() == nullptr, size == 0);
+        if (size > 0) {
+          EXPECT_EQ(map.data()[2], 'g'); // the write is seen through the mapping
+        }
+        for (std::uint64_t i = 4; i < size; ++i) map.data()[i] = static_cast<unsigned char>(i * 13);
+      }
+      out.finish();
+    }
+    ASSERT_EQ(fs::file_size(path), size);
+    MappedInput in(path);
+    for (std::uint64_t i = 0; i < size; ++i) {
+      const unsigned char expect = i < 4 ? "zdg!"[i] : static_cast<unsigned char>(i * 13);
+      ASSERT_EQ(in.data()[i], expect) << size << " " << i;
+    }
+  }
+  // An output larger than the address space never fits.
+  EXPECT_FALSE(shared_mapping_fits(std::uint64_t{1} << 62));
+  fs::remove_all(dir);
+}
+
 // write_values_max (the lean transform command's write): the file holds the values after the
 // offset, byte for byte, and the result is their maximum (oracle: std::max_element), for a
 // count that spans several 4 MiB pieces and a partial last one, by 1 and 3 workers, and for

@@ -169,3 +169,44 @@ TEST(VdbIo, ErrorsNameTheFile) {
 
 } // namespace
 } // namespace zdg
+
+namespace zdg {
+namespace {
+
+// Whether a shared library whose path contains `name` is mapped into this process.
+bool mapped(const std::string& name) {
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line))
+    if (line.find(name) != std::string::npos) return true;
+  return false;
+}
+
+// OpenVDB (through zdg's module, libzdg_vdb.so) is loaded by the first .vdb file, not when a
+// process starts (its relocations cost every start about 45 ms): in a fresh process (the death
+// test's child runs this binary again with this test alone) libopenvdb is not mapped before a
+// volume is written and read back, and is after, with the values back.
+TEST(VdbIo, OpenVdbIsLoadedAtTheFirstFileOnly) {
+  if (!vdb_supported()) GTEST_SKIP() << "built without OpenVDB";
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const Dir dir;
+  const std::string path = dir("first.vdb");
+  const auto first_use = [&] {
+    const bool before = mapped("libopenvdb");
+    std::vector<std::int64_t> values(24, 0);
+    values[5] = 7;
+    ScalarVolume v;
+    v.array = make_npy(DType::U8, {2, 3, 4}, values);
+    v.lower = {0, 0, 0};
+    v.spacing = {1, 1, 1};
+    v.origin = {0, 0, 0};
+    write_volume(path, v);
+    const ScalarVolume back = read_volume(path);
+    const bool after = mapped("libopenvdb") && mapped("libzdg_vdb");
+    std::exit(!before && after && back.value(5) == 7.0 ? 0 : 1);
+  };
+  EXPECT_EXIT(first_use(), ::testing::ExitedWithCode(0), "");
+}
+
+} // namespace
+} // namespace zdg

@@ -9,7 +9,9 @@
 #include <rapidcheck.h>
 
 #include <algorithm>
+#include <limits>
 #include <random>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -248,6 +250,115 @@ TEST(DistanceTransform, VectorizedEnvelopeEqualsPortable) {
     detail::set_envelope_simd(true);
     detail::separable_envelope<std::int32_t>(dom, opt, nullptr, b.data(), inf, nullptr);
     RC_ASSERT(a == b);
+  });
+}
+
+// The int64 engine's vectorized passes (kernel/transforms/separable_engine.cpp: 8 lines per
+// AVX-512 vector, the mask pass widened from the int32 one, l2 and l_p separators by exact
+// tests from a floating-point guess; in 3D the first two passes in int32 where the slices'
+// bounds allow it, else in int64) give the values of the scalar sweep to the bit: distance
+// transforms for l1, l2 .. l9 and linf forced onto the int64 engine (min_engine_bits = 64; l8
+// and l9 on lines of 70 points reach 70^9 ~ 2^55), torus axes, and value mode with weights up
+// to the largest the int64 engine takes on the domain (need just below 2^63: the sums and
+// products of the separators at the width's limit), some at that limit. Oracle: the portable
+// loop of the same engine.
+TEST(DistanceTransform, VectorizedInt64EnvelopeEqualsPortable) {
+  if (!detail::envelope_simd_available()) GTEST_SKIP() << "no AVX-512F on this CPU";
+  const AllowSimdAtExit allow;
+  test::check_property([] {
+    std::mt19937_64 rng(*rc::gen::arbitrary<std::uint64_t>());
+    auto pick = [&](std::int64_t lo, std::int64_t hi) {
+      return lo + static_cast<std::int64_t>(rng() % static_cast<std::uint64_t>(hi - lo + 1));
+    };
+    const auto d = static_cast<int>(pick(2, 3));
+    std::vector<std::int64_t> ext;
+    for (int k = 0; k < d; ++k) ext.push_back(pick(1, d == 2 ? 70 : 30));
+    Domain dom(ext);
+    TransformOptions opt;
+    opt.metric = Metric{static_cast<int>(pick(0, 9))};
+    for (int k = 0; k < d; ++k) opt.torus.push_back(pick(0, 2) == 0);
+    opt.threads = static_cast<unsigned>(pick(1, 2));
+    opt.min_engine_bits = 64;
+    RC_PRE(detail::envelope_bounds(dom, opt, BigInt(0)).width == detail::ValueWidth::I64);
+    RC_TAG(opt.metric.name());
+    std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+    const auto density = pick(0, 100);
+    for (auto& x : v) x = pick(0, 99) < density ? 1 : 0;
+    v[rng() % v.size()] = 0;
+    Image<std::uint8_t> shape(dom, v);
+    detail::set_envelope_simd(false);
+    auto ref = distance_transform<std::uint64_t>(shape, opt);
+    detail::set_envelope_simd(true);
+    RC_ASSERT(distance_transform<std::uint64_t>(shape, opt) == ref);
+
+    // Value mode: the largest weight w with need = 2 (vmax + w + L^p) + 2 L < 2^63 - 1.
+    const auto b0 = detail::envelope_bounds(dom, opt, BigInt(0));
+    const BigInt limit(std::numeric_limits<std::int64_t>::max());
+    const BigInt room = (limit - b0.need) / 2 - 1;
+    RC_PRE(room > 0);
+    const auto wmax = room.convert_to<std::int64_t>();
+    RC_ASSERT(detail::envelope_bounds(dom, opt, BigInt(wmax)).width == detail::ValueWidth::I64);
+    RC_ASSERT(detail::envelope_bounds(dom, opt, BigInt(wmax) + 3).width != detail::ValueWidth::I64);
+    const auto bounds = detail::envelope_bounds(dom, opt, BigInt(wmax));
+    const auto inf = detail::envelope_infinity<std::int64_t>(bounds);
+    const auto scale = pick(0, 2); // weights small, anywhere, or near the limit
+    std::vector<std::int64_t> f0(v.size());
+    for (auto& x : f0) {
+      if (pick(0, 3) != 0) {
+        x = inf;
+      } else if (scale == 0) {
+        x = pick(0, 1000);
+      } else if (scale == 1) {
+        x = pick(0, wmax);
+      } else {
+        x = wmax - pick(0, 1000);
+      }
+    }
+    std::vector<std::int64_t> a = f0, c = f0;
+    detail::set_envelope_simd(false);
+    detail::separable_envelope<std::int64_t>(dom, opt, nullptr, a.data(), inf, nullptr);
+    detail::set_envelope_simd(true);
+    detail::separable_envelope<std::int64_t>(dom, opt, nullptr, c.data(), inf, nullptr);
+    RC_ASSERT(a == c);
+  });
+}
+
+// distance_transform_into's max_value (taken by the last pass, unit by unit, while its lines
+// are in cache; by a scan in 1D; by the conversion when the engine is wider than T) is the
+// largest value of the output (oracle: std::max_element), on every engine path: vectorized and
+// portable, int32 and int64 engines (min_engine_bits), uint32 and uint64 outputs, 1 to 3 axes,
+// tori, 1 and 2 threads.
+TEST(DistanceTransform, MaxValueIsTheLargestValueWritten) {
+  const AllowSimdAtExit allow;
+  test::check_property([] {
+    std::mt19937 rng(*rc::gen::arbitrary<std::uint32_t>());
+    auto pick = [&](int lo, int hi) {
+      return lo + static_cast<int>(rng() % static_cast<unsigned>(hi - lo + 1));
+    };
+    const int d = pick(1, 3);
+    std::vector<std::int64_t> ext;
+    for (int k = 0; k < d; ++k) ext.push_back(pick(1, d == 1 ? 300 : d == 2 ? 70 : 30));
+    const Domain dom(ext);
+    TransformOptions opt;
+    opt.metric = Metric{pick(0, 3)};
+    for (int k = 0; k < d; ++k) opt.torus.push_back(pick(0, 2) == 0);
+    opt.threads = static_cast<unsigned>(pick(1, 2));
+    opt.min_engine_bits = pick(0, 1) == 0 ? 0 : 64;
+    std::vector<std::uint8_t> v(static_cast<std::size_t>(dom.size()));
+    const int density = pick(0, 100);
+    for (auto& x : v) x = pick(0, 99) < density ? 1 : 0;
+    v[rng() % v.size()] = 0;
+    detail::set_envelope_simd(pick(0, 1) == 0);
+    const auto check = [&]<class T>(std::type_identity<T>) {
+      std::vector<T> out(v.size());
+      std::uint64_t mx = 12345;
+      distance_transform_into<T>(dom, v.data(), 1, opt, out.data(), {}, &mx);
+      RC_ASSERT(mx == static_cast<std::uint64_t>(*std::max_element(out.begin(), out.end())));
+    };
+    if (distance_transform_max_value(dom, opt) <= BigInt(4294967295ULL)) {
+      check(std::type_identity<std::uint32_t>{});
+    }
+    check(std::type_identity<std::uint64_t>{});
   });
 }
 
