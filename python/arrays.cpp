@@ -17,6 +17,7 @@
 
 #include <zdg/arith/error.hpp>
 #include <zdg/estimators/volume_ii.hpp>
+#include <zdg/kernel/images/voxel_dag.hpp>
 #include <zdg/kernel/io/output_files.hpp>
 #include <zdg/kernel/io/volume_io.hpp>
 #include <zdg/kernel/parallel/populate_pages.hpp>
@@ -46,8 +47,11 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -923,6 +927,50 @@ py::array local_thickness_py(const py::object& obj, unsigned threads) {
   return out;
 }
 
+// Sparse voxel DAGs (kernel/images/voxel_dag.hpp) of a 3D array: voxel (x, y, z) is
+// volume[z, y, x], nonzero = set.
+VoxelDag dag_of(const py::object& volume, const std::string& kind, const char* what) {
+  const VoxelDagKind k = parse_voxel_dag_kind(kind);
+  Image<std::uint8_t> img = image_of(volume, what);
+  if (img.domain().dim() != 3)
+    throw InvalidArgument(std::string(what) + ": a 3D array is needed (got dimension " +
+                          std::to_string(img.domain().dim()) + ")");
+  py::gil_scoped_release release;
+  return build_voxel_dag(img, k);
+}
+
+py::dict voxel_dag_py(const py::object& volume, const std::string& kind) {
+  const VoxelDagStats s = dag_of(volume, kind, "voxel_dag").stats();
+  py::dict d;
+  d["kind"] = voxel_dag_kind_name(s.kind);
+  d["depth"] = s.depth;
+  d["voxels"] = s.voxels;
+  d["nodes"] = s.inner_nodes;
+  d["leaves"] = s.leaves;
+  d["pointers"] = s.pointers;
+  d["bytes"] = s.bytes;
+  d["bits_per_voxel"] = s.bits_per_voxel();
+  d["nodes_per_level"] = s.nodes_per_level;
+  d["svo_nodes"] = s.svo_inner_nodes;
+  d["svo_leaves"] = s.svo_leaves;
+  d["svo_bytes"] = s.svo_bytes;
+  return d;
+}
+
+py::list dag_ray_hits_py(const py::object& volume, const std::array<std::int64_t, 3>& origin,
+                         const std::array<std::int64_t, 3>& vector, std::int64_t denominator,
+                         const std::string& kind, const std::optional<std::int64_t>& max_hits) {
+  if (max_hits && *max_hits < 0) throw InvalidArgument("dag_ray_hits: max_hits is negative");
+  const VoxelDag g = dag_of(volume, kind, "dag_ray_hits");
+  const auto hits =
+      g.ray_hits({origin, vector, denominator}, max_hits ? static_cast<std::size_t>(*max_hits)
+                                                         : std::numeric_limits<std::size_t>::max());
+  py::list out;
+  for (const auto& h : hits)
+    out.append(py::make_tuple(py::make_tuple(h.voxel[0], h.voxel[1], h.voxel[2]), h.axis));
+  return out;
+}
+
 } // namespace
 
 void bind_arrays(py::module_& m) {
@@ -1062,6 +1110,21 @@ void bind_arrays(py::module_& m) {
         py::arg("force") = false,
         "Writes text (UTF-8) to path atomically (a staging file renamed in place); an "
         "existing file is refused unless force=True.");
+  m.def("voxel_dag", &voxel_dag_py, py::arg("volume"), py::kw_only(), py::arg("kind") = "ssvdag",
+        "Sizes of the sparse voxel octree ('svo'), DAG ('dag': equal subtrees once, Kampe et "
+        "al. 2013) or symmetry-aware DAG ('ssvdag': equal up to a reflection, Villanueva et "
+        "al. 2016) of a 3D array (voxel (x, y, z) is volume[z, y, x], nonzero = set): "
+        "{'kind', 'depth', 'voxels', 'nodes', 'leaves', 'pointers', 'bytes', "
+        "'bits_per_voxel', 'nodes_per_level' (root first), 'svo_nodes', 'svo_leaves', "
+        "'svo_bytes'}; 32-bit headers and pointers, 64-bit leaves of 4^3 voxels.");
+  m.def("dag_ray_hits", &dag_ray_hits_py, py::arg("volume"), py::arg("origin"), py::arg("vector"),
+        py::arg("denominator") = 1, py::kw_only(), py::arg("kind") = "ssvdag",
+        py::arg("max_hits") = py::none(),
+        "The set voxels of a 3D array (voxel (x, y, z) is volume[z, y, x]) that the line "
+        "(origin + t vector) / denominator (integers, voxel coordinates x, y, z) crosses "
+        "over a positive length, in the line's order, exact: [((x, y, z), axis), ...], axis "
+        "the face the line enters the voxel by; at most max_hits. Traverses the DAG of the "
+        "array (built by the call: O(N) first).");
   m.def("read_volume", &read_volume_py, py::arg("path"), py::kw_only(), py::arg("metadata") = false,
         "Reads a volume (.vol v2/v3, .nii, .nii.gz, .npy, .pgm; path: str, bytes or "
         "os.PathLike) into a numpy array of its "

@@ -10,12 +10,13 @@ import os as _os
 from collections.abc import Mapping as _Mapping
 
 from . import _zdg
-from ._zdg import (betti_numbers, cf, chamfer_transform, christoffel, connected_components, contour, converge, convex_check, hull,
+from ._zdg import (betti_numbers, cf, chamfer_transform, christoffel, connected_components, contour, converge, convex_check,
+                   dag_ray_hits, hull,
                    hull_disc, hull_ellipse, hull_halfplanes, distance_transform, dsl_subsegment, floor_sum,
                    ii_curvature, local_thickness, mesh_html, motion_check, power_map, probe_plane, read_volume, recognize_dss,
                    reconstruct, recognize_plane, reduced_medial_axis, reverse_distance_transform, simple_points, sturmian,
                    surface,
-                   surfels, tangential_cover, thinning, voronoi_map, write_volume)
+                   surfels, tangential_cover, thinning, voronoi_map, voxel_dag, write_volume)
 
 __all__ = ["betti_numbers", "cf", "chamfer_transform", "christoffel", "connected_components", "contour", "converge", "convex_check",
            "hull",
@@ -24,7 +25,7 @@ __all__ = ["betti_numbers", "cf", "chamfer_transform", "christoffel", "connected
            "distance_transform", "dsl_subsegment", "floor_sum", "ii_curvature", "local_thickness", "mesh_html", "motion_check", "plot",
            "reduced_medial_axis", "reverse_distance_transform", "voronoi_map",
            "read_volume", "reconstruct", "recognize_dss", "surfels", "tangential_cover", "thinning",
-           "view", "Viewer", "write_volume"]
+           "view", "Viewer", "write_volume", "voxel_dag", "dag_ray_hits"]
 
 
 def skeleton(image, method="critical-kernel", skeleton="curve", adjacency=None, threads=0):

@@ -124,10 +124,10 @@ const std::vector<Operation>& operations() {
       {"voxelize", "", "",
        "serve and Python: works on files (a mesh in, a volume out); the library function is "
        "voxelize (kernel/digitization/voxelize.hpp)"},
-      {"dag", "", "",
-       "serve and Python: not bound yet; the library is kernel/images/voxel_dag.hpp "
-       "(build_voxel_dag, "
-       "VoxelDagBuilder, ray_hits)"},
+      {"dag", "", "voxel_dag",
+       "serve: not served yet (Python's voxel_dag and dag_ray_hits take arrays; the command also "
+       "streams a mesh's voxelization)"},
+      {"", "", "dag_ray_hits", "command line and serve: zdg dag --ray"},
       {"render dag", "", "",
        "serve and Python: writes a picture file; the library function is render_dag "
        "(kernel/render/dag_render.hpp)"},

@@ -131,3 +131,72 @@ def test_reconstruct_estimates_missing_normals_and_refuses_bad_points():
         zdg.reconstruct(bad, h=0.1)
     with pytest.raises(ValueError, match=r"not \(n, 3\)"):
         zdg.reconstruct(p[:, :2], h=0.1)
+
+
+def crossed_voxels(shape, origin, direction, den):
+    """The voxels (x, y, z) of the array's box that the line (origin + t direction) / den crosses
+    over a positive length, in order: every face-plane parameter, and the voxel of each piece's
+    midpoint (exact fractions)."""
+    from fractions import Fraction as F
+    n = (shape[2], shape[1], shape[0])
+    lo, hi, cuts = None, None, []
+    for a in range(3):
+        o, d = F(origin[a], den), F(direction[a], den)
+        if d == 0:
+            if not (-F(1, 2) <= o < n[a] - F(1, 2)):
+                return []
+            continue
+        ts = sorted([(F(-1, 2) - o) / d, (n[a] - F(1, 2) - o) / d])
+        lo = ts[0] if lo is None else max(lo, ts[0])
+        hi = ts[1] if hi is None else min(hi, ts[1])
+        cuts += [(k - F(1, 2) - o) / d for k in range(n[a] + 1)]
+    if not lo < hi:
+        return []
+    ts = sorted({lo, hi} | {t for t in cuts if lo < t < hi})
+    out = []
+    for t0, t1 in zip(ts, ts[1:]):
+        t = (t0 + t1) / 2
+        out.append(tuple(int((F(origin[a], den) + t * F(direction[a], den) + F(1, 2)) // 1)
+                         for a in range(3)))
+    return out
+
+
+@given(arrays(np.bool_, st.tuples(st.integers(1, 6), st.integers(1, 6), st.integers(1, 6))),
+       st.tuples(*[st.integers(-12, 40)] * 3), st.tuples(*[st.integers(-3, 3)] * 3),
+       st.integers(1, 4), st.sampled_from(["svo", "dag", "ssvdag"]))
+def test_dag_ray_hits_are_the_set_voxels_the_line_crosses(volume, origin, direction, den, kind):
+    if direction == (0, 0, 0):
+        direction = (1, 0, 0)
+    hits = zdg.dag_ray_hits(volume, origin, direction, den, kind=kind)
+    want = [v for v in crossed_voxels(volume.shape, origin, direction, den)
+            if volume[v[2], v[1], v[0]]]
+    assert [v for v, _ in hits] == want
+    assert all(axis in (0, 1, 2) for _, axis in hits)
+    assert zdg.dag_ray_hits(volume, origin, direction, den, kind=kind, max_hits=1) == hits[:1]
+
+
+@given(arrays(np.bool_, st.tuples(st.integers(1, 9), st.integers(1, 9), st.integers(1, 9))))
+def test_voxel_dag_leaves_are_the_occupied_and_the_distinct_bricks(volume):
+    """svo: one leaf per non-empty 4^3 brick; dag: one per distinct brick content."""
+    side = 4
+    while side < max(volume.shape):
+        side *= 2
+    padded = np.zeros((side, side, side), dtype=bool)
+    padded[:volume.shape[0], :volume.shape[1], :volume.shape[2]] = volume
+    bricks = [padded[z:z + 4, y:y + 4, x:x + 4].tobytes()
+              for z in range(0, side, 4) for y in range(0, side, 4) for x in range(0, side, 4)
+              if padded[z:z + 4, y:y + 4, x:x + 4].any()]
+    svo, dag = zdg.voxel_dag(volume, kind="svo"), zdg.voxel_dag(volume, kind="dag")
+    assert svo["voxels"] == dag["voxels"] == int(volume.sum())
+    assert svo["leaves"] == len(bricks) == dag["svo_leaves"]
+    assert dag["leaves"] == len(set(bricks))
+    assert zdg.voxel_dag(volume)["bytes"] <= dag["bytes"] <= svo["bytes"]
+
+
+def test_voxel_dag_bad_input():
+    with pytest.raises(ValueError, match="3D"):
+        zdg.voxel_dag(np.ones((3, 3), dtype=bool))
+    with pytest.raises(ValueError, match="expected svo, dag or ssvdag"):
+        zdg.voxel_dag(np.ones((3, 3, 3), dtype=bool), kind="octree")
+    with pytest.raises(ValueError, match="direction is zero"):
+        zdg.dag_ray_hits(np.ones((3, 3, 3), dtype=bool), (0, 0, 0), (0, 0, 0))
