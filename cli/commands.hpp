@@ -20,10 +20,12 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cctype>
 #include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace zdg::cli {
 
@@ -69,6 +71,10 @@ void print_json(const nlohmann::json& j);
 
 /// A finite number in `text`, all of it (InvalidArgument "OPTION: 'TEXT' is not a number").
 double parse_number(const std::string& text, const std::string& option);
+/// The comma-separated fields of `text` ("1,,2" -> "1", "", "2"; "" -> one empty field).
+std::vector<std::string> split_commas(const std::string& text);
+/// X,Y,Z: three finite numbers (InvalidArgument "OPTION: 'TEXT' is not X,Y,Z", or parse_number's).
+std::array<double, 3> parse_xyz(const std::string& text, const std::string& option);
 /// --view AZ,EL in degrees, the elevation in [-90, 90].
 std::pair<double, double> parse_view(const std::string& text);
 /// --png-size WIDTHxHEIGHT, a size check_picture_size accepts.

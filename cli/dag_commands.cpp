@@ -50,17 +50,6 @@ bool is_mesh(const std::string& path) {
   return e == ".ply" || e == ".obj" || e == ".off";
 }
 
-std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> parts;
-  std::size_t at = 0;
-  for (;;) {
-    const std::size_t comma = text.find(',', at);
-    parts.push_back(text.substr(at, comma == std::string::npos ? std::string::npos : comma - at));
-    if (comma == std::string::npos) return parts;
-    at = comma + 1;
-  }
-}
-
 DigitalRay parse_ray(const std::string& text) {
   const auto parts = split_commas(text);
   if (parts.size() != 6 && parts.size() != 7)
@@ -115,11 +104,8 @@ Plan make_plan(const DagArgs& a) {
   p.h = parse_number(a.h, "--h");
   if (!(p.h > 0)) throw InvalidArgument("--h: " + a.h + " is not positive");
   if (!a.origin.empty()) {
-    const auto parts = split_commas(a.origin);
-    if (parts.size() != 3) throw InvalidArgument("--origin: '" + a.origin + "' is not X,Y,Z");
-    p.origin =
-        Point3<double>{parse_number(parts[0], "--origin"), parse_number(parts[1], "--origin"),
-                       parse_number(parts[2], "--origin")};
+    const auto o = parse_xyz(a.origin, "--origin");
+    p.origin = Point3<double>{o[0], o[1], o[2]};
   }
   try {
     p.mode = parse_voxelization_mode(a.mode);
@@ -199,11 +185,11 @@ void run_dag(const DagArgs& a) {
   if (max_hits < 0) throw InvalidArgument("--max-hits: " + a.max_hits + " is negative");
   const Scene s = build_scene(a, p, {VoxelDagKind::dag, VoxelDagKind::ssvdag});
   const VoxelDagStats d = s.dags[0].stats(), ss = s.dags[1].stats();
-  VoxelDagStats svo = d;
+  VoxelDagStats svo = d; // the tree's figures, counted by the DAG's build
   svo.kind = VoxelDagKind::svo;
   svo.inner_nodes = d.svo_inner_nodes;
   svo.leaves = d.svo_leaves;
-  svo.pointers = d.svo_inner_nodes + d.svo_leaves - (d.svo_leaves > 0 ? 1 : 0);
+  svo.pointers = d.svo_pointers;
   svo.bytes = d.svo_bytes;
   const auto& e = s.dags[0].extent();
   nlohmann::json j = {{"command", "dag"},

@@ -43,6 +43,24 @@ double parse_number(const std::string& text, const std::string& option) {
   return v;
 }
 
+std::vector<std::string> split_commas(const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+    if (comma == std::string::npos) return parts;
+    start = comma + 1;
+  }
+}
+
+std::array<double, 3> parse_xyz(const std::string& text, const std::string& option) {
+  const auto parts = split_commas(text);
+  if (parts.size() != 3) throw InvalidArgument(option + ": '" + text + "' is not X,Y,Z");
+  return {parse_number(parts[0], option), parse_number(parts[1], option),
+          parse_number(parts[2], option)};
+}
+
 std::pair<double, double> parse_view(const std::string& text) {
   const auto comma = text.find(',');
   if (comma == std::string::npos)

@@ -33,18 +33,6 @@ struct MotionArgs {
   unsigned threads = 0;
 };
 
-std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> parts;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = text.find(',', start);
-    parts.push_back(text.substr(start, comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return parts;
-}
-
 std::vector<BigInt> integers(const std::string& text, std::size_t count, const char* option) {
   const auto parts = split_commas(text);
   if (parts.size() != count) {

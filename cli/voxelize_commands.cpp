@@ -37,20 +37,6 @@ struct VoxelizeArgs {
   bool json = false, force = false;
 };
 
-Point3<double> parse_origin(const std::string& text) {
-  double v[3];
-  std::size_t at = 0;
-  for (int k = 0; k < 3; ++k) {
-    const std::size_t comma = text.find(',', at);
-    if ((k < 2) != (comma != std::string::npos))
-      throw InvalidArgument("--origin: '" + text + "' is not X,Y,Z");
-    v[k] = parse_number(
-        text.substr(at, comma == std::string::npos ? std::string::npos : comma - at), "--origin");
-    at = comma + 1;
-  }
-  return {v[0], v[1], v[2]};
-}
-
 std::string shortest(double v) {
   char b[32];
   const auto r = std::to_chars(b, b + sizeof b, v);
@@ -64,7 +50,10 @@ void run(const VoxelizeArgs& a) {
   const double h = parse_number(a.h, "--h");
   if (!(h > 0)) throw InvalidArgument("--h: " + a.h + " is not positive");
   std::optional<Point3<double>> origin;
-  if (!a.origin.empty()) origin = parse_origin(a.origin);
+  if (!a.origin.empty()) {
+    const auto o = parse_xyz(a.origin, "--origin");
+    origin = Point3<double>{o[0], o[1], o[2]};
+  }
   VoxelizationMode mode = VoxelizationMode::conservative;
   try {
     mode = parse_voxelization_mode(a.mode);

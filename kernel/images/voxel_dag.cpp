@@ -605,8 +605,8 @@ VoxelDagStats VoxelDag::stats() const {
   s.bytes = 4 * (s.inner_nodes + s.pointers) + 8 * s.leaves;
   s.svo_inner_nodes = svo_inner_;
   s.svo_leaves = svo_leaves_;
-  const std::int64_t nodes = svo_inner_ + svo_leaves_;
-  s.svo_bytes = 4 * (svo_inner_ + std::max<std::int64_t>(0, nodes - 1)) + 8 * svo_leaves_;
+  s.svo_pointers = std::max<std::int64_t>(0, svo_inner_ + svo_leaves_ - 1); // all but the root
+  s.svo_bytes = 4 * (svo_inner_ + s.svo_pointers) + 8 * svo_leaves_;
   return s;
 }
 

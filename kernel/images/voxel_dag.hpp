@@ -68,7 +68,7 @@ struct VoxelDagStats {
   std::int64_t leaves = 0;      ///< stored 4^3 leaves
   std::int64_t pointers = 0;    ///< stored child references
   std::int64_t bytes = 0;       ///< 4 (inner_nodes + pointers) + 8 leaves
-  std::int64_t svo_inner_nodes = 0, svo_leaves = 0, svo_bytes = 0; ///< the tree's
+  std::int64_t svo_inner_nodes = 0, svo_leaves = 0, svo_pointers = 0, svo_bytes = 0; ///< the tree's
   std::vector<std::int64_t> nodes_per_level; ///< stored nodes of levels depth, depth - 1, ..., 2
   /// 8 bytes / voxels (0 for an empty scene).
   double bits_per_voxel() const;

@@ -30,6 +30,16 @@ inline std::int64_t proc_status_kib(const char* key) {
   return -1;
 }
 
+/// Whether a shared library whose path contains `name` is mapped into this process
+/// (/proc/self/maps): the tests of libraries loaded on demand.
+inline bool library_mapped(const std::string& name) {
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line))
+    if (line.find(name) != std::string::npos) return true;
+  return false;
+}
+
 inline ChildMemory run_in_child_measuring_memory(const std::function<std::string()>& f) {
   int fd[2];
   ChildMemory out;

@@ -195,6 +195,7 @@ TEST(VoxelDag, NodeCountsAreTheDistinctSubtrees) {
     RC_ASSERT(c.bytes <= b.bytes);
     RC_ASSERT(b.bytes <= a.bytes);
     RC_ASSERT(a.bytes == a.svo_bytes);
+    RC_ASSERT(a.pointers == a.svo_pointers && b.svo_pointers == a.pointers);
   });
 }
 

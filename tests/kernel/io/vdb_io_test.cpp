@@ -4,6 +4,7 @@
 #include <zdg/kernel/io/vdb_io.hpp>
 
 #include "tests/support/cli.hpp"
+#include "tests/support/peak_memory.hpp"
 #include "tests/support/tower.hpp"
 #include <zdg/arith/error.hpp>
 #include <zdg/kernel/io/volume_io.hpp>
@@ -173,15 +174,6 @@ TEST(VdbIo, ErrorsNameTheFile) {
 namespace zdg {
 namespace {
 
-// Whether a shared library whose path contains `name` is mapped into this process.
-bool mapped(const std::string& name) {
-  std::ifstream maps("/proc/self/maps");
-  std::string line;
-  while (std::getline(maps, line))
-    if (line.find(name) != std::string::npos) return true;
-  return false;
-}
-
 // OpenVDB (through zdg's module, libzdg_vdb.so) is loaded by the first .vdb file, not when a
 // process starts (its relocations cost every start about 45 ms): in a fresh process (the death
 // test's child runs this binary again with this test alone) libopenvdb is not mapped before a
@@ -192,7 +184,7 @@ TEST(VdbIo, OpenVdbIsLoadedAtTheFirstFileOnly) {
   const Dir dir;
   const std::string path = dir("first.vdb");
   const auto first_use = [&] {
-    const bool before = mapped("libopenvdb");
+    const bool before = test::library_mapped("libopenvdb");
     std::vector<std::int64_t> values(24, 0);
     values[5] = 7;
     ScalarVolume v;
@@ -202,7 +194,7 @@ TEST(VdbIo, OpenVdbIsLoadedAtTheFirstFileOnly) {
     v.origin = {0, 0, 0};
     write_volume(path, v);
     const ScalarVolume back = read_volume(path);
-    const bool after = mapped("libopenvdb") && mapped("libzdg_vdb");
+    const bool after = test::library_mapped("libopenvdb") && test::library_mapped("libzdg_vdb");
     std::exit(!before && after && back.value(5) == 7.0 ? 0 : 1);
   };
   EXPECT_EXIT(first_use(), ::testing::ExitedWithCode(0), "");

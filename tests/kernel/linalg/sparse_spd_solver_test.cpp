@@ -1,5 +1,6 @@
 #include <zdg/kernel/linalg/sparse_spd_solver.hpp>
 
+#include "tests/support/peak_memory.hpp"
 #include "tests/support/tower.hpp"
 
 #include <zdg/arith/error.hpp>
@@ -14,15 +15,6 @@
 #include <string>
 
 namespace {
-
-// Whether a shared library whose path contains `name` is mapped into this process.
-bool mapped(const std::string& name) {
-  std::ifstream maps("/proc/self/maps");
-  std::string line;
-  while (std::getline(maps, line))
-    if (line.find(name) != std::string::npos) return true;
-  return false;
-}
 
 // A = B^T B + I for a random sparse B is SPD: the solver's x satisfies A x = b to rounding
 // (the residual is the oracle), with every backend zdg was built with, and both backends
@@ -97,10 +89,10 @@ TEST(SparseSpdSolver, CholmodIsLoadedAtItsFirstUseOnly) {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   EXPECT_EXIT(
       {
-        const bool before = mapped("libcholmod");
+        const bool before = zdg::test::library_mapped("libcholmod");
         const zdg::SparseSpdSolver s(zdg::SparseMatrix::diagonal(std::vector<double>{2, 3}),
                                      zdg::SpdBackend::cholmod);
-        const bool after = mapped("libcholmod");
+        const bool after = zdg::test::library_mapped("libcholmod");
         std::exit(!before && after && std::abs(s.solve(std::vector<double>{4, 9})[1] - 3.0) < 1e-12
                       ? 0
                       : 1);
